@@ -1,0 +1,16 @@
+# Included by test/, examples/ and benchmark/ when they are configured on their own
+# (CGAL-testsuite style): creates the CGAL::Seamless_snapping target from the source tree.
+if(NOT TARGET CGAL::Seamless_snapping)
+  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+    set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+  endif()
+  find_package(CGAL 5.5 REQUIRED)
+  find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+  include(CGAL_Eigen3_support)
+  add_library(CGAL_Seamless_snapping INTERFACE)
+  add_library(CGAL::Seamless_snapping ALIAS CGAL_Seamless_snapping)
+  target_include_directories(CGAL_Seamless_snapping INTERFACE ${CMAKE_CURRENT_LIST_DIR}/../include)
+  target_link_libraries(CGAL_Seamless_snapping INTERFACE CGAL::CGAL CGAL::Eigen3_support)
+  target_compile_features(CGAL_Seamless_snapping INTERFACE cxx_std_17)
+  target_compile_options(CGAL_Seamless_snapping INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang>:-ffp-contract=off>)
+endif()

@@ -1,0 +1,292 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_EXACT_CONSTRAINT_PROJECTION_H
+#define CGAL_SEAMLESS_SNAPPING_EXACT_CONSTRAINT_PROJECTION_H
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/integer_system.h>
+#include <CGAL/Seamless_snapping/internal/irref.h>
+#include <CGAL/Seamless_snapping/internal/evaluation.h>
+
+#include <Eigen/Sparse>
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * Options of `Exact_constraint_projection`.
+ */
+struct Projection_options
+{
+  /// Extra bits of headroom in the fixed-point range: `delta = 2^K` with
+  /// `K = max_i e(|v_i|) + delta_margin_bits`, where `e(v)` is the binary exponent with
+  /// `|v| < 2^e(v)` and `v` runs over the constrained entries of x̄ and the IRREF right-hand side.
+  /// The paper's choice (Sec. 4.3, "+1 adds a margin") is `1`: an implied value may then deviate
+  /// from its input by up to `max |x̄|` before `RANGE_EXCEEDED` (Sec. 7).
+  int delta_margin_bits = 1;
+  /// Skips the 64-bit elimination and eliminates in `CGAL::Gmpz` from the start.
+  bool force_multiprecision = false;
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * What `Exact_constraint_projection::initialize()` found (valid after `initialize()`).
+ */
+struct Irref_statistics
+{
+  std::size_t rows = 0;                 ///< m, rows of C as given
+  std::size_t columns = 0;              ///< n, number of variables
+  std::size_t input_nonzeros = 0;       ///< nonzero entries of C (explicit zeros and cancelled duplicates removed)
+  std::size_t rank = 0;                 ///< rows with a pivot in the IRREF
+  std::size_t dependent_rows = 0;       ///< rows that became zero (linearly dependent, b consistent)
+  std::size_t constrained_columns = 0;  ///< columns with a nonzero entry in C
+  std::size_t free_variables = 0;       ///< constrained columns without a pivot
+  std::size_t implied_variables = 0;    ///< pivot columns (= rank)
+  std::size_t irref_nonzeros = 0;       ///< nonzeros of the IRREF matrix Ĉ (fill-in = irref_nonzeros vs input_nonzeros)
+  std::size_t eliminations = 0;         ///< fraction-free row updates performed
+  std::string max_abs_coefficient = "0";///< largest |entry| of Ĉ and b̂, exact decimal
+  double max_abs_coefficient_double = 0;///< the same, rounded to double
+  bool multiprecision = false;          ///< true when the elimination ran in `CGAL::Gmpz` (overflow of int64 or forced)
+  double initialize_ms = 0;             ///< wall-clock time of `initialize()`
+  /// the integer type the IRREF was computed in: "int64" or "Gmpz"
+  const char* integer_type() const { return multiprecision ? "Gmpz" : "int64"; }
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * What one call of `Exact_constraint_projection::project()` did.
+ */
+struct Projection_report
+{
+  Status status = INVALID_INPUT;   ///< `SUCCESS` iff `C x = b` holds exactly and `x` was written
+  std::string message;             ///< why it failed (names row/column), or a one-line summary
+  int delta_exponent = 0;          ///< K, with `delta = 2^K` (Sec. 4.3)
+  double delta = 0;                ///< the fixed-point range is (-delta, delta)
+  double quantum = 0;              ///< spacing s = 2^(K-52) of the grid F_delta; every constrained output is a multiple of s
+  double max_abs_change = 0;       ///< max_i |x_i - x̄_i| (exact: computed from doubles on the grid)
+  std::size_t changed_variables = 0; ///< number of i with x_i != x̄_i
+  double project_ms = 0;           ///< wall-clock time of `project()`
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ *
+ * Projects a vector of doubles x̄ onto the solution space of an integer linear system `C x = b`
+ * such that the result `x` consists of IEEE doubles and satisfies every equation *exactly* in real
+ * arithmetic (Mandad & Campen 2019, Sec. 4, Alg. 1–5, with the addendum's Eq. 2' for `b != 0`).
+ *
+ * Like a factorization, the work is split by what changes:
+ * - `initialize(C, b)` once per system: fraction-free Gauss–Jordan elimination of `[C | b]` into
+ *   integer reduced row echelon form (IRREF, Sec. 4.1, Alg. 1–2) with sparse pivoting, the
+ *   free/implied split, and the divisor (lcm of pivots) of every free variable (Alg. 4).
+ *   Integers are 64-bit with overflow detection; on any overflow the elimination is redone in
+ *   `CGAL::Gmpz`, so the IRREF is exact either way.
+ * - `project(x̄, x)` per input vector: the fixed-point grid `F_delta` from `max |x̄|` (Sec. 4.3),
+ *   free variables rounded to multiples of their divisors (Alg. 3–4; for `b != 0` shifted by a
+ *   particular solution of the per-row divisibility congruences, addendum Eq. 2'), implied variables
+ *   by the safe dot product (Alg. 5), and a final exact integer check of every row of the
+ *   *original* `C` before `x` is written.
+ *
+ * Shapes and units: `C` is m × n with integer entries (one row per constraint); `b` has m integer
+ * entries; x̄ and `x` have n doubles, in the units of the caller (UV units for parametrizations).
+ * A variable that appears in no row is copied unchanged from x̄ to `x`.
+ *
+ * State: `status()`, `message()` and `statistics()` are valid after `initialize()`. Calling
+ * `project()` before `initialize()` is a precondition violation; after a failed `initialize()`,
+ * `project()` returns that failure and writes nothing.
+ *
+ * \warning `x` is exact and near x̄, but it is not the L2-closest point of the solution space
+ * (Sec. 4.2): free variables keep (rounded) input values and implied variables absorb the change.
+ * For `b != 0` a system may have no solution on the grid (e.g. `3 x = 1`): `INFEASIBLE` is then
+ * reported, never a wrong answer.
+ */
+class Exact_constraint_projection
+{
+public:
+  /// \name Construction
+  /// @{
+  explicit Exact_constraint_projection(const Projection_options& options = Projection_options())
+    : m_options(options)
+  {}
+  /// @}
+
+  /// \name Initialization (per system)
+  /// @{
+
+  /*!
+   * computes the IRREF of `[C | b]`.
+   * \tparam Scalar a built-in integral type or `CGAL::Gmpz`
+   * \param C m × n sparse integer matrix (explicit zeros are ignored)
+   * \param b random-access range of m integers (`int`, `long`, `std::int64_t`, `CGAL::Gmpz`, ...)
+   * \return `SUCCESS`, `INVALID_INPUT` (size mismatch) or `INFEASIBLE` (a row reduces to `0 = b̂_j != 0`)
+   */
+  template <typename Scalar, int Options, typename StorageIndex, typename BRange>
+  Status initialize(const Eigen::SparseMatrix<Scalar, Options, StorageIndex>& C, const BRange& b)
+  {
+    typedef Eigen::SparseMatrix<Scalar, Options, StorageIndex> M;
+    std::vector<internal::Triplet_entry> entries;
+    entries.reserve(std::size_t(C.nonZeros()));
+    return initialize_impl(std::size_t(C.rows()), std::size_t(C.cols()), b,
+      [&](auto&& add) {
+        for(Eigen::Index k = 0; k < C.outerSize(); ++k)
+          for(typename M::InnerIterator it(C, k); it; ++it)
+            add(std::size_t(it.row()), std::size_t(it.col()), it.value());
+      });
+  }
+
+  /*!
+   * computes the IRREF of `[C | b]`, with `C` given as triplets. Duplicate (row, column) pairs
+   * are summed, as `Eigen::SparseMatrix::setFromTriplets()` does.
+   * \tparam TripletRange a range of objects `t` with `t.row()`, `t.col()` and `t.value()`
+   *         (e.g. `Eigen::Triplet<long>`); the value type is integral or `CGAL::Gmpz`
+   * \param n_rows m, \param n_cols n
+   */
+  template <typename TripletRange, typename BRange>
+  Status initialize(std::size_t n_rows, std::size_t n_cols, const TripletRange& triplets, const BRange& b)
+  {
+    return initialize_impl(n_rows, n_cols, b,
+      [&](auto&& add) {
+        for(const auto& t : triplets)
+          add(std::size_t(t.row()), std::size_t(t.col()), t.value());
+      });
+  }
+  /// @}
+
+  /// \name Projection (per input vector)
+  /// @{
+
+  /*!
+   * projects x̄ onto `{x | C x = b}` exactly, with `x` in doubles.
+   * \tparam XRange random-access range of n `double` (`std::vector<double>`, `Eigen::VectorXd`, ...)
+   * \param xbar n input values (NaN/Inf give `INVALID_INPUT`)
+   * \param x output; resized to n and written only when the returned status is `SUCCESS`
+   * \return a report whose status is one of `SUCCESS`, `INVALID_INPUT`, `INFEASIBLE`,
+   *   `RANGE_EXCEEDED`, `SAFE_DOT_FAILED`, `EXACTNESS_CHECK_FAILED`, or the failure of `initialize()`
+   * \pre `initialize()` was called
+   */
+  template <typename XRange>
+  Projection_report project(const XRange& xbar, std::vector<double>& x) const
+  {
+    CGAL_precondition_msg(m_initialized, "Exact_constraint_projection::project() called before initialize()");
+    auto t0 = std::chrono::steady_clock::now();
+    Projection_report report;
+    if(!m_initialized) { report.status = INVALID_INPUT; report.message = "project() called before initialize()"; return report; }
+    if(m_status != SUCCESS) { report.status = m_status; report.message = m_message; return report; }
+    const std::size_t n = m_statistics.columns;
+    if(std::size_t(xbar.size()) != n) {
+      report.status = INVALID_INPUT;
+      report.message = "x has " + std::to_string(std::size_t(xbar.size())) + " entries, C has " + std::to_string(n) + " columns";
+      return report;
+    }
+    std::vector<double> xb(n);
+    for(std::size_t i = 0; i < n; ++i) xb[i] = double(xbar[i]);
+    std::vector<double> result;
+    if(m_irref64) internal::evaluate(*m_irref64, m_system, xb, m_options.delta_margin_bits, result, report);
+    else          internal::evaluate(*m_irrefz, m_system, xb, m_options.delta_margin_bits, result, report);
+    report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if(report.status == SUCCESS) x.swap(result);
+    return report;
+  }
+  /// @}
+
+  /// \name Access (valid after `initialize()`)
+  /// @{
+  Status status() const { return m_status; }                        ///< outcome of `initialize()`
+  const std::string& message() const { return m_message; }          ///< details of `status()`
+  const Irref_statistics& statistics() const { return m_statistics; }///< sizes, rank, fill-in, integer type
+  std::size_t number_of_variables() const { return m_statistics.columns; } ///< n
+  std::size_t number_of_constraints() const { return m_statistics.rows; }  ///< m
+  /// @}
+
+private:
+  template <typename BRange, typename Visit>
+  Status initialize_impl(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit visit)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    m_initialized = true;
+    m_irref64.reset(); m_irrefz.reset();
+    m_statistics = Irref_statistics();
+    m_statistics.rows = n_rows; m_statistics.columns = n_cols;
+    m_message.clear();
+    m_status = internal::build_integer_system(n_rows, n_cols, b, visit, m_system, m_message);
+    if(m_status == SUCCESS) {
+      m_statistics.input_nonzeros = m_system.nonzeros();
+      m_statistics.constrained_columns = m_system.constrained_columns();
+      bool need_gmp = m_options.force_multiprecision || !m_system.fits_int64;
+      if(!need_gmp) {
+        try {
+          m_irref64.reset(new internal::Irref<std::int64_t>());
+          m_status = internal::compute_irref(m_system, *m_irref64, m_message);
+        } catch(const internal::Integer_overflow&) {
+          m_irref64.reset();
+          need_gmp = true;
+        }
+      }
+      if(need_gmp) {
+        m_irrefz.reset(new internal::Irref<CGAL::Gmpz>());
+        m_status = internal::compute_irref(m_system, *m_irrefz, m_message);
+        // When the result fits in 64 bits (e.g. forced Gmpz on a small system) evaluation is faster in int64.
+        std::unique_ptr<internal::Irref<std::int64_t>> narrow(new internal::Irref<std::int64_t>());
+        if(m_status == SUCCESS && !m_options.force_multiprecision && internal::narrow_irref(*m_irrefz, *narrow)) {
+          m_irref64 = std::move(narrow);
+          m_irrefz.reset();
+        }
+        m_statistics.multiprecision = true;
+      }
+      if(m_status == SUCCESS) {
+        if(m_irref64) m_irref64->fill_statistics(m_statistics);
+        else          m_irrefz->fill_statistics(m_statistics);
+      } else {
+        m_irref64.reset(); m_irrefz.reset();
+      }
+    }
+    m_statistics.initialize_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return m_status;
+  }
+
+  Projection_options m_options;
+  bool m_initialized = false;
+  Status m_status = INVALID_INPUT;
+  std::string m_message = "not initialized";
+  Irref_statistics m_statistics;
+  internal::Integer_system m_system;                      // the original rows, for the final exact check
+  std::unique_ptr<internal::Irref<std::int64_t>> m_irref64; // exactly one of the two is set after a successful initialize()
+  std::unique_ptr<internal::Irref<CGAL::Gmpz>> m_irrefz;
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * one-shot projection: `initialize(C, b)` then `project(xbar, x)`.
+ * \return the projection report; its status is the failure of `initialize()` if that failed
+ */
+template <typename Scalar, int Options, typename StorageIndex, typename BRange, typename XRange>
+Projection_report project_exactly(const Eigen::SparseMatrix<Scalar, Options, StorageIndex>& C, const BRange& b,
+                                  const XRange& xbar, std::vector<double>& x,
+                                  const Projection_options& options = Projection_options())
+{
+  Exact_constraint_projection p(options);
+  if(p.initialize(C, b) != SUCCESS) {
+    Projection_report r; r.status = p.status(); r.message = p.message(); return r;
+  }
+  return p.project(xbar, x);
+}
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_EXACT_CONSTRAINT_PROJECTION_H

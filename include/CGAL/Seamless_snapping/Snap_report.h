@@ -1,0 +1,103 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_SNAP_REPORT_H
+#define CGAL_SEAMLESS_SNAPPING_SNAP_REPORT_H
+
+#include <CGAL/Seamless_snapping/Status.h>
+
+#include <cstddef>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * What `snap_seamless_parameterization()` did. Lengths (violations, changes) are in UV units
+ * divided by the diagonal of the UV bounding box of the input ("relative").
+ */
+struct Snap_report
+{
+  Status status = INVALID_INPUT;       ///< `SUCCESS` iff the UV map was written and is exactly seamless
+  std::string message;                 ///< reason of a failure (names edge/sector/row), or a summary
+
+  /// \name Counts
+  /// @{
+  std::size_t faces = 0;
+  std::size_t cut_edges = 0;           ///< interior edges whose two faces disagree on an endpoint UV
+  std::size_t cones = 0;               ///< interior vertices whose UV angle sum is not 2*pi (singularities)
+  std::size_t sectors = 0;             ///< corner groups between cut edges around vertices (one UV variable pair each)
+  std::size_t constrained_sectors = 0; ///< sectors that appear in some constraint
+  std::size_t align_edges = 0;         ///< edges with an alignment constraint (Eq. 5)
+  std::size_t constraints = 0;         ///< rows of the full (unreduced) system: 2 per cut edge + 1 per align edge (+ others)
+  std::size_t nodes = 0;               ///< node vertices (Sec. 5.3)
+  std::size_t cut_branches = 0;        ///< chains of cut edges between nodes
+  std::size_t align_branches = 0;      ///< chains of align edges between nodes
+  std::size_t system_rows = 0;         ///< rows of the system given to the exact projection (node system when reduced)
+  std::size_t system_columns = 0;      ///< its columns
+  std::size_t free_variables = 0;      ///< of that system
+  std::size_t implied_variables = 0;   ///< of that system
+  std::string max_abs_coefficient = "0"; ///< max |entry| of its IRREF
+  bool reduced = true;                 ///< true: node system of Sec. 5.3; false: full sector system
+  /// @}
+
+  /// \name Magnitudes (relative to the UV bounding-box diagonal)
+  /// @{
+  double uv_diagonal = 0;              ///< diagonal of the input UV bounding box (UV units)
+  double max_input_violation = 0;      ///< max over constraint rows of |C ū - b|, exact residual rounded to double, relative
+  double max_change = 0;               ///< max |u - ū| over all UV coordinates, relative
+  double mean_change = 0;              ///< mean |u - ū| over the coordinates of constrained sectors, relative
+  std::size_t flips_before = 0;        ///< UV triangles with negative orientation in the input (exact test)
+  std::size_t flips_after = 0;         ///< the same after snapping
+  /// @}
+
+  /// \name Timings (milliseconds, wall clock)
+  /// @{
+  double extract_ms = 0, reduce_ms = 0, irref_ms = 0, evaluate_ms = 0, propagate_ms = 0, verify_ms = 0, total_ms = 0;
+  /// @}
+
+  /// returns the report as one JSON object (numbers with 17 significant digits).
+  std::string to_json() const
+  {
+    std::ostringstream o;
+    o << std::setprecision(17);
+    auto str = [&](const char* k, const std::string& v, bool comma = true) {
+      o << "  \"" << k << "\": \"";
+      for(char c : v) { if(c == '"' || c == '\\') o << '\\'; if(c == '\n') { o << "\\n"; continue; } o << c; }
+      o << "\"" << (comma ? ",\n" : "\n");
+    };
+    auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
+    o << "{\n";
+    str("status", status_name(status));
+    str("message", message);
+    num("faces", double(faces)); num("cut_edges", double(cut_edges)); num("cones", double(cones));
+    num("sectors", double(sectors)); num("constrained_sectors", double(constrained_sectors));
+    num("align_edges", double(align_edges)); num("constraints", double(constraints));
+    num("nodes", double(nodes)); num("cut_branches", double(cut_branches)); num("align_branches", double(align_branches));
+    num("system_rows", double(system_rows)); num("system_columns", double(system_columns));
+    num("free_variables", double(free_variables)); num("implied_variables", double(implied_variables));
+    str("max_abs_coefficient", max_abs_coefficient);
+    o << "  \"reduced\": " << (reduced ? "true" : "false") << ",\n";
+    num("uv_diagonal", uv_diagonal); num("max_input_violation", max_input_violation);
+    num("max_change", max_change); num("mean_change", mean_change);
+    num("flips_before", double(flips_before)); num("flips_after", double(flips_after));
+    num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
+    num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
+    o << "  \"total_ms\": " << total_ms << "\n}\n";
+    return o.str();
+  }
+};
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_SNAP_REPORT_H
