@@ -24,6 +24,7 @@ enum align_boundary_t    { align_boundary };    // bool: align axis-parallel bou
 enum use_reduced_system_t{ use_reduced_system };// bool: node system of Sec. 5.3 (default true) or full sector system
 enum alignment_tolerance_t{ alignment_tolerance };// double: max angle (degrees) for "axis-parallel"
 enum rotation_tolerance_t{ rotation_tolerance };// double: max angle (degrees) between a transition and k*90 degrees
+enum weld_vertices_t     { weld_vertices };     // bool, OBJ reading: merge vertices with bit-identical positions
 } // namespace snap_np
 
 namespace parameters {
@@ -52,6 +53,7 @@ CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(align_boundary_t,      align_boundary
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(use_reduced_system_t,  use_reduced_system)
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(alignment_tolerance_t, alignment_tolerance)
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(rotation_tolerance_t,  rotation_tolerance)
+CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(weld_vertices_t,       weld_vertices)
 #undef CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER
 
 // combine(np1, np2): every entry of np2 stacked on top of np1 (CGAL >= 5.6 offers the member
