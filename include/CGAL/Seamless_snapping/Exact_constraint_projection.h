@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct Projection_options
   int delta_margin_bits = 1;
   /// Skips the 64-bit elimination and eliminates in `CGAL::Gmpz` from the start.
   bool force_multiprecision = false;
+  /// When set, `K` (with `delta = 2^K`) is taken from here instead of from x̄, so that several
+  /// projections (e.g. the node system and the propagation of Sec. 5.3) share one grid `F_delta`.
+  std::optional<int> delta_exponent;
 };
 
 /*!
