@@ -11,6 +11,7 @@
 #define CGAL_SEAMLESS_SNAPPING_EXACT_CONSTRAINT_PROJECTION_H
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/Projection_report.h>
 #include <CGAL/Seamless_snapping/internal/integer_system.h>
 #include <CGAL/Seamless_snapping/internal/irref.h>
 #include <CGAL/Seamless_snapping/internal/evaluation.h>
@@ -27,65 +28,6 @@
 
 namespace CGAL {
 namespace Seamless_snapping {
-
-/*!
- * \ingroup PkgSeamlessSnappingRef
- * Options of `Exact_constraint_projection`.
- */
-struct Projection_options
-{
-  /// Extra bits of headroom in the fixed-point range: `delta = 2^K` with
-  /// `K = max_i e(|v_i|) + delta_margin_bits`, where `e(v)` is the binary exponent with
-  /// `|v| < 2^e(v)` and `v` runs over the constrained entries of x̄ and the IRREF right-hand side.
-  /// The paper's choice (Sec. 4.3, "+1 adds a margin") is `1`: an implied value may then deviate
-  /// from its input by up to `max |x̄|` before `RANGE_EXCEEDED` (Sec. 7).
-  int delta_margin_bits = 1;
-  /// Skips the 64-bit elimination and eliminates in `CGAL::Gmpz` from the start.
-  bool force_multiprecision = false;
-  /// When set, `K` (with `delta = 2^K`) is taken from here instead of from x̄, so that several
-  /// projections (e.g. the node system and the propagation of Sec. 5.3) share one grid `F_delta`.
-  std::optional<int> delta_exponent;
-};
-
-/*!
- * \ingroup PkgSeamlessSnappingRef
- * What `Exact_constraint_projection::initialize()` found (valid after `initialize()`).
- */
-struct Irref_statistics
-{
-  std::size_t rows = 0;                 ///< m, rows of C as given
-  std::size_t columns = 0;              ///< n, number of variables
-  std::size_t input_nonzeros = 0;       ///< nonzero entries of C (explicit zeros and cancelled duplicates removed)
-  std::size_t rank = 0;                 ///< rows with a pivot in the IRREF
-  std::size_t dependent_rows = 0;       ///< rows that became zero (linearly dependent, b consistent)
-  std::size_t constrained_columns = 0;  ///< columns with a nonzero entry in C
-  std::size_t free_variables = 0;       ///< constrained columns without a pivot
-  std::size_t implied_variables = 0;    ///< pivot columns (= rank)
-  std::size_t irref_nonzeros = 0;       ///< nonzeros of the IRREF matrix Ĉ (fill-in = irref_nonzeros vs input_nonzeros)
-  std::size_t eliminations = 0;         ///< fraction-free row updates performed
-  std::string max_abs_coefficient = "0";///< largest |entry| of Ĉ and b̂, exact decimal
-  double max_abs_coefficient_double = 0;///< the same, rounded to double
-  bool multiprecision = false;          ///< true when the elimination ran in `CGAL::Gmpz` (overflow of int64 or forced)
-  double initialize_ms = 0;             ///< wall-clock time of `initialize()`
-  /// the integer type the IRREF was computed in: "int64" or "Gmpz"
-  const char* integer_type() const { return multiprecision ? "Gmpz" : "int64"; }
-};
-
-/*!
- * \ingroup PkgSeamlessSnappingRef
- * What one call of `Exact_constraint_projection::project()` did.
- */
-struct Projection_report
-{
-  Status status = INVALID_INPUT;   ///< `SUCCESS` iff `C x = b` holds exactly and `x` was written
-  std::string message;             ///< why it failed (names row/column), or a one-line summary
-  int delta_exponent = 0;          ///< K, with `delta = 2^K` (Sec. 4.3)
-  double delta = 0;                ///< the fixed-point range is (-delta, delta)
-  double quantum = 0;              ///< spacing s = 2^(K-52) of the grid F_delta; every constrained output is a multiple of s
-  double max_abs_change = 0;       ///< max_i |x_i - x̄_i| (exact: computed from doubles on the grid)
-  std::size_t changed_variables = 0; ///< number of i with x_i != x̄_i
-  double project_ms = 0;           ///< wall-clock time of `project()`
-};
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
@@ -143,8 +85,6 @@ public:
   Status initialize(const Eigen::SparseMatrix<Scalar, Options, StorageIndex>& C, const BRange& b)
   {
     typedef Eigen::SparseMatrix<Scalar, Options, StorageIndex> M;
-    std::vector<internal::Triplet_entry> entries;
-    entries.reserve(std::size_t(C.nonZeros()));
     return initialize_impl(std::size_t(C.rows()), std::size_t(C.cols()), b,
       [&](auto&& add) {
         for(Eigen::Index k = 0; k < C.outerSize(); ++k)
@@ -200,8 +140,8 @@ public:
     std::vector<double> xb(n);
     for(std::size_t i = 0; i < n; ++i) xb[i] = double(xbar[i]);
     std::vector<double> result;
-    if(m_irref64) internal::evaluate(*m_irref64, m_system, xb, m_options.delta_margin_bits, result, report);
-    else          internal::evaluate(*m_irrefz, m_system, xb, m_options.delta_margin_bits, result, report);
+    if(m_irref64) internal::evaluate(*m_irref64, m_system, xb, m_options, result, report);
+    else          internal::evaluate(*m_irrefz, m_system, xb, m_options, result, report);
     report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if(report.status == SUCCESS) x.swap(result);
     return report;

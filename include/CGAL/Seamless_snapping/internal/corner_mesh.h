@@ -1,0 +1,158 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H
+
+// An index-based copy of the halfedge structure of a triangle mesh together with its corner UVs.
+//
+// Everything after the extraction works on this copy, so that the algorithmic code is written once
+// (not once per `FaceGraph` model) and is independent of hash orders or descriptor types.
+//
+// Indices: halfedges, vertices, edges and faces are numbered 0, 1, ... in the order in which
+// `halfedges(tm)`, `vertices(tm)`, `edges(tm)` and `faces(tm)` enumerate them.
+// Corner convention (as in the public API): for a non-border halfedge h, (u[h], v[h]) is the UV of
+// the corner (target(h), face(h)). Border halfedges have face -1 and no UV.
+
+#include <CGAL/Seamless_snapping/Status.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+struct Corner_mesh
+{
+  int n_vertices = 0, n_edges = 0, n_faces = 0, n_halfedges = 0;
+  std::vector<int> next, prev, opp, target, face, edge;  // per halfedge
+  std::vector<int> edge_halfedge;                        // per edge: index of halfedge(e, tm)
+  std::vector<double> u, v;                              // per halfedge: corner UV (border: unused)
+  std::vector<char> vertex_on_border;                    // per vertex
+
+  int source(int h) const { return target[opp[h]]; }
+  bool is_border_halfedge(int h) const { return face[h] < 0; }
+  bool is_border_edge(int e) const
+  {
+    const int h = edge_halfedge[e];
+    return face[h] < 0 || face[opp[h]] < 0;
+  }
+  // the UV vector target - source of h, as seen from face(h)
+  double du(int h) const { return u[h] - u[prev[h]]; }
+  double dv(int h) const { return v[h] - v[prev[h]]; }
+};
+
+// Descriptors of the mesh in the numbering of `Corner_mesh`, to write results back.
+template <class TriangleMesh>
+struct Corner_mesh_descriptors
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<typename GT::halfedge_descriptor> halfedges;
+  std::vector<typename GT::edge_descriptor> edges;
+  std::vector<typename GT::vertex_descriptor> vertices;
+};
+
+// Copies the connectivity and the corner UVs of `tm`. Checks what the rest of the pipeline relies
+// on: at least one face, triangles only, finite UVs. Returns INVALID_INPUT with a message otherwise.
+template <class TriangleMesh, class HalfedgeUVMap>
+Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mesh& cm,
+                         Corner_mesh_descriptors<TriangleMesh>& d, std::string& message)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  cm = Corner_mesh();
+  d.halfedges.clear(); d.edges.clear(); d.vertices.clear();
+  if(faces(tm).empty()) {
+    message = "the mesh has no faces";
+    return INVALID_INPUT;
+  }
+
+  // positions in the enumeration, looked up through CGAL's (initialized) index maps
+  auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  auto him = CGAL::get_initialized_halfedge_index_map(tm);
+  auto fim = CGAL::get_initialized_face_index_map(tm);
+  std::size_t max_v = 0, max_h = 0, max_f = 0;
+  for(vertex_descriptor v : vertices(tm)) max_v = (std::max)(max_v, std::size_t(get(vim, v)) + 1);
+  for(halfedge_descriptor h : halfedges(tm)) max_h = (std::max)(max_h, std::size_t(get(him, h)) + 1);
+  for(face_descriptor f : faces(tm)) max_f = (std::max)(max_f, std::size_t(get(fim, f)) + 1);
+  std::vector<int> vpos(max_v, -1), hpos(max_h, -1), fpos(max_f, -1);
+  for(vertex_descriptor v : vertices(tm)) { vpos[get(vim, v)] = int(d.vertices.size()); d.vertices.push_back(v); }
+  for(halfedge_descriptor h : halfedges(tm)) { hpos[get(him, h)] = int(d.halfedges.size()); d.halfedges.push_back(h); }
+  int nf = 0;
+  for(face_descriptor f : faces(tm)) {
+    fpos[get(fim, f)] = nf++;
+    std::size_t degree = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { (void)h; ++degree; }
+    if(degree != 3) {
+      message = "face " + std::to_string(nf - 1) + " is not a triangle";
+      return INVALID_INPUT;
+    }
+  }
+
+  const int nh = int(d.halfedges.size());
+  cm.n_vertices = int(d.vertices.size());
+  cm.n_faces = nf;
+  cm.n_halfedges = nh;
+  cm.next.resize(nh); cm.prev.resize(nh); cm.opp.resize(nh); cm.target.resize(nh);
+  cm.face.resize(nh); cm.edge.assign(nh, -1);
+  cm.u.assign(nh, 0.); cm.v.assign(nh, 0.);
+  cm.vertex_on_border.assign(cm.n_vertices, 0);
+  for(int i = 0; i < nh; ++i) {
+    const halfedge_descriptor h = d.halfedges[i];
+    cm.next[i] = hpos[get(him, next(h, tm))];
+    cm.prev[i] = hpos[get(him, prev(h, tm))];
+    cm.opp[i] = hpos[get(him, opposite(h, tm))];
+    cm.target[i] = vpos[get(vim, target(h, tm))];
+    const face_descriptor f = face(h, tm);
+    cm.face[i] = (f == GT::null_face()) ? -1 : fpos[get(fim, f)];
+    if(cm.face[i] < 0) {
+      cm.vertex_on_border[cm.target[i]] = 1;
+      continue;
+    }
+    const auto p = get(uvmap, h);
+    const double pu = CGAL::to_double(p.x()), pv = CGAL::to_double(p.y());
+    if(!std::isfinite(pu) || !std::isfinite(pv)) {
+      message = "the UV of corner (vertex " + std::to_string(cm.target[i]) + ", face " + std::to_string(cm.face[i]) +
+                ") is not finite (NaN or infinity)";
+      return INVALID_INPUT;
+    }
+    cm.u[i] = pu; cm.v[i] = pv;
+  }
+  for(edge_descriptor e : edges(tm)) {
+    const int h = hpos[get(him, halfedge(e, tm))];
+    const int id = int(d.edges.size());
+    d.edges.push_back(e);
+    cm.edge_halfedge.push_back(h);
+    cm.edge[h] = id;
+    cm.edge[cm.opp[h]] = id;
+  }
+  cm.n_edges = int(d.edges.size());
+  return SUCCESS;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H

@@ -1,0 +1,287 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H
+
+// Evaluation of the implied values, Sec. 4.3, Alg. 3 (with Alg. 4 makeDIV and Alg. 5 safeDot),
+// corrected for b != 0 by the addendum's Eq. (2'); followed by an exact check of every row of the
+// caller's system before anything is returned.
+//
+// Data flow of one projection (each step depends only on the ones before):
+//   grid        K, delta = 2^K, quantum s = 2^(K-52)          from max |x̄|, max |b̂|  (or given)
+//   rhs_grid    B_j = b̂_j / s (exact integers)                 depends on grid
+//   shifts      z0: particular solution of the congruences     depends on rhs_grid   (b != 0 only)
+//   free        x_i = s (z0_i + l_i round((x̄_i/s - z0_i)/l_i)) depends on grid, shifts (Alg. 4)
+//   implied     x_pi(j) = (b̂_j - safeDot(Ĉ_j, x)) / p_j        depends on free       (Alg. 3, 5; Eq. 2')
+//   check       C z = b / s in exact integers, every row      depends on free, implied
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/Projection_report.h>
+#include <CGAL/Seamless_snapping/internal/divisibility_congruences.h>
+#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/integer_system.h>
+#include <CGAL/Seamless_snapping/internal/irref.h>
+#include <CGAL/Seamless_snapping/internal/safe_dot.h>
+
+#include <CGAL/Gmpz.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// v * 2^e exactly (e may be negative); false when the result is not an integer.
+inline bool scale_by_power_of_two(const CGAL::Gmpz& v, int e, CGAL::Gmpz& out)
+{
+  if(e >= 0) { mpz_mul_2exp(out.mpz(), v.mpz(), (unsigned long)e); return true; }
+  if(v != 0 && mpz_scan1(v.mpz(), 0) < (unsigned long)(-e)) return false;   // not divisible by 2^-e
+  mpz_tdiv_q_2exp(out.mpz(), v.mpz(), (unsigned long)(-e));
+  return true;
+}
+
+// Alg. 4 (makeDIV), generalized by a shift: the grid integer z nearest to X = x̄/s with z ≡ z0 (mod l).
+// Returns false when no such z lies inside the grid range |z| < 2^52.
+inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz& l, const CGAL::Gmpz& z0, std::int64_t& z)
+{
+  const std::int64_t Z_MAX = Fixed_point_grid::max_integer();
+  const double X = std::nearbyint(xbar / grid.quantum);          // |X| <= 2^52 as |x̄| < delta
+  CGAL::Gmpz Xz = Integer_ops<CGAL::Gmpz>::from_int64(std::int64_t(X));
+  CGAL::Gmpz d = Xz - z0, q, twice_d = d * 2 + l, two_l = l * 2;
+  mpz_fdiv_q(q.mpz(), twice_d.mpz(), two_l.mpz());              // q = round(d / l), halves up
+  for(int t : {0, 1, -1}) {                                      // the nearest candidate inside the range
+    CGAL::Gmpz cand = z0 + (q + t) * l;
+    std::int64_t c;
+    if(Integer_ops<CGAL::Gmpz>::to_int64(cand, c) && c <= Z_MAX && c >= -Z_MAX) { z = c; return true; }
+  }
+  return false;
+}
+
+template <typename Int>
+void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
+              const Projection_options& options, std::vector<double>& x, Projection_report& report)
+{
+  typedef Integer_ops<Int> Ops;
+  const std::size_t n = ir.n_cols, m = ir.rank();
+  auto fail = [&](Status s, const std::string& msg) { report.status = s; report.message = msg; };
+
+  // -- input
+  for(std::size_t i = 0; i < n; ++i)
+    if(!std::isfinite(xbar[i])) { fail(INVALID_INPUT, "x̄[" + std::to_string(i) + "] is not finite"); return; }
+
+  // -- grid (Sec. 4.3): K from the constrained inputs and the right-hand side, unless given
+  Fixed_point_grid grid;
+  if(options.delta_exponent) {
+    grid = Fixed_point_grid(*options.delta_exponent);
+  } else {
+    double max_abs = 0;
+    for(std::size_t i = 0; i < n; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_abs = std::max(max_abs, std::fabs(xbar[i]));
+    for(const Int& v : ir.rhs) max_abs = std::max(max_abs, std::fabs(Ops::to_double(v)));
+    grid = Fixed_point_grid::from_max_abs(max_abs, options.delta_margin_bits);
+  }
+  report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
+  for(std::size_t i = 0; i < n; ++i)
+    if(ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta)) {
+      fail(RANGE_EXCEEDED, "|x̄[" + std::to_string(i) + "]| is outside the fixed-point range (-2^" + std::to_string(grid.K)
+                           + ", 2^" + std::to_string(grid.K) + ")");
+      return;
+    }
+
+  // -- right-hand side on the grid: B_j = b̂_j / s must be an integer with |B_j| < 2^52
+  std::vector<CGAL::Gmpz> B;
+  if(!ir.homogeneous) {
+    B.resize(m);
+    for(std::size_t j = 0; j < m; ++j) {
+      if(Ops::is_zero(ir.rhs[j])) continue;
+      if(!scale_by_power_of_two(to_gmpz(ir.rhs[j]), 52 - grid.K, B[j])) {
+        fail(INFEASIBLE, "b̂ of IRREF row " + std::to_string(j) + " (" + Ops::to_string(ir.rhs[j])
+                         + ") is not a multiple of the grid quantum 2^" + std::to_string(grid.K - 52) + ": no solution on the grid F_delta");
+        return;
+      }
+      std::int64_t t;
+      if(!Integer_ops<CGAL::Gmpz>::to_int64(B[j], t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
+        fail(RANGE_EXCEEDED, "b̂ of IRREF row " + std::to_string(j) + " (" + Ops::to_string(ir.rhs[j])
+                             + ") is outside the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K) + ")");
+        return;
+      }
+    }
+  }
+
+  // -- shifts z0 (addendum, Eq. 2'): only for b != 0 with non-unit pivots
+  std::map<std::uint32_t, CGAL::Gmpz> z0;
+  if(!ir.homogeneous && !ir.unit_pivots) {
+    std::string msg;
+    Status st = solve_divisibility_congruences(ir, B, z0, msg);
+    if(st != SUCCESS) { fail(st, msg); return; }
+  }
+
+  // -- free variables (Alg. 3 "fix free variable", Alg. 4 makeDIV); unconstrained ones keep x̄
+  std::vector<double> out(xbar);
+  std::vector<std::int64_t> z(n, 0);            // grid integers of the constrained variables
+  for(std::size_t i = 0; i < n; ++i) {
+    if(ir.kind[i] != FREE_COLUMN) continue;
+    const bool unit = Ops::is_unit(ir.divisor[i]);
+    auto it = z0.find(std::uint32_t(i));
+    if(unit && it == z0.end()) {
+      out[i] = grid.round(xbar[i]);             // F_delta(x̄_i)
+      if(!(std::fabs(out[i]) < grid.delta)) {
+        fail(RANGE_EXCEEDED, "free variable " + std::to_string(i) + " rounds to the boundary of the fixed-point range");
+        return;
+      }
+      z[i] = grid.to_integer(out[i]);
+    } else {
+      const CGAL::Gmpz zero(0);
+      if(!make_div(xbar[i], grid, to_gmpz(ir.divisor[i]), it == z0.end() ? zero : it->second, z[i])) {
+        fail(RANGE_EXCEEDED, "free variable " + std::to_string(i) + " must be a multiple of " + Ops::to_string(ir.divisor[i])
+                             + " grid quanta (lcm of its rows' pivots, Alg. 4), and no such multiple lies in the fixed-point range");
+        return;
+      }
+      out[i] = grid.from_integer(z[i]);
+    }
+  }
+
+  // -- implied variables (Alg. 3 with Alg. 5; Eq. 2' for b != 0)
+  // With z_i = z0_i + p_j t_i (z_i - z0_i is a multiple of l_i, hence of p_j), Eq. (2') reads
+  //     z_pi(j) = c0_j - sum_i Ĉ_ji (z_i - z0_i) / p_j,   c0_j = (B_j - sum_i Ĉ_ji z0_i) / p_j,
+  // where c0_j is an exact integer (z0 solves the congruences). So every summand is divided by the
+  // pivot *before* the safe dot product, as in the paper's Alg. 3, and the range argument of Sec. 4.3
+  // holds for b != 0 as well; for b = 0, z0 = 0 and c0 = 0.
+  std::vector<std::pair<Int, double> > terms;
+  Safe_dot_workspace ws;
+  for(std::size_t j = 0; j < m; ++j) {
+    const Int& p = ir.pivot[j];
+    const bool unit = Ops::is_unit(p);
+    std::int64_t p64 = 1;
+    if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every shifted z_i - z0_i must be 0
+    CGAL::Gmpz c0(0);
+    if(!B.empty() && B[j] != 0) c0 = B[j];
+    terms.clear();
+    for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
+      const std::uint32_t c = ir.col[q];
+      auto it = z0.empty() ? z0.end() : z0.find(c);
+      std::int64_t t;                                        // (z_c - z0_c) / p_j
+      if(it == z0.end()) {
+        if(z[c] == 0) continue;
+        if(p64 == 0 || z[c] % p64 != 0) {
+          fail(EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c) + " is not divisible by the pivot "
+                                       + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Alg. 4)");
+          return;
+        }
+        t = z[c] / p64;
+      } else {                                               // shifted (b != 0): exact in Gmpz
+        c0 -= to_gmpz(ir.val[q]) * it->second;
+        CGAL::Gmpz d = to_gmpz(z[c]) - it->second;
+        const CGAL::Gmpz pz = to_gmpz(p);
+        if(!mpz_divisible_p(d.mpz(), pz.mpz())) {
+          fail(EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c) + " is not congruent to its shift modulo the pivot "
+                                       + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Eq. 2')");
+          return;
+        }
+        mpz_divexact(d.mpz(), d.mpz(), pz.mpz());
+        if(!Integer_ops<CGAL::Gmpz>::to_int64(d, t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
+          fail(RANGE_EXCEEDED, "the shifted free variable " + std::to_string(c) + " is outside the fixed-point range (Eq. 2')");
+          return;
+        }
+        if(t == 0) continue;
+      }
+      terms.push_back(std::make_pair(Ops::neg(ir.val[q]), grid.from_integer(t)));
+    }
+    if(c0 != 0) {
+      const CGAL::Gmpz pz = to_gmpz(p);
+      if(!mpz_divisible_p(c0.mpz(), pz.mpz())) {
+        fail(EXACTNESS_CHECK_FAILED, "internal error: IRREF row " + std::to_string(j) + " violates its divisibility congruence (Eq. 2')");
+        return;
+      }
+      mpz_divexact(c0.mpz(), c0.mpz(), pz.mpz());
+      std::int64_t c064;
+      if(!Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) || c064 > Fixed_point_grid::max_integer() || c064 < -Fixed_point_grid::max_integer()) {
+        fail(RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
+                             + " is outside the fixed-point range (Eq. 2', Sec. 7)");
+        return;
+      }
+      terms.push_back(std::make_pair(Ops::from_int64(1), grid.from_integer(c064)));
+    }
+    double r;
+    if(!safe_dot(terms, grid, r, ws)) {
+      fail(SAFE_DOT_FAILED, "the safe dot product (Alg. 5) for implied variable " + std::to_string(ir.pivot_col[j])
+                            + " (IRREF row " + std::to_string(j) + ") cannot stay inside (-2^" + std::to_string(grid.K)
+                            + ", 2^" + std::to_string(grid.K) + "): the implied value is out of range (Sec. 7; input "
+                            + std::to_string(xbar[ir.pivot_col[j]]) + "); a larger delta margin may help");
+      return;
+    }
+    if(!(std::fabs(r) < grid.delta)) {
+      fail(RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
+                           + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
+                           + ") (Sec. 7); its input was " + std::to_string(xbar[ir.pivot_col[j]]));
+      return;
+    }
+    z[ir.pivot_col[j]] = grid.to_integer(r);
+    out[ir.pivot_col[j]] = r;
+  }
+
+  // -- exact check of every row of the caller's (canonical) system: sum C_ik z_k == b_i / s
+  {
+    const bool small = sys.fits_int64;
+    const std::size_t rows = sys.n_rows;
+    const std::vector<std::size_t>& ptr = small ? sys.rows64.ptr : sys.rowsz.ptr;
+    const std::vector<std::uint32_t>& col = small ? sys.rows64.col : sys.rowsz.col;
+    for(std::size_t i = 0; i < rows; ++i) {
+      bool ok = false, done = false;
+      const bool b_zero = small ? sys.rows64.b[i] == 0 : sys.rowsz.b[i] == 0;
+      if(small && b_zero) {                    // fast path: 128-bit accumulation with overflow detection
+        __int128 acc = 0;
+        bool overflow = false;
+        for(std::size_t q = ptr[i]; q < ptr[i + 1] && !overflow; ++q) {
+          __int128 t;
+          overflow = __builtin_mul_overflow((__int128)sys.rows64.val[q], (__int128)z[col[q]], &t)
+                  || __builtin_add_overflow(acc, t, &acc);
+        }
+        if(!overflow) { ok = (acc == 0); done = true; }
+      }
+      if(!done) {                              // general path in Gmpz
+        CGAL::Gmpz acc(0), rhs;
+        for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q)
+          acc += (small ? to_gmpz(sys.rows64.val[q]) : sys.rowsz.val[q]) * to_gmpz(z[col[q]]);
+        const CGAL::Gmpz bi = small ? to_gmpz(sys.rows64.b[i]) : sys.rowsz.b[i];
+        ok = scale_by_power_of_two(bi, 52 - grid.K, rhs) && acc == rhs;
+      }
+      if(!ok) {
+        fail(EXACTNESS_CHECK_FAILED, "internal error: row " + std::to_string(i) + " of C x = b is violated after evaluation");
+        return;
+      }
+    }
+  }
+
+  // -- report
+  report.max_abs_change = 0;
+  report.changed_variables = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    if(out[i] != xbar[i]) ++report.changed_variables;
+    report.max_abs_change = std::max(report.max_abs_change, std::fabs(out[i] - xbar[i]));
+  }
+  report.status = SUCCESS;
+  report.message = "all " + std::to_string(sys.n_rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
+                   + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change);
+  x.swap(out);
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H

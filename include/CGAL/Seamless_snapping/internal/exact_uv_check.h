@@ -1,0 +1,141 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
+
+// Exact evaluation of constraint rows on double values, and the exact seamlessness test of a
+// corner UV map. Doubles are dyadic rationals: each one converts to CGAL::Gmpq without error and
+// every row is evaluated in rational arithmetic, with zero tolerance.
+
+#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// residual sum_j C_ij x_j of row i, exactly
+inline CGAL::Gmpq exact_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+{
+  CGAL::Gmpq r(0);
+  for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k)
+    r += CGAL::Gmpq(x[rows.col[k]]) * CGAL::Gmpq(rows.coef[k]);
+  return r;
+}
+
+// Index of the first row with a nonzero exact residual, or -1 when every row holds exactly.
+inline long first_violated_row(const Constraint_rows& rows, const std::vector<double>& x)
+{
+  for(std::size_t i = 0; i < rows.size(); ++i)
+    if(!CGAL::is_zero(exact_row_residual(rows, i, x))) return long(i);
+  return -1;
+}
+
+// max_i |sum_j C_ij x_j|, computed exactly, then rounded to double.
+inline double max_abs_residual(const Constraint_rows& rows, const std::vector<double>& x)
+{
+  CGAL::Gmpq m(0);
+  for(std::size_t i = 0; i < rows.size(); ++i) {
+    CGAL::Gmpq r = exact_row_residual(rows, i, x);
+    if(r < 0) r = -r;
+    if(m < r) m = r;
+  }
+  return CGAL::to_double(m);
+}
+
+// true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).
+inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
+{
+  const int o = cm.opp[h];
+  const int ph = cm.prev[h], po = cm.prev[o];
+  // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o)
+  const CGAL::Gmpq di[2] = { CGAL::Gmpq(cm.u[h]) - CGAL::Gmpq(cm.u[ph]), CGAL::Gmpq(cm.v[h]) - CGAL::Gmpq(cm.v[ph]) };
+  const CGAL::Gmpq dj[2] = { CGAL::Gmpq(cm.u[po]) - CGAL::Gmpq(cm.u[o]), CGAL::Gmpq(cm.v[po]) - CGAL::Gmpq(cm.v[o]) };
+  const Quarter_turn R(k);
+  for(int c = 0; c < 2; ++c) {
+    const CGAL::Gmpq rc = R.sign[c] > 0 ? di[R.col[c]] : CGAL::Gmpq(-di[R.col[c]]);
+    if(rc != dj[c]) return false;
+  }
+  return true;
+}
+
+// The exact test behind is_exactly_seamless().
+// `seam_override[e]`: as in compute_seam_topology(); `given_k[e]`: k of halfedge(e) or empty (any k);
+// `aligned[e]`: edges that must be axis-parallel in UV, or empty.
+inline bool is_exactly_seamless_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
+                                     const std::vector<int>& given_k, const std::vector<char>& aligned)
+{
+  for(int e = 0; e < cm.n_edges; ++e) {
+    const int h = cm.edge_halfedge[e], o = cm.opp[h];
+    if(!aligned.empty() && aligned[e]) {
+      const int g = cm.is_border_halfedge(h) ? o : h;
+      // doubles: the difference is zero iff the two coordinates are equal
+      if(cm.u[g] != cm.u[cm.prev[g]] && cm.v[g] != cm.v[cm.prev[g]]) return false;
+    }
+    if(cm.is_border_edge(e)) continue;
+    const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
+    const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
+    if(!seam) {
+      if(!continuous) return false;    // declared continuous, but the UVs jump
+      continue;
+    }
+    if(!given_k.empty()) {
+      if(!exact_transition_holds(cm, h, given_k[e])) return false;
+    } else {
+      bool some = false;
+      for(int k = 0; k < 4 && !some; ++k) some = exact_transition_holds(cm, h, k);
+      if(!some) return false;
+    }
+  }
+  return true;
+}
+
+// Builds the corner mesh of `tm` and evaluates the overrides (callables on descriptors) per edge.
+template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
+bool is_exactly_seamless_impl(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
+                              const RotationOf& rotation_of, bool has_rotations,
+                              const ConstrainedOf& constrained_of, bool has_constrained)
+{
+  Corner_mesh cm;
+  Corner_mesh_descriptors<TriangleMesh> desc;
+  std::string message;
+  if(build_corner_mesh(tm, uvmap, cm, desc, message) != SUCCESS) return false;
+  std::vector<signed char> seam_override;
+  std::vector<int> given_k;
+  std::vector<char> aligned;
+  if(has_seams) {
+    seam_override.resize(cm.n_edges);
+    for(int e = 0; e < cm.n_edges; ++e) seam_override[e] = seam_of(desc.edges[e]) ? 1 : 0;
+  }
+  if(has_rotations) {
+    given_k.resize(cm.n_edges);
+    for(int e = 0; e < cm.n_edges; ++e) given_k[e] = int(rotation_of(desc.halfedges[cm.edge_halfedge[e]]));
+  }
+  if(has_constrained) {
+    aligned.resize(cm.n_edges);
+    for(int e = 0; e < cm.n_edges; ++e) aligned[e] = constrained_of(desc.edges[e]) ? 1 : 0;
+  }
+  return is_exactly_seamless_impl(cm, seam_override, given_k, aligned);
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H

@@ -1,0 +1,366 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H
+
+// Fraction-free transformation of [C | b] into integer reduced row echelon form (IRREF), Sec. 4.1.
+//
+// The paper gives a dense Gaussian pass (Alg. 1, IREF) followed by a Jordan pass (Alg. 2). We
+// compute the same kind of result in one sparse Gauss–Jordan pass: each time a pivot (row k,
+// column c) is chosen, column c is eliminated from *every* other row that contains it, active or
+// already pivoted, by the fraction-free update
+//     row_i <- (p / g) row_i - (a / g) row_k,   g = gcd(p, a),  p = C_kc, a = C_ic,
+// after which row_i (with b_i) is divided by the gcd of its entries (Alg. 1–2, "o <- gcd").
+// At the end every pivot column has a single nonzero, in its pivot row: that is the IRREF up to
+// the order of the rows, which does not matter for evaluation (Eq. 2 only uses free variables).
+//
+// Pivoting limits fill-in (Markowitz-like): the next row is one that has a +-1 entry, and among
+// those one with fewest nonzeros (then rows without a unit entry, fewest nonzeros first); in it,
+// the pivot is an entry of smallest |value|, then of the column with fewest nonzeros (counting
+// pivoted rows, which the Jordan step also touches), then the smallest column index. All ties are
+// broken by indices, so the same canonical input gives the same IRREF.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/Projection_report.h>
+#include <CGAL/Seamless_snapping/internal/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/integer_system.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+enum Column_kind : unsigned char { UNCONSTRAINED_COLUMN = 0, FREE_COLUMN = 1, IMPLIED_COLUMN = 2 };
+
+// The result: one row per pivot, x_{pivot_col} = (rhs - sum val * x_col) / pivot (Eq. 2'),
+// where every col of a row is a free column.
+template <typename Int>
+struct Irref
+{
+  std::size_t n_cols = 0;
+  std::vector<std::uint32_t> pivot_col;   // per pivot row
+  std::vector<Int> pivot;                 // per pivot row, > 0
+  std::vector<Int> rhs;                   // per pivot row: b̂
+  std::vector<std::size_t> ptr;           // free terms of pivot row j: [ptr[j], ptr[j+1])
+  std::vector<std::uint32_t> col;
+  std::vector<Int> val;
+  std::vector<unsigned char> kind;        // Column_kind per column
+  std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none
+  bool unit_pivots = true;                // all pivots are 1: every divisor is 1
+  bool homogeneous = true;                // b̂ = 0
+  std::size_t dependent_rows = 0;
+  std::size_t eliminations = 0;
+
+  std::size_t rank() const { return pivot.size(); }
+
+  void fill_statistics(Irref_statistics& st) const
+  {
+    typedef Integer_ops<Int> Ops;
+    st.rank = rank();
+    st.implied_variables = rank();
+    st.free_variables = std::size_t(std::count(kind.begin(), kind.end(), (unsigned char)FREE_COLUMN));
+    st.dependent_rows = dependent_rows;
+    st.irref_nonzeros = rank() + col.size();
+    st.eliminations = eliminations;
+    Int m = Ops::from_int64(0);
+    for(const Int& v : pivot) if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
+    for(const Int& v : val)   if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
+    for(const Int& v : rhs)   if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
+    st.max_abs_coefficient = Ops::to_string(m);
+    st.max_abs_coefficient_double = Ops::to_double(m);
+  }
+};
+
+// Converts an IRREF computed in Gmpz to int64 when every number fits.
+inline bool narrow_irref(const Irref<CGAL::Gmpz>& z, Irref<std::int64_t>& r)
+{
+  typedef Integer_ops<CGAL::Gmpz> Z;
+  auto conv = [](const std::vector<CGAL::Gmpz>& in, std::vector<std::int64_t>& out) {
+    out.resize(in.size());
+    for(std::size_t i = 0; i < in.size(); ++i) if(!Z::to_int64(in[i], out[i])) return false;
+    return true;
+  };
+  if(!conv(z.pivot, r.pivot) || !conv(z.rhs, r.rhs) || !conv(z.val, r.val) || !conv(z.divisor, r.divisor)) return false;
+  r.n_cols = z.n_cols; r.pivot_col = z.pivot_col; r.ptr = z.ptr; r.col = z.col; r.kind = z.kind;
+  r.unit_pivots = z.unit_pivots; r.homogeneous = z.homogeneous;
+  r.dependent_rows = z.dependent_rows; r.eliminations = z.eliminations;
+  return true;
+}
+
+template <typename Int>
+class Irref_eliminator
+{
+  typedef Integer_ops<Int> Ops;
+  typedef std::pair<std::uint32_t, Int> Entry;
+  enum Row_state : unsigned char { ACTIVE = 0, PIVOT = 1, ZERO = 2 };
+
+  struct Row
+  {
+    std::vector<Entry> e;          // sorted by column
+    Int b;
+    std::uint32_t pivot_col = 0;
+    Row_state state = ACTIVE;
+  };
+
+  static const std::size_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
+
+public:
+  Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
+  {
+    load(sys);
+    std::vector<std::uint32_t> order;           // pivot rows in the order chosen
+    order.reserve(std::min(m_rows.size(), m_n_cols));
+    std::uint32_t k;
+    while(pop(k)) {
+      Row& row = m_rows[k];
+      if(row.e.empty()) {
+        if(!Ops::is_zero(row.b)) {
+          message = "row " + std::to_string(k) + " is a linear combination of other rows with an inconsistent right-hand side "
+                    "(it reduces to 0 = " + Ops::to_string(row.b) + "): the system has no solution";
+          return INFEASIBLE;
+        }
+        row.state = ZERO;
+        ++out.dependent_rows;
+        continue;
+      }
+      const std::uint32_t c = choose_pivot(row);
+      eliminate_column(k, c, out.eliminations);
+      m_rows[k].state = PIVOT;
+      m_rows[k].pivot_col = c;
+      order.push_back(k);
+    }
+    extract(sys, order, out);
+    return SUCCESS;
+  }
+
+private:
+  void load(const Integer_system& sys)
+  {
+    const Csr_rows<std::int64_t>& r64 = sys.rows64;
+    const Csr_rows<CGAL::Gmpz>& rz = sys.rowsz;
+    const Csr_rows<std::int64_t>* p64 = sys.fits_int64 ? &r64 : nullptr;
+    const std::vector<std::size_t>& ptr = sys.fits_int64 ? r64.ptr : rz.ptr;
+    const std::vector<std::uint32_t>& cols = sys.fits_int64 ? r64.col : rz.col;
+    m_n_cols = sys.n_cols;
+    m_rows.assign(sys.n_rows, Row());
+    for(std::size_t i = 0; i < sys.n_rows; ++i) {
+      Row& row = m_rows[i];
+      row.e.reserve(ptr[i + 1] - ptr[i]);
+      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q)
+        row.e.push_back(Entry(cols[q], p64 ? convert(r64.val[q]) : convert(rz.val[q])));
+      row.b = p64 ? convert(r64.b[i]) : convert(rz.b[i]);
+    }
+    // Column occurrences: compressed storage of the input, plus per-column lists for fill-in.
+    m_count.assign(m_n_cols, 0);
+    for(std::uint32_t c : cols) ++m_count[c];
+    m_col_ptr.assign(m_n_cols + 1, 0);
+    for(std::size_t c = 0; c < m_n_cols; ++c) m_col_ptr[c + 1] = m_col_ptr[c] + m_count[c];
+    m_col_rows.resize(cols.size());
+    std::vector<std::size_t> pos(m_col_ptr.begin(), m_col_ptr.end() - 1);
+    for(std::size_t i = 0; i < sys.n_rows; ++i)
+      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) m_col_rows[pos[cols[q]]++] = std::uint32_t(i);
+    m_fill.assign(m_n_cols, std::vector<std::uint32_t>());
+    // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
+    m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
+    m_cursor = 0;
+    for(std::size_t i = sys.n_rows; i-- > 0; ) push(std::uint32_t(i));
+  }
+
+  static Int convert(const std::int64_t& v) { return Ops::from_int64(v); }
+  static Int convert(const CGAL::Gmpz& v)   { return convert_gmpz(v, (Int*)nullptr); }
+  static CGAL::Gmpz convert_gmpz(const CGAL::Gmpz& v, CGAL::Gmpz*) { return v; }
+  static std::int64_t convert_gmpz(const CGAL::Gmpz& v, std::int64_t*)
+  { std::int64_t r; if(!Integer_ops<CGAL::Gmpz>::to_int64(v, r)) throw Integer_overflow(); return r; }
+
+  std::size_t key(const Row& row) const
+  {
+    bool unit = false;
+    for(const Entry& x : row.e) if(Ops::is_unit(x.second)) { unit = true; break; }
+    return (unit ? 0 : NNZ_BUCKETS) + std::min(row.e.size(), NNZ_BUCKETS - 1);
+  }
+  void push(std::uint32_t i)
+  {
+    const std::size_t k = key(m_rows[i]);
+    m_buckets[k].push_back(i);
+    if(k < m_cursor) m_cursor = k;
+  }
+  bool pop(std::uint32_t& out)
+  {
+    while(m_cursor < m_buckets.size()) {
+      std::vector<std::uint32_t>& bucket = m_buckets[m_cursor];
+      while(!bucket.empty()) {
+        const std::uint32_t i = bucket.back();
+        bucket.pop_back();
+        if(m_rows[i].state == ACTIVE && key(m_rows[i]) == m_cursor) { out = i; return true; }  // else stale
+      }
+      ++m_cursor;
+    }
+    return false;
+  }
+
+  std::uint32_t choose_pivot(const Row& row) const
+  {
+    std::size_t best = 0;
+    for(std::size_t q = 1; q < row.e.size(); ++q) {
+      const Int a = Ops::abs(row.e[q].second), ab = Ops::abs(row.e[best].second);
+      if(Ops::less(a, ab)) { best = q; continue; }
+      if(Ops::less(ab, a)) continue;
+      const std::uint32_t c = row.e[q].first, cb = row.e[best].first;
+      if(m_count[c] < m_count[cb] || (m_count[c] == m_count[cb] && c < cb)) best = q;
+    }
+    return row.e[best].first;
+  }
+
+  static const Int* find(const Row& row, std::uint32_t c)
+  {
+    auto it = std::lower_bound(row.e.begin(), row.e.end(), c,
+                               [](const Entry& x, std::uint32_t cc) { return x.first < cc; });
+    return (it != row.e.end() && it->first == c) ? &it->second : nullptr;
+  }
+
+  template <typename F>
+  void for_each_row_of_column(std::uint32_t c, F f) const
+  {
+    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) f(m_col_rows[q]);
+    for(std::uint32_t i : m_fill[c]) f(i);
+  }
+
+  // Eliminates column c from every row but k (fraction-free, then divided by the row gcd).
+  void eliminate_column(std::uint32_t k, std::uint32_t c, std::size_t& eliminations)
+  {
+    m_targets.clear();
+    for_each_row_of_column(c, [&](std::uint32_t i) {
+      if(i != k && m_rows[i].state != ZERO && find(m_rows[i], c) != nullptr) m_targets.push_back(i);
+    });
+    std::sort(m_targets.begin(), m_targets.end());
+    m_targets.erase(std::unique(m_targets.begin(), m_targets.end()), m_targets.end());
+    const Row& pr = m_rows[k];
+    const Int p = *find(pr, c);
+    for(std::uint32_t i : m_targets) {
+      Row& row = m_rows[i];
+      const Int a = *find(row, c);
+      const Int g = Ops::gcd(p, a);
+      const Int fi = Ops::exact_div(p, g), fk = Ops::exact_div(a, g);
+      combine(row, i, fi, pr, fk);
+      ++eliminations;
+      if(row.state == ACTIVE) push(i);
+    }
+    // Only row k holds column c now.
+    m_fill[c].clear();
+    m_fill[c].shrink_to_fit();
+    m_col_ptr_override(c, k);
+  }
+
+  // After elimination column c lives only in row k: make the occurrence list say so.
+  void m_col_ptr_override(std::uint32_t c, std::uint32_t k)
+  {
+    if(m_col_ptr[c + 1] > m_col_ptr[c]) {
+      m_col_rows[m_col_ptr[c]] = k;
+      for(std::size_t q = m_col_ptr[c] + 1; q < m_col_ptr[c + 1]; ++q) m_col_rows[q] = k;
+    } else {
+      m_fill[c].push_back(k);
+    }
+    m_count[c] = 1;
+  }
+
+  // row <- fi * row - fk * pr, then divided by the gcd of its entries and b.
+  void combine(Row& row, std::uint32_t i, const Int& fi, const Row& pr, const Int& fk)
+  {
+    m_merged.clear();
+    auto a = row.e.begin(), ae = row.e.end();
+    auto b = pr.e.begin(), be = pr.e.end();
+    while(a != ae || b != be) {
+      if(b == be || (a != ae && a->first < b->first)) {
+        m_merged.push_back(Entry(a->first, Ops::mul(fi, a->second))); ++a;
+      } else if(a == ae || b->first < a->first) {
+        m_merged.push_back(Entry(b->first, Ops::neg(Ops::mul(fk, b->second))));
+        ++m_count[b->first];
+        m_fill[b->first].push_back(i);
+        ++b;
+      } else {
+        Int v = Ops::sub(Ops::mul(fi, a->second), Ops::mul(fk, b->second));
+        if(Ops::is_zero(v)) --m_count[a->first];
+        else m_merged.push_back(Entry(a->first, v));
+        ++a; ++b;
+      }
+    }
+    row.b = Ops::sub(Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
+    Int g = Ops::abs(row.b);
+    for(std::size_t q = 0; q < m_merged.size() && !Ops::is_unit(g); ++q) g = Ops::gcd(g, m_merged[q].second);
+    if(!Ops::is_zero(g) && !Ops::is_unit(g)) {
+      for(Entry& x : m_merged) x.second = Ops::exact_div(x.second, g);
+      row.b = Ops::exact_div(row.b, g);
+    }
+    row.e.swap(m_merged);
+  }
+
+  void extract(const Integer_system& sys, const std::vector<std::uint32_t>& order, Irref<Int>& out)
+  {
+    out.n_cols = m_n_cols;
+    out.kind.assign(m_n_cols, (unsigned char)UNCONSTRAINED_COLUMN);
+    for(std::size_t c = 0; c < m_n_cols; ++c) if(sys.column_used[c]) out.kind[c] = FREE_COLUMN;
+    for(std::uint32_t k : order) out.kind[m_rows[k].pivot_col] = IMPLIED_COLUMN;
+    out.ptr.assign(1, 0);
+    out.divisor.assign(m_n_cols, Ops::from_int64(1));
+    for(std::uint32_t k : order) {
+      Row& row = m_rows[k];
+      const Int* pv = find(row, row.pivot_col);
+      const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
+      Int p = flip ? Ops::neg(*pv) : *pv;
+      out.pivot_col.push_back(row.pivot_col);
+      out.rhs.push_back(flip ? Ops::neg(row.b) : row.b);
+      if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
+      if(!Ops::is_unit(p)) out.unit_pivots = false;
+      for(const Entry& x : row.e) {
+        if(x.first == row.pivot_col) continue;
+        CGAL_assertion(out.kind[x.first] == FREE_COLUMN);
+        out.col.push_back(x.first);
+        out.val.push_back(flip ? Ops::neg(x.second) : x.second);
+        if(!Ops::is_unit(p)) out.divisor[x.first] = Ops::lcm(out.divisor[x.first], p);   // Alg. 4
+      }
+      out.pivot.push_back(p);
+      out.ptr.push_back(out.col.size());
+      std::vector<Entry>().swap(row.e);                // release memory as we go
+    }
+  }
+
+  std::size_t m_n_cols = 0;
+  std::vector<Row> m_rows;
+  std::vector<std::uint32_t> m_count;                  // rows (active or pivot) containing each column
+  std::vector<std::size_t> m_col_ptr;                  // input occurrences per column (may be stale)
+  std::vector<std::uint32_t> m_col_rows;
+  std::vector<std::vector<std::uint32_t> > m_fill;     // occurrences created by fill-in (may be stale)
+  std::vector<std::vector<std::uint32_t> > m_buckets;
+  std::size_t m_cursor = 0;
+  std::vector<std::uint32_t> m_targets;
+  std::vector<Entry> m_merged;
+};
+
+// Computes the IRREF of the canonical system in Int. With Int = int64 an overflow throws
+// Integer_overflow (the caller then redoes it in Gmpz).
+template <typename Int>
+Status compute_irref(const Integer_system& sys, Irref<Int>& out, std::string& message)
+{
+  out = Irref<Int>();
+  Irref_eliminator<Int> e;
+  return e.run(sys, out, message);
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H

@@ -1,0 +1,89 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H
+
+// Steps 2 and 3 of Sec. 5.3.1: values of the non-node sectors along the branches, once the node
+// sectors are exact and on the grid F_delta.
+//
+// Cut branch, row t < m-1 of Eq. (9):  R^k (u_0^+ - u_{t+1}^+) - (u_0^- - u_{t+1}^-) = 0.
+//   u_{t+1}^+ is free: u_{t+1}^+ <- F_delta(ubar_{t+1}^+) (step 2);
+//   u_{t+1}^- has a unit coefficient: u_{t+1}^- = u_0^- - R^k u_0^+ + R^k u_{t+1}^+, per component
+//   a sum of three grid values with coefficients +-1, evaluated by the safe dot product (Alg. 5),
+//   hence exactly (step 3).
+// Align branch with component c: u_{t+1}|c <- u_0|c (exact copy); the other component is untouched.
+// A result outside (-delta, delta) is RANGE_EXCEEDED, a stuck safe dot SAFE_DOT_FAILED.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/reduced_system.h>
+#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/safe_dot.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// `x`: 2 values per sector; on entry the node sectors hold their exact values (on the grid) and
+// every other sector its input value. On success, the non-node sectors of the branches are set.
+inline Status propagate_along_branches(const Reduced_system& rs, const std::vector<double>& ubar,
+                                       const Fixed_point_grid& grid, std::vector<double>& x, std::string& message)
+{
+  Safe_dot_workspace ws;
+  std::vector<std::pair<std::int64_t, double> > terms(3);
+  std::size_t branch = 0;
+  for(const Cut_branch_plan& p : rs.cut_branches) {
+    const Quarter_turn R(p.k);
+    for(const std::pair<int, int>& s : p.inner) {
+      const int plus = s.first, minus = s.second;
+      for(int c = 0; c < 2; ++c) {
+        x[2 * plus + c] = grid.round(ubar[2 * plus + c]);
+        if(!grid.contains(x[2 * plus + c])) {
+          message = "sector " + std::to_string(plus) + " (cut branch " + std::to_string(branch) +
+                    "): its input value leaves the fixed-point range (-delta, delta), delta = 2^" + std::to_string(grid.K);
+          return RANGE_EXCEEDED;
+        }
+      }
+      for(int c = 0; c < 2; ++c) {
+        // (u^-)_c = (u_0^-)_c - sign_c (u_0^+)_{col_c} + sign_c (u^+)_{col_c}
+        terms[0] = std::make_pair(std::int64_t(1), x[2 * p.u0_minus + c]);
+        terms[1] = std::make_pair(std::int64_t(-R.sign[c]), x[2 * p.u0_plus + R.col[c]]);
+        terms[2] = std::make_pair(std::int64_t(R.sign[c]), x[2 * plus + R.col[c]]);
+        double r;
+        if(!safe_dot(terms, grid, r, ws)) {
+          message = "safe dot product stuck for sector " + std::to_string(minus) + " on cut branch " +
+                    std::to_string(branch) + " (the value would leave (-delta, delta), delta = 2^" + std::to_string(grid.K) + ")";
+          return SAFE_DOT_FAILED;
+        }
+        if(!grid.contains(r)) {
+          message = "implied value of sector " + std::to_string(minus) + " on cut branch " + std::to_string(branch) +
+                    " leaves the fixed-point range (-delta, delta), delta = 2^" + std::to_string(grid.K);
+          return RANGE_EXCEEDED;
+        }
+        x[2 * minus + c] = r;
+      }
+    }
+    ++branch;
+  }
+  for(const Align_branch_plan& p : rs.align_branches)
+    for(int s : p.inner) x[2 * s + p.component] = x[2 * p.u0 + p.component];
+  return SUCCESS;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H

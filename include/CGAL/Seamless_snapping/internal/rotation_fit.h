@@ -1,0 +1,185 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H
+
+// Rotation k of the transition across each cut edge (Eq. 3/4), and the check that the input is
+// seamless up to rotations by multiples of 90 degrees.
+//
+// Convention: k(h) in {0,1,2,3} is the number of quarter turns counter-clockwise that map the frame
+// of face(h) to the frame of face(opposite(h)): R^k (U_a^i - U_b^i) = U_a^j - U_b^j with
+// i = face(h), j = face(opposite(h)), a = source(h), b = target(h), R(x, y) = (-y, x).
+// k(opposite(h)) = -k(h) mod 4.
+//
+// Fitting (when the caller gives no rotations): ONE k per seam arc, i.e. per chain of cut edges
+// between cones, border vertices and vertices whose cut-degree is not 2, maximizing
+//   sum over the arc's edges of dot(R^k d_i, d_j)
+// (d_i, d_j: the edge's UV vector on either side, both oriented along the arc). Long edges
+// dominate, so near-zero-length cut edges, whose direction is noise, get the rotation of their arc
+// (cf. [EBCK13] for the per-edge version).
+//
+// Check: every non-degenerate cut edge must have |angle(R^k d_i, d_j)| <= rotation tolerance and
+// | |d_j| - |d_i| | <= tolerance (in radians) * max(|d_i|, |d_j|) (a rigid motion keeps lengths),
+// otherwise the input is refused with NOT_QUARTER_TURN_SEAMLESS (e.g. 120 degree orbifolds).
+// Degenerate: the UV length on one side is below 1e-6 times the UV bounding-box diagonal.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/edge_chains.h>
+#include <CGAL/Seamless_snapping/internal/seam_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// relative UV length under which a cut edge counts as degenerate (its direction is not checked)
+constexpr double degenerate_cut_edge_length = 1e-6;
+
+// (x, y) -> R^k (x, y), R(x, y) = (-y, x)
+inline void rotate_quarter_turns(int k, double x, double y, double& rx, double& ry)
+{
+  switch(((k % 4) + 4) % 4) {
+    case 0: rx = x;  ry = y;  break;
+    case 1: rx = -y; ry = x;  break;
+    case 2: rx = -x; ry = -y; break;
+    default: rx = y; ry = -x; break;
+  }
+}
+
+// The 2x2 integer matrix R^k as (column, sign) per output component: (R^k x)_c = sign[c] * x_{col[c]}.
+struct Quarter_turn
+{
+  int col[2]; int sign[2];
+  explicit Quarter_turn(int k)
+  {
+    switch(((k % 4) + 4) % 4) {
+      case 0: col[0] = 0; sign[0] = 1;  col[1] = 1; sign[1] = 1;  break;
+      case 1: col[0] = 1; sign[0] = -1; col[1] = 0; sign[1] = 1;  break;
+      case 2: col[0] = 0; sign[0] = -1; col[1] = 1; sign[1] = -1; break;
+      default: col[0] = 1; sign[0] = 1; col[1] = 0; sign[1] = -1; break;
+    }
+  }
+};
+
+struct Cut_rotations
+{
+  std::vector<int> k;              // per halfedge (cut edges only; 0 elsewhere)
+  std::vector<char> degenerate;    // per edge (cut edges only)
+  std::size_t n_degenerate = 0;
+  std::size_t n_arcs = 0;
+  double max_deviation_degrees = 0;// over non-degenerate cut edges
+};
+
+// UV vectors of the cut edge of h on both sides, oriented source(h) -> target(h):
+// d_i in face(h), d_j in face(opposite(h)).
+inline void transition_vectors(const Corner_mesh& cm, int h, double di[2], double dj[2])
+{
+  const int o = cm.opp[h];
+  di[0] = cm.du(h);  di[1] = cm.dv(h);
+  dj[0] = -cm.du(o); dj[1] = -cm.dv(o);
+}
+
+inline std::string format_double(double x, int precision = 6)
+{
+  std::ostringstream s; s.precision(precision); s << x; return s.str();
+}
+
+// `given_k[e]`: the caller's rotation for halfedge(e) (edge_halfedge), or empty to fit.
+inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, const std::vector<int>& given_k,
+                            double tolerance_degrees, Cut_rotations& rot, std::string& message)
+{
+  rot = Cut_rotations();
+  rot.k.assign(cm.n_halfedges, 0);
+  rot.degenerate.assign(cm.n_edges, 0);
+  const double min_length = degenerate_cut_edge_length * st.uv_diagonal;
+  for(int e : st.cut_edges) {
+    double di[2], dj[2];
+    transition_vectors(cm, cm.edge_halfedge[e], di, dj);
+    if(!(std::hypot(di[0], di[1]) >= min_length && std::hypot(dj[0], dj[1]) >= min_length) || min_length == 0) {
+      rot.degenerate[e] = 1;
+      ++rot.n_degenerate;
+    }
+  }
+
+  auto set_k = [&](int h, int k) {
+    k = ((k % 4) + 4) % 4;
+    rot.k[h] = k;
+    rot.k[cm.opp[h]] = (4 - k) % 4;
+  };
+
+  if(!given_k.empty()) {
+    for(int e : st.cut_edges) set_k(cm.edge_halfedge[e], given_k[e]);
+  } else {
+    std::vector<char> stop(cm.n_vertices, 0);
+    for(int v = 0; v < cm.n_vertices; ++v)
+      stop[v] = st.is_cone[v] || cm.vertex_on_border[v] || st.cut_degree[v] != 2;
+    Edge_chains arcs;
+    decompose_into_chains(cm, st.is_cut, stop, arcs);
+    rot.n_arcs = arcs.chains.size();
+    for(const std::vector<int>& arc : arcs.chains) {
+      double score[4] = {0, 0, 0, 0};
+      for(int h : arc) {
+        double di[2], dj[2];
+        transition_vectors(cm, h, di, dj);
+        for(int k = 0; k < 4; ++k) {
+          double rx, ry;
+          rotate_quarter_turns(k, di[0], di[1], rx, ry);
+          score[k] += rx * dj[0] + ry * dj[1];
+        }
+      }
+      int best = 0;
+      for(int k = 1; k < 4; ++k) if(score[k] > score[best]) best = k;
+      for(int h : arc) set_k(h, best);
+    }
+  }
+
+  // every non-degenerate transition must be a rotation by k * 90 degrees, up to the tolerance
+  const double rad = std::acos(-1.) / 180;
+  for(int e : st.cut_edges) {
+    if(rot.degenerate[e]) continue;
+    const int h = cm.edge_halfedge[e];
+    double di[2], dj[2], r[2];
+    transition_vectors(cm, h, di, dj);
+    rotate_quarter_turns(rot.k[h], di[0], di[1], r[0], r[1]);
+    const double deviation = std::fabs(std::atan2(r[0] * dj[1] - r[1] * dj[0], r[0] * dj[0] + r[1] * dj[1])) / rad;
+    if(deviation > rot.max_deviation_degrees) rot.max_deviation_degrees = deviation;
+    if(!(deviation <= tolerance_degrees)) {
+      const double angle = std::atan2(di[0] * dj[1] - di[1] * dj[0], di[0] * dj[0] + di[1] * dj[1]) / rad;
+      message = "cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
+                std::to_string(cm.face[cm.opp[h]]) + "): the transition rotates its UV vector by " +
+                format_double(angle) + " degrees, " + format_double(deviation) + " degrees away from " +
+                std::to_string(rot.k[h] * 90) + " degrees (k = " + std::to_string(rot.k[h]) +
+                (given_k.empty() ? ", fitted on its seam arc" : ", given") + "); the rotation tolerance is " +
+                format_double(tolerance_degrees) + " degrees: not a quarter-turn seamless parametrization";
+      return NOT_QUARTER_TURN_SEAMLESS;
+    }
+    const double li = std::hypot(di[0], di[1]), lj = std::hypot(dj[0], dj[1]);
+    if(!(std::fabs(li - lj) <= tolerance_degrees * rad * (std::max)(li, lj))) {
+      message = "cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
+                std::to_string(cm.face[cm.opp[h]]) + "): its UV lengths on the two sides differ (" +
+                format_double(li, 17) + " vs " + format_double(lj, 17) + "), more than the rotation tolerance of " +
+                format_double(tolerance_degrees) + " degrees allows: the transition is not a rigid motion";
+      return NOT_QUARTER_TURN_SEAMLESS;
+    }
+  }
+  return SUCCESS;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H

@@ -1,0 +1,118 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
+#define CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
+
+#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ *
+ * tests, in exact rational arithmetic (`CGAL::Gmpq`, zero tolerance), whether a per-corner UV map is
+ * seamless up to rotations by multiples of 90 degrees (Eq. 3/4 of Mandad & Campen 2019): for every cut
+ * edge, with UV vectors `d_i = UV(b) - UV(a)` in one face and `d_j` in the other, there is a `k` in
+ * {0, 1, 2, 3} with `R^k d_i == d_j` exactly (`R(x, y) = (-y, x)`). Doubles are dyadic rationals, so
+ * the test has no rounding.
+ *
+ * Also checked: with `seam_edge_map`, every interior edge that is not a seam must be continuous (same UVs
+ * on both sides); with `rotation_map`, `k` must be the given one; with `edge_is_constrained_map`, each
+ * constrained edge must be exactly parallel to the u or v axis in UV (Eq. 5).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
+ * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
+ *         as key type and a 2D point type with `double` coordinates as value type
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the triangle mesh
+ * \param uv the corner UV map: `get(uv, h)` is the UV of the corner (`target(h)`, `face(h)`)
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{seam_edge_map}
+ *     \cgalParamDescription{which interior edges are seams}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{the interior edges whose two faces disagree (as numbers) on an endpoint UV}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::seam_edge_map()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{rotation_map}
+ *     \cgalParamDescription{for `h = halfedge(e, tm)` of each seam, the quarter turns `k` counter-clockwise from the
+ *                           UV frame of `face(h)` to that of `face(opposite(h))` (modulo 4)}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
+ *                    as key type and an integer type as value type}
+ *     \cgalParamDefault{any `k` is accepted}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::rotation_map()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{edges that must be exactly parallel to the u or v axis}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{no such edges}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return `true` iff all the above holds exactly. An empty mesh, a non-triangle face or a non-finite UV
+ *         gives `false`.
+ *
+ * \sa `snap_seamless_parameterization()`
+ */
+template <class TriangleMesh, class HalfedgeUVMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_exactly_seamless(const TriangleMesh& tm, HalfedgeUVMap uv,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_seam_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::seam_edge_map_t, NamedParameters,
+                                                       Default_seam_map>::type Seam_map;
+  const Seam_map seams = choose_parameter<Seam_map>(get_parameter(np, snap_np::seam_edge_map), Default_seam_map(false));
+  const bool has_seams = !is_default_parameter<NamedParameters, snap_np::seam_edge_map_t>::value;
+  typedef CGAL::Constant_property_map<halfedge_descriptor, int> Default_rotation_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::rotation_map_t, NamedParameters,
+                                                       Default_rotation_map>::type Rotation_map;
+  const Rotation_map rotations = choose_parameter<Rotation_map>(get_parameter(np, snap_np::rotation_map), Default_rotation_map(0));
+  const bool has_rotations = !is_default_parameter<NamedParameters, snap_np::rotation_map_t>::value;
+  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_constrained_map;
+  typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
+                                                       Default_constrained_map>::type Constrained_map;
+  const Constrained_map constrained = choose_parameter<Constrained_map>(get_parameter(np, internal_np::edge_is_constrained),
+                                                                        Default_constrained_map(false));
+  const bool has_constrained = !is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
+
+  return internal::is_exactly_seamless_impl(tm, uv,
+                                            [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,
+                                            [&](halfedge_descriptor h) { return int(get(rotations, h)); }, has_rotations,
+                                            [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained);
+}
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H

@@ -1,0 +1,209 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_SNAP_SEAMLESS_PARAMETERIZATION_H
+#define CGAL_SEAMLESS_SNAPPING_SNAP_SEAMLESS_PARAMETERIZATION_H
+
+#include <CGAL/Seamless_snapping/Snap_report.h>
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/parameters.h>
+#include <CGAL/Seamless_snapping/internal/snap_pipeline.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ *
+ * snaps an approximately seamless per-corner UV map of a triangle mesh to nearby UVs, still IEEE
+ * doubles, that are *exactly* seamless: across every cut edge the UVs of the two faces are related
+ * by a rotation by a multiple of 90 degrees plus a translation, and every align edge is exactly
+ * parallel to the u or v axis, in real arithmetic (Mandad & Campen 2019, Sec. 5).
+ *
+ * The method (Sec. 5, 5.1, 5.3 of the paper):
+ * 1. *Extraction.* A cut edge is an interior edge whose two faces disagree on the UV of one of
+ *    its endpoints (or an edge of `seam_edge_map`). Around each vertex, the corners are grouped
+ *    into sectors (fans between cut edges and the border); all corners of a sector share one UV,
+ *    the sector variable. The rotation `k` of each cut edge is given (`rotation_map`) or fitted:
+ *    one `k` per seam arc (chain of cut edges between cones, border vertices and vertices whose
+ *    number of cut edges is not 2), maximizing the sum of `dot(R^k d_i, d_j)` over the arc's edges,
+ *    which is robust to near-zero-length cut edges. Cones are interior vertices whose UV angle
+ *    sum, rounded to quarter turns, is not 2 pi.
+ * 2. *Constraints.* Two rows of Eq. (4) per cut edge, `R^k (U_a^i - U_b^i) - (U_a^j - U_b^j) = 0`,
+ *    and one row of Eq. (5) per align edge, `U_a|c - U_b|c = 0`.
+ * 3. *Reduction* (default, Sec. 5.3): cumulative equations along the branches between nodes leave a
+ *    small node system, which is projected exactly by `Exact_constraint_projection`; the other
+ *    sectors of the branches follow by unit-coefficient rows evaluated with the safe dot product
+ *    (Alg. 5), on the same fixed-point grid F_delta (Sec. 4.3).
+ * 4. *Verification.* Every row of the full system is evaluated on the result in rational
+ *    arithmetic (`CGAL::Gmpq`), with zero tolerance, before anything is written.
+ *
+ * Only the corners of sectors whose value changed are written, after the verification; a border
+ * halfedge `h` is also updated when it holds the UV of the corner `prev(opposite(h))` (the
+ * `Seam_mesh` convention). Sectors that are in no constraint keep their UVs bit for bit, and an
+ * input that is already exactly seamless is left unchanged.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
+ * \tparam HalfedgeUVMap a model of `ReadWritePropertyMap` with
+ *         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type and a 2D point type
+ *         (e.g. `CGAL::Exact_predicates_inexact_constructions_kernel::Point_2`) with `double`
+ *         coordinates as value type; the kernel is found with `CGAL::Kernel_traits`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the triangle mesh (its connectivity is only read)
+ * \param uv the corner UV map: for a non-border halfedge `h`, `get(uv, h)` is the UV of the corner
+ *        (`target(h)`, `face(h)`), in UV units
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{seam_edge_map}
+ *     \cgalParamDescription{a property map telling which interior edges are cut edges (seams)}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{the interior edges whose two faces disagree (as numbers) on the UV of an endpoint}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::seam_edge_map()`. Corners joined by an
+ *                     edge that is not a seam must have the same UV, otherwise `INVALID_INPUT` is returned.}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{rotation_map}
+ *     \cgalParamDescription{the rotation of the transition across each cut edge: for `h = halfedge(e, tm)`,
+ *                           the number `k` of quarter turns counter-clockwise that map the UV frame of `face(h)`
+ *                           to the UV frame of `face(opposite(h))`, i.e. `R^k (U_a^i - U_b^i) = U_a^j - U_b^j` with
+ *                           `R(x, y) = (-y, x)`, `i = face(h)`, `j = face(opposite(h))`, `a = source(h)`, `b = target(h)`.
+ *                           Any integer is taken modulo 4. Only `halfedge(e, tm)` of each cut edge is read.}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
+ *                    as key type and an integer type as value type}
+ *     \cgalParamDefault{fitted from the UVs, one `k` per seam arc}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::rotation_map()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{rotation_tolerance}
+ *     \cgalParamDescription{the largest deviation, in degrees, of the transition of a non-degenerate cut edge from
+ *                           its rotation `k * 90` degrees; the same value, in radians, bounds the relative difference
+ *                           of the edge's UV lengths on the two sides. A cut edge is degenerate when its UV length on
+ *                           one side is below 1e-6 times the diagonal of the UV bounding box; it is not checked.}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`1` (degree)}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::rotation_tolerance()`. A larger deviation
+ *                     gives `NOT_QUARTER_TURN_SEAMLESS` (e.g. the 120 degree seams of CGAL's `Triangle` orbifold).}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{align_boundary}
+ *     \cgalParamDescription{whether border edges whose UV direction is within `alignment_tolerance` of the u or v axis
+ *                           get an alignment constraint (Eq. 5), which makes them exactly axis-parallel.
+ *                           Degenerate border edges (UV length below 1e-6 times the UV diagonal) are never aligned.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::align_boundary()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{alignment_tolerance}
+ *     \cgalParamDescription{the largest angle, in degrees, between the UV direction of an edge and the u or v axis for the
+ *                           edge to count as aligned (border edges with `align_boundary`, and the edges of
+ *                           `edge_is_constrained_map`)}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{`1e-3` (degrees): aligned parametrizations are axis-parallel up to solver error, far below
+ *                       this; free boundaries are rarely that close to an axis by chance}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::alignment_tolerance()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{edges (features, border) that must be aligned with the u or v axis (Eq. 5); the aligned
+ *                           component is inferred from the UV direction, in the face of `halfedge(e, tm)` (or the
+ *                           non-border side). An edge that is not within `alignment_tolerance` of an axis gives
+ *                           `INVALID_INPUT`.}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{no such edges}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{use_reduced_system}
+ *     \cgalParamDescription{`true`: project the node system of Sec. 5.3 and propagate along the branches;
+ *                           `false`: project the full sector system (slower by orders of magnitude on large meshes;
+ *                           for comparisons)}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::use_reduced_system()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return a `Snap_report`. Its status is
+ *   - `SUCCESS`: the map now is exactly seamless (checked in rational arithmetic), or already was;
+ *   - `INVALID_INPUT`: no face, a face that is not a triangle, a NaN or infinite UV, corners of one sector
+ *     with different UVs, an align edge without direction;
+ *   - `NOT_QUARTER_TURN_SEAMLESS`: a transition is not a rotation by a multiple of 90 degrees (the message names the
+ *     edge by its vertex indices and gives the angle);
+ *   - `RANGE_EXCEEDED`, `SAFE_DOT_FAILED`, `INFEASIBLE`: the exact projection or the propagation failed
+ *     (Sec. 4.3, 7), the message says where;
+ *   - `EXACTNESS_CHECK_FAILED`: the final exact check found a violated row (an internal error, never hidden).
+ *   On any status other than `SUCCESS`, `uv` is left bit-identical.
+ *   Lengths in the report are relative to the diagonal of the UV bounding box of the input.
+ *
+ * \warning The result consists of doubles and satisfies the constraints exactly, but it is not the
+ * closest such point (Sec. 4.2): free variables keep their (rounded) values and implied ones absorb
+ * the change. Small triangles near the seams may flip; the report counts flips before and after.
+ *
+ * \sa `is_exactly_seamless()`, `Exact_constraint_projection`
+ */
+template <class TriangleMesh, class HalfedgeUVMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Snap_report snap_seamless_parameterization(TriangleMesh& tm, HalfedgeUVMap uv,
+                                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  // seams
+  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_seam_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::seam_edge_map_t, NamedParameters,
+                                                       Default_seam_map>::type Seam_map;
+  const Seam_map seams = choose_parameter<Seam_map>(get_parameter(np, snap_np::seam_edge_map), Default_seam_map(false));
+  const bool has_seams = !is_default_parameter<NamedParameters, snap_np::seam_edge_map_t>::value;
+  // rotations
+  typedef CGAL::Constant_property_map<halfedge_descriptor, int> Default_rotation_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::rotation_map_t, NamedParameters,
+                                                       Default_rotation_map>::type Rotation_map;
+  const Rotation_map rotations = choose_parameter<Rotation_map>(get_parameter(np, snap_np::rotation_map), Default_rotation_map(0));
+  const bool has_rotations = !is_default_parameter<NamedParameters, snap_np::rotation_map_t>::value;
+  // align edges
+  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_constrained_map;
+  typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
+                                                       Default_constrained_map>::type Constrained_map;
+  const Constrained_map constrained = choose_parameter<Constrained_map>(get_parameter(np, internal_np::edge_is_constrained),
+                                                                        Default_constrained_map(false));
+  const bool has_constrained = !is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
+  // options
+  const internal::Snap_options defaults;
+  internal::Snap_options options;
+  options.align_boundary = choose_parameter(get_parameter(np, snap_np::align_boundary), defaults.align_boundary);
+  options.use_reduced_system = choose_parameter(get_parameter(np, snap_np::use_reduced_system), defaults.use_reduced_system);
+  options.alignment_tolerance = choose_parameter(get_parameter(np, snap_np::alignment_tolerance), defaults.alignment_tolerance);
+  options.rotation_tolerance = choose_parameter(get_parameter(np, snap_np::rotation_tolerance), defaults.rotation_tolerance);
+  options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
+
+  return internal::snap_pipeline(tm, uv,
+                                 [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,
+                                 [&](halfedge_descriptor h) { return int(get(rotations, h)); }, has_rotations,
+                                 [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained,
+                                 options);
+}
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_SNAP_SEAMLESS_PARAMETERIZATION_H
