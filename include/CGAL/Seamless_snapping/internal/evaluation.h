@@ -163,13 +163,14 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
   // holds for b != 0 as well; for b = 0, z0 = 0 and c0 = 0.
   std::vector<std::pair<Int, double> > terms;
   Safe_dot_workspace ws;
+  const bool shifted = !B.empty();                         // b != 0: constants c0_j and shifts z0
+  CGAL::Gmpz c0;                                           // reused: no allocation per row
   for(std::size_t j = 0; j < m; ++j) {
     const Int& p = ir.pivot[j];
     const bool unit = Ops::is_unit(p);
     std::int64_t p64 = 1;
-    if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every shifted z_i - z0_i must be 0
-    CGAL::Gmpz c0(0);
-    if(!B.empty() && B[j] != 0) c0 = B[j];
+    if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every z_i (resp. z_i - z0_i) must be 0
+    if(shifted) c0 = B[j];
     terms.clear();
     for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
       const std::uint32_t c = ir.col[q];
@@ -201,7 +202,7 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
       }
       terms.push_back(std::make_pair(Ops::neg(ir.val[q]), grid.from_integer(t)));
     }
-    if(c0 != 0) {
+    if(shifted && c0 != 0) {
       const CGAL::Gmpz pz = to_gmpz(p);
       if(!mpz_divisible_p(c0.mpz(), pz.mpz())) {
         fail(EXACTNESS_CHECK_FAILED, "internal error: IRREF row " + std::to_string(j) + " violates its divisibility congruence (Eq. 2')");
@@ -239,24 +240,24 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
     const bool small = sys.fits_int64;
     const std::size_t rows = sys.n_rows;
     const std::vector<std::size_t>& ptr = small ? sys.rows64.ptr : sys.rowsz.ptr;
-    const std::vector<std::uint32_t>& col = small ? sys.rows64.col : sys.rowsz.col;
     for(std::size_t i = 0; i < rows; ++i) {
       bool ok = false, done = false;
-      const bool b_zero = small ? sys.rows64.b[i] == 0 : sys.rowsz.b[i] == 0;
-      if(small && b_zero) {                    // fast path: 128-bit accumulation with overflow detection
+      if(small && sys.rows64.b[i] == 0) {      // fast path: 128-bit accumulation with overflow detection
         __int128 acc = 0;
         bool overflow = false;
         for(std::size_t q = ptr[i]; q < ptr[i + 1] && !overflow; ++q) {
           __int128 t;
-          overflow = __builtin_mul_overflow((__int128)sys.rows64.val[q], (__int128)z[col[q]], &t)
+          overflow = __builtin_mul_overflow((__int128)sys.rows64.e[q].val, (__int128)z[sys.rows64.e[q].col], &t)
                   || __builtin_add_overflow(acc, t, &acc);
         }
         if(!overflow) { ok = (acc == 0); done = true; }
       }
       if(!done) {                              // general path in Gmpz
         CGAL::Gmpz acc(0), rhs;
-        for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q)
-          acc += (small ? to_gmpz(sys.rows64.val[q]) : sys.rowsz.val[q]) * to_gmpz(z[col[q]]);
+        for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) {
+          if(small) acc += to_gmpz(sys.rows64.e[q].val) * to_gmpz(z[sys.rows64.e[q].col]);
+          else      acc += sys.rowsz.e[q].val * to_gmpz(z[sys.rowsz.e[q].col]);
+        }
         const CGAL::Gmpz bi = small ? to_gmpz(sys.rows64.b[i]) : sys.rowsz.b[i];
         ok = scale_by_power_of_two(bi, 52 - grid.K, rhs) && acc == rhs;
       }

@@ -30,15 +30,22 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// Rows in compressed sparse row storage.
+// One nonzero of a sparse integer row.
+template <typename Int>
+struct Sparse_entry
+{
+  std::uint32_t col;
+  Int val;
+};
+
+// Rows in compressed sparse row storage (entries of row i: e[ptr[i]] .. e[ptr[i+1]-1]).
 template <typename Int>
 struct Csr_rows
 {
-  std::vector<std::size_t> ptr;        // row i is [ptr[i], ptr[i+1])
-  std::vector<std::uint32_t> col;
-  std::vector<Int> val;
+  std::vector<std::size_t> ptr;
+  std::vector<Sparse_entry<Int> > e;
   std::vector<Int> b;
-  void clear() { ptr.clear(); col.clear(); val.clear(); b.clear(); }
+  void clear() { ptr.clear(); e.clear(); b.clear(); }
 };
 
 struct Integer_system
@@ -50,13 +57,9 @@ struct Integer_system
   std::vector<char> column_used;       // column has a nonzero entry
   std::size_t n_constrained_columns = 0;
 
-  std::size_t nonzeros() const { return fits_int64 ? rows64.col.size() : rowsz.col.size(); }
+  std::size_t nonzeros() const { return fits_int64 ? rows64.e.size() : rowsz.e.size(); }
   std::size_t constrained_columns() const { return n_constrained_columns; }
 };
-
-template <typename Int> const Csr_rows<Int>& rows_of(const Integer_system& s);
-template <> inline const Csr_rows<std::int64_t>& rows_of<std::int64_t>(const Integer_system& s) { return s.rows64; }
-template <> inline const Csr_rows<CGAL::Gmpz>& rows_of<CGAL::Gmpz>(const Integer_system& s) { return s.rowsz; }
 
 // Converts a caller's integer into Int; false when it does not fit.
 inline bool convert_integer(const CGAL::Gmpz& v, std::int64_t& out) { return to_int64(v, out); }
@@ -65,68 +68,72 @@ template <typename T> bool convert_integer(const T& v, CGAL::Gmpz& out) { out = 
 
 struct Too_large {};   // a value does not fit int64: rebuild in Gmpz
 
-// Builds the canonical rows in Int. Throws Too_large (int64 only) when a value or a sum of
-// duplicates does not fit.
+// Builds the canonical rows in Int, visiting the caller's entries twice (count, then place: a
+// counting sort by row in linear time, without an intermediate copy). Throws Too_large (int64
+// only) when a value or a sum of duplicates does not fit.
 template <typename Int, typename BRange, typename Visit>
 Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit& visit,
                   Csr_rows<Int>& out, std::string& message)
 {
   typedef Integer_ops<Int> Ops;
-  struct Raw { std::uint32_t r, c; };
-  std::vector<Raw> raw;
-  std::vector<Int> raw_val;
+  typedef Sparse_entry<Int> Entry;
+  out.clear();
+  out.ptr.assign(n_rows + 1, 0);
   bool bad_index = false;
   std::size_t bad_r = 0, bad_c = 0;
-  visit([&](std::size_t r, std::size_t c, const auto& v) {
+  visit([&](std::size_t r, std::size_t c, const auto& v) {      // pass 1: count
     if(r >= n_rows || c >= n_cols) { if(!bad_index) { bad_index = true; bad_r = r; bad_c = c; } return; }
     Int iv;
     if(!convert_integer(v, iv)) throw Too_large();
-    if(Ops::is_zero(iv)) return;                         // explicit zeros are not entries
-    raw.push_back(Raw{std::uint32_t(r), std::uint32_t(c)});
-    raw_val.push_back(iv);
+    if(!Ops::is_zero(iv)) ++out.ptr[r + 1];                      // explicit zeros are not entries
   });
   if(bad_index) {
     message = "entry (" + std::to_string(bad_r) + ", " + std::to_string(bad_c) + ") is outside the "
             + std::to_string(n_rows) + " x " + std::to_string(n_cols) + " matrix";
     return INVALID_INPUT;
   }
-  // Counting sort by row (linear time), then each row by column.
-  out.clear();
-  out.ptr.assign(n_rows + 1, 0);
-  for(const Raw& e : raw) ++out.ptr[e.r + 1];
   for(std::size_t i = 0; i < n_rows; ++i) out.ptr[i + 1] += out.ptr[i];
-  std::vector<std::size_t> pos(out.ptr.begin(), out.ptr.end() - 1);
-  std::vector<std::pair<std::uint32_t, Int> > sorted(raw.size());
-  for(std::size_t k = 0; k < raw.size(); ++k) sorted[pos[raw[k].r]++] = std::make_pair(raw[k].c, raw_val[k]);
-  raw.clear(); raw.shrink_to_fit(); raw_val.clear(); raw_val.shrink_to_fit();
-
-  out.col.reserve(sorted.size());
-  out.val.reserve(sorted.size());
+  out.e.resize(out.ptr[n_rows]);
+  {
+    std::vector<std::size_t> pos(out.ptr.begin(), out.ptr.end() - 1);
+    visit([&](std::size_t r, std::size_t c, const auto& v) {    // pass 2: place
+      Int iv;
+      convert_integer(v, iv);
+      if(!Ops::is_zero(iv)) out.e[pos[r]++] = Entry{std::uint32_t(c), iv};
+    });
+  }
+  // Sort each row by column, sum duplicates, drop zeros, divide by the gcd of the row and b_i.
   out.b.resize(n_rows);
-  std::vector<std::size_t> new_ptr(n_rows + 1, 0);
+  std::size_t w = 0;
   for(std::size_t i = 0; i < n_rows; ++i) {
-    auto first = sorted.begin() + std::ptrdiff_t(out.ptr[i]), last = sorted.begin() + std::ptrdiff_t(out.ptr[i + 1]);
-    std::stable_sort(first, last, [](const std::pair<std::uint32_t, Int>& a, const std::pair<std::uint32_t, Int>& b)
-                                  { return a.first < b.first; });
-    const std::size_t row_begin = out.col.size();
-    for(auto it = first; it != last; ) {             // sum duplicates
-      std::uint32_t c = it->first; Int v = it->second;
-      for(++it; it != last && it->first == c; ++it) v = Ops::add(v, it->second);
-      if(!Ops::is_zero(v)) { out.col.push_back(c); out.val.push_back(v); }
+    const std::size_t first = out.ptr[i], last = out.ptr[i + 1];
+    for(std::size_t q = first + 1; q < last; ++q) {               // insertion sort: rows are short
+      Entry x = out.e[q];
+      std::size_t t = q;
+      for(; t > first && out.e[t - 1].col > x.col; --t) out.e[t] = out.e[t - 1];
+      out.e[t] = x;
+    }
+    const std::size_t row_begin = w;
+    for(std::size_t q = first; q < last; ) {
+      const std::uint32_t c = out.e[q].col;
+      Int v = out.e[q].val;
+      for(++q; q < last && out.e[q].col == c; ++q) v = Ops::add(v, out.e[q].val);
+      if(!Ops::is_zero(v)) out.e[w++] = Entry{c, v};
     }
     Int bi;
     if(!convert_integer(b[i], bi)) throw Too_large();
-    // divide the row and its b entry by their gcd
-    Int g = bi < 0 ? Ops::neg(bi) : bi;
-    for(std::size_t k = row_begin; k < out.col.size() && !Ops::is_unit(g); ++k) g = Ops::gcd(g, out.val[k]);
+    Int g = Ops::abs(bi);
+    for(std::size_t k = row_begin; k < w && !Ops::is_unit(g); ++k) g = Ops::gcd(g, out.e[k].val);
     if(!Ops::is_zero(g) && !Ops::is_unit(g)) {
-      for(std::size_t k = row_begin; k < out.col.size(); ++k) out.val[k] = Ops::exact_div(out.val[k], g);
+      for(std::size_t k = row_begin; k < w; ++k) out.e[k].val = Ops::exact_div(out.e[k].val, g);
       bi = Ops::exact_div(bi, g);
     }
     out.b[i] = bi;
-    new_ptr[i + 1] = out.col.size();
+    out.ptr[i] = row_begin;
   }
-  out.ptr.swap(new_ptr);
+  out.ptr[n_rows] = w;
+  out.e.resize(w);
+  // out.ptr[i] was overwritten with the new start of row i before row i+1 was read: rows only shrink.
   return SUCCESS;
 }
 
@@ -161,8 +168,8 @@ Status build_integer_system(std::size_t n_rows, std::size_t n_cols, const BRange
   }
   if(st != SUCCESS) return st;
   sys.column_used.assign(n_cols, 0);
-  const std::vector<std::uint32_t>& cols = sys.fits_int64 ? sys.rows64.col : sys.rowsz.col;
-  for(std::uint32_t c : cols) sys.column_used[c] = 1;
+  if(sys.fits_int64) { for(const auto& x : sys.rows64.e) sys.column_used[x.col] = 1; }
+  else               { for(const auto& x : sys.rowsz.e)  sys.column_used[x.col] = 1; }
   sys.n_constrained_columns = std::size_t(std::count(sys.column_used.begin(), sys.column_used.end(), char(1)));
   return SUCCESS;
 }

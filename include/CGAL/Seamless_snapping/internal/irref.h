@@ -104,18 +104,24 @@ template <typename Int>
 class Irref_eliminator
 {
   typedef Integer_ops<Int> Ops;
-  typedef std::pair<std::uint32_t, Int> Entry;
+  typedef Sparse_entry<Int> Entry;
   enum Row_state : unsigned char { ACTIVE = 0, PIVOT = 1, ZERO = 2 };
 
+  // A row's entries (sorted by column) live in the input array until the row is first modified,
+  // then in its own vector: unmodified rows cost no allocation.
   struct Row
   {
-    std::vector<Entry> e;          // sorted by column
-    Int b;
+    const Entry* data = nullptr;
+    std::uint32_t size = 0;
+    std::uint32_t key = 0;         // queue key when last pushed
     std::uint32_t pivot_col = 0;
     Row_state state = ACTIVE;
+    std::vector<Entry> own;
+    Int b;
   };
 
-  static const std::size_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
+  static constexpr std::uint32_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
+  static constexpr std::uint32_t NIL = std::uint32_t(-1);
 
 public:
   Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
@@ -126,7 +132,7 @@ public:
     std::uint32_t k;
     while(pop(k)) {
       Row& row = m_rows[k];
-      if(row.e.empty()) {
+      if(row.size == 0) {
         if(!Ops::is_zero(row.b)) {
           message = "row " + std::to_string(k) + " is a linear combination of other rows with an inconsistent right-hand side "
                     "(it reduces to 0 = " + Ops::to_string(row.b) + "): the system has no solution";
@@ -149,51 +155,71 @@ public:
 private:
   void load(const Integer_system& sys)
   {
-    const Csr_rows<std::int64_t>& r64 = sys.rows64;
-    const Csr_rows<CGAL::Gmpz>& rz = sys.rowsz;
-    const Csr_rows<std::int64_t>* p64 = sys.fits_int64 ? &r64 : nullptr;
-    const std::vector<std::size_t>& ptr = sys.fits_int64 ? r64.ptr : rz.ptr;
-    const std::vector<std::uint32_t>& cols = sys.fits_int64 ? r64.col : rz.col;
+    const Csr_rows<Int>& in = input_rows(sys);
+    const std::vector<std::size_t>& ptr = in.ptr;
     m_n_cols = sys.n_cols;
     m_rows.assign(sys.n_rows, Row());
     for(std::size_t i = 0; i < sys.n_rows; ++i) {
       Row& row = m_rows[i];
-      row.e.reserve(ptr[i + 1] - ptr[i]);
-      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q)
-        row.e.push_back(Entry(cols[q], p64 ? convert(r64.val[q]) : convert(rz.val[q])));
-      row.b = p64 ? convert(r64.b[i]) : convert(rz.b[i]);
+      row.data = in.e.data() + ptr[i];
+      row.size = std::uint32_t(ptr[i + 1] - ptr[i]);
+      row.b = in.b[i];
     }
-    // Column occurrences: compressed storage of the input, plus per-column lists for fill-in.
+    // Column occurrences: compressed storage of the input, plus pooled lists for fill-in.
     m_count.assign(m_n_cols, 0);
-    for(std::uint32_t c : cols) ++m_count[c];
+    for(const Entry& x : in.e) ++m_count[x.col];
     m_col_ptr.assign(m_n_cols + 1, 0);
     for(std::size_t c = 0; c < m_n_cols; ++c) m_col_ptr[c + 1] = m_col_ptr[c] + m_count[c];
-    m_col_rows.resize(cols.size());
+    m_col_rows.resize(in.e.size());
     std::vector<std::size_t> pos(m_col_ptr.begin(), m_col_ptr.end() - 1);
     for(std::size_t i = 0; i < sys.n_rows; ++i)
-      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) m_col_rows[pos[cols[q]]++] = std::uint32_t(i);
-    m_fill.assign(m_n_cols, std::vector<std::uint32_t>());
+      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) m_col_rows[pos[in.e[q].col]++] = std::uint32_t(i);
+    m_fill_head.assign(m_n_cols, NIL);
+    m_fill_pool.clear();
     // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
     m_cursor = 0;
     for(std::size_t i = sys.n_rows; i-- > 0; ) push(std::uint32_t(i));
   }
 
-  static Int convert(const std::int64_t& v) { return Ops::from_int64(v); }
-  static Int convert(const CGAL::Gmpz& v)   { return convert_gmpz(v, (Int*)nullptr); }
-  static CGAL::Gmpz convert_gmpz(const CGAL::Gmpz& v, CGAL::Gmpz*) { return v; }
-  static std::int64_t convert_gmpz(const CGAL::Gmpz& v, std::int64_t*)
-  { std::int64_t r; if(!Integer_ops<CGAL::Gmpz>::to_int64(v, r)) throw Integer_overflow(); return r; }
+  // The input in Int: the system's own array when the types agree, else a converted copy.
+  const Csr_rows<Int>& input_rows(const Integer_system& sys) { return input_rows(sys, (Int*)nullptr); }
+  const Csr_rows<std::int64_t>& input_rows(const Integer_system& sys, std::int64_t*)
+  {
+    if(sys.fits_int64) return sys.rows64;
+    m_converted.ptr = sys.rowsz.ptr;                       // Gmpz system into int64: may overflow
+    m_converted.e.resize(sys.rowsz.e.size());
+    m_converted.b.resize(sys.rowsz.b.size());
+    for(std::size_t q = 0; q < sys.rowsz.e.size(); ++q) {
+      m_converted.e[q].col = sys.rowsz.e[q].col;
+      if(!Integer_ops<CGAL::Gmpz>::to_int64(sys.rowsz.e[q].val, m_converted.e[q].val)) throw Integer_overflow();
+    }
+    for(std::size_t i = 0; i < sys.rowsz.b.size(); ++i)
+      if(!Integer_ops<CGAL::Gmpz>::to_int64(sys.rowsz.b[i], m_converted.b[i])) throw Integer_overflow();
+    return m_converted;
+  }
+  const Csr_rows<CGAL::Gmpz>& input_rows(const Integer_system& sys, CGAL::Gmpz*)
+  {
+    if(!sys.fits_int64) return sys.rowsz;
+    m_converted.ptr = sys.rows64.ptr;
+    m_converted.e.resize(sys.rows64.e.size());
+    m_converted.b.resize(sys.rows64.b.size());
+    for(std::size_t q = 0; q < sys.rows64.e.size(); ++q)
+      m_converted.e[q] = Entry{sys.rows64.e[q].col, to_gmpz(sys.rows64.e[q].val)};
+    for(std::size_t i = 0; i < sys.rows64.b.size(); ++i) m_converted.b[i] = to_gmpz(sys.rows64.b[i]);
+    return m_converted;
+  }
 
-  std::size_t key(const Row& row) const
+  static std::uint32_t key(const Row& row)
   {
     bool unit = false;
-    for(const Entry& x : row.e) if(Ops::is_unit(x.second)) { unit = true; break; }
-    return (unit ? 0 : NNZ_BUCKETS) + std::min(row.e.size(), NNZ_BUCKETS - 1);
+    for(std::uint32_t q = 0; q < row.size; ++q) if(Ops::is_unit(row.data[q].val)) { unit = true; break; }
+    return (unit ? 0 : NNZ_BUCKETS) + std::min(row.size, NNZ_BUCKETS - 1);
   }
   void push(std::uint32_t i)
   {
-    const std::size_t k = key(m_rows[i]);
+    const std::uint32_t k = key(m_rows[i]);
+    m_rows[i].key = k;
     m_buckets[k].push_back(i);
     if(k < m_cursor) m_cursor = k;
   }
@@ -204,7 +230,7 @@ private:
       while(!bucket.empty()) {
         const std::uint32_t i = bucket.back();
         bucket.pop_back();
-        if(m_rows[i].state == ACTIVE && key(m_rows[i]) == m_cursor) { out = i; return true; }  // else stale
+        if(m_rows[i].state == ACTIVE && m_rows[i].key == m_cursor) { out = i; return true; }  // else stale
       }
       ++m_cursor;
     }
@@ -213,40 +239,47 @@ private:
 
   std::uint32_t choose_pivot(const Row& row) const
   {
-    std::size_t best = 0;
-    for(std::size_t q = 1; q < row.e.size(); ++q) {
-      const Int a = Ops::abs(row.e[q].second), ab = Ops::abs(row.e[best].second);
-      if(Ops::less(a, ab)) { best = q; continue; }
-      if(Ops::less(ab, a)) continue;
-      const std::uint32_t c = row.e[q].first, cb = row.e[best].first;
+    std::uint32_t best = 0;
+    for(std::uint32_t q = 1; q < row.size; ++q) {
+      const Int& v = row.data[q].val;
+      const Int& vb = row.data[best].val;
+      if(!(Ops::is_unit(v) && Ops::is_unit(vb))) {           // compare |v| only when not both units
+        const Int a = Ops::abs(v), ab = Ops::abs(vb);
+        if(Ops::less(a, ab)) { best = q; continue; }
+        if(Ops::less(ab, a)) continue;
+      }
+      const std::uint32_t c = row.data[q].col, cb = row.data[best].col;
       if(m_count[c] < m_count[cb] || (m_count[c] == m_count[cb] && c < cb)) best = q;
     }
-    return row.e[best].first;
+    return row.data[best].col;
   }
 
   static const Int* find(const Row& row, std::uint32_t c)
   {
-    auto it = std::lower_bound(row.e.begin(), row.e.end(), c,
-                               [](const Entry& x, std::uint32_t cc) { return x.first < cc; });
-    return (it != row.e.end() && it->first == c) ? &it->second : nullptr;
+    const Entry* e = std::lower_bound(row.data, row.data + row.size, c,
+                                      [](const Entry& x, std::uint32_t cc) { return x.col < cc; });
+    return (e != row.data + row.size && e->col == c) ? &e->val : nullptr;
   }
 
-  template <typename F>
-  void for_each_row_of_column(std::uint32_t c, F f) const
+  void add_fill(std::uint32_t c, std::uint32_t i)
   {
-    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) f(m_col_rows[q]);
-    for(std::uint32_t i : m_fill[c]) f(i);
+    m_fill_pool.push_back(std::make_pair(i, m_fill_head[c]));
+    m_fill_head[c] = std::uint32_t(m_fill_pool.size() - 1);
   }
 
   // Eliminates column c from every row but k (fraction-free, then divided by the row gcd).
   void eliminate_column(std::uint32_t k, std::uint32_t c, std::size_t& eliminations)
   {
     m_targets.clear();
-    for_each_row_of_column(c, [&](std::uint32_t i) {
+    auto consider = [&](std::uint32_t i) {
       if(i != k && m_rows[i].state != ZERO && find(m_rows[i], c) != nullptr) m_targets.push_back(i);
-    });
-    std::sort(m_targets.begin(), m_targets.end());
-    m_targets.erase(std::unique(m_targets.begin(), m_targets.end()), m_targets.end());
+    };
+    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) consider(m_col_rows[q]);
+    for(std::uint32_t f = m_fill_head[c]; f != NIL; f = m_fill_pool[f].second) consider(m_fill_pool[f].first);
+    if(m_targets.size() > 1) {
+      std::sort(m_targets.begin(), m_targets.end());
+      m_targets.erase(std::unique(m_targets.begin(), m_targets.end()), m_targets.end());
+    }
     const Row& pr = m_rows[k];
     const Int p = *find(pr, c);
     for(std::uint32_t i : m_targets) {
@@ -258,21 +291,10 @@ private:
       ++eliminations;
       if(row.state == ACTIVE) push(i);
     }
-    // Only row k holds column c now.
-    m_fill[c].clear();
-    m_fill[c].shrink_to_fit();
-    m_col_ptr_override(c, k);
-  }
-
-  // After elimination column c lives only in row k: make the occurrence list say so.
-  void m_col_ptr_override(std::uint32_t c, std::uint32_t k)
-  {
-    if(m_col_ptr[c + 1] > m_col_ptr[c]) {
-      m_col_rows[m_col_ptr[c]] = k;
-      for(std::size_t q = m_col_ptr[c] + 1; q < m_col_ptr[c + 1]; ++q) m_col_rows[q] = k;
-    } else {
-      m_fill[c].push_back(k);
-    }
+    // Only row k holds column c now (pivot columns never spread again: every later pivot row is free of c).
+    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) m_col_rows[q] = k;
+    m_fill_head[c] = NIL;
+    if(m_col_ptr[c + 1] == m_col_ptr[c]) add_fill(c, k);
     m_count[c] = 1;
   }
 
@@ -280,31 +302,35 @@ private:
   void combine(Row& row, std::uint32_t i, const Int& fi, const Row& pr, const Int& fk)
   {
     m_merged.clear();
-    auto a = row.e.begin(), ae = row.e.end();
-    auto b = pr.e.begin(), be = pr.e.end();
+    m_merged.reserve(row.size + pr.size);
+    const bool fi_one = Ops::is_unit(fi) && Ops::sign(fi) > 0;
+    const Entry *a = row.data, *ae = row.data + row.size;
+    const Entry *b = pr.data, *be = pr.data + pr.size;
     while(a != ae || b != be) {
-      if(b == be || (a != ae && a->first < b->first)) {
-        m_merged.push_back(Entry(a->first, Ops::mul(fi, a->second))); ++a;
-      } else if(a == ae || b->first < a->first) {
-        m_merged.push_back(Entry(b->first, Ops::neg(Ops::mul(fk, b->second))));
-        ++m_count[b->first];
-        m_fill[b->first].push_back(i);
+      if(b == be || (a != ae && a->col < b->col)) {
+        m_merged.push_back(Entry{a->col, fi_one ? a->val : Ops::mul(fi, a->val)}); ++a;
+      } else if(a == ae || b->col < a->col) {
+        m_merged.push_back(Entry{b->col, Ops::neg(Ops::mul(fk, b->val))});
+        ++m_count[b->col];
+        add_fill(b->col, i);
         ++b;
       } else {
-        Int v = Ops::sub(Ops::mul(fi, a->second), Ops::mul(fk, b->second));
-        if(Ops::is_zero(v)) --m_count[a->first];
-        else m_merged.push_back(Entry(a->first, v));
+        Int v = Ops::sub(fi_one ? a->val : Ops::mul(fi, a->val), Ops::mul(fk, b->val));
+        if(Ops::is_zero(v)) --m_count[a->col];
+        else m_merged.push_back(Entry{a->col, v});
         ++a; ++b;
       }
     }
-    row.b = Ops::sub(Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
+    row.b = Ops::sub(fi_one ? row.b : Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
     Int g = Ops::abs(row.b);
-    for(std::size_t q = 0; q < m_merged.size() && !Ops::is_unit(g); ++q) g = Ops::gcd(g, m_merged[q].second);
+    for(std::size_t q = 0; q < m_merged.size() && !Ops::is_unit(g); ++q) g = Ops::gcd(g, m_merged[q].val);
     if(!Ops::is_zero(g) && !Ops::is_unit(g)) {
-      for(Entry& x : m_merged) x.second = Ops::exact_div(x.second, g);
+      for(Entry& x : m_merged) x.val = Ops::exact_div(x.val, g);
       row.b = Ops::exact_div(row.b, g);
     }
-    row.e.swap(m_merged);
+    row.own.swap(m_merged);
+    row.data = row.own.data();
+    row.size = std::uint32_t(row.own.size());
   }
 
   void extract(const Integer_system& sys, const std::vector<std::uint32_t>& order, Irref<Int>& out)
@@ -313,7 +339,11 @@ private:
     out.kind.assign(m_n_cols, (unsigned char)UNCONSTRAINED_COLUMN);
     for(std::size_t c = 0; c < m_n_cols; ++c) if(sys.column_used[c]) out.kind[c] = FREE_COLUMN;
     for(std::uint32_t k : order) out.kind[m_rows[k].pivot_col] = IMPLIED_COLUMN;
-    out.ptr.assign(1, 0);
+    std::size_t total = 0;
+    for(std::uint32_t k : order) total += m_rows[k].size - 1;
+    out.ptr.reserve(order.size() + 1); out.ptr.assign(1, 0);
+    out.col.reserve(total); out.val.reserve(total);
+    out.pivot_col.reserve(order.size()); out.pivot.reserve(order.size()); out.rhs.reserve(order.size());
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
     for(std::uint32_t k : order) {
       Row& row = m_rows[k];
@@ -323,26 +353,30 @@ private:
       out.pivot_col.push_back(row.pivot_col);
       out.rhs.push_back(flip ? Ops::neg(row.b) : row.b);
       if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
-      if(!Ops::is_unit(p)) out.unit_pivots = false;
-      for(const Entry& x : row.e) {
-        if(x.first == row.pivot_col) continue;
-        CGAL_assertion(out.kind[x.first] == FREE_COLUMN);
-        out.col.push_back(x.first);
-        out.val.push_back(flip ? Ops::neg(x.second) : x.second);
-        if(!Ops::is_unit(p)) out.divisor[x.first] = Ops::lcm(out.divisor[x.first], p);   // Alg. 4
+      const bool unit = Ops::is_unit(p);
+      if(!unit) out.unit_pivots = false;
+      for(std::uint32_t q = 0; q < row.size; ++q) {
+        const Entry& x = row.data[q];
+        if(x.col == row.pivot_col) continue;
+        CGAL_assertion(out.kind[x.col] == FREE_COLUMN);
+        out.col.push_back(x.col);
+        out.val.push_back(flip ? Ops::neg(x.val) : x.val);
+        if(!unit) out.divisor[x.col] = Ops::lcm(out.divisor[x.col], p);   // Alg. 4
       }
       out.pivot.push_back(p);
       out.ptr.push_back(out.col.size());
-      std::vector<Entry>().swap(row.e);                // release memory as we go
+      std::vector<Entry>().swap(row.own);              // release memory as we go
     }
   }
 
   std::size_t m_n_cols = 0;
   std::vector<Row> m_rows;
+  Csr_rows<Int> m_converted;                           // input converted to Int, when the system has the other type
   std::vector<std::uint32_t> m_count;                  // rows (active or pivot) containing each column
   std::vector<std::size_t> m_col_ptr;                  // input occurrences per column (may be stale)
   std::vector<std::uint32_t> m_col_rows;
-  std::vector<std::vector<std::uint32_t> > m_fill;     // occurrences created by fill-in (may be stale)
+  std::vector<std::uint32_t> m_fill_head;              // occurrences created by fill-in: linked lists in a pool (may be stale)
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > m_fill_pool;
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;

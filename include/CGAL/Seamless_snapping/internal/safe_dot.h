@@ -16,7 +16,8 @@
 // +-|x_i|; the accumulator r alternates: while r < 0 a positive summand is added, otherwise a
 // negative one (while any is left). Copies are taken k at a time, with k as large as the range
 // allows (k = min(c, floor((delta - r) / |x|))), not one by one. k is computed in integers on the
-// grid (z = v / s), so no rounded division can overshoot.
+// grid (z = v / s), so no rounded division can overshoot. When the summands' magnitudes add up
+// to less than delta, any order is safe and the sum is taken directly (the fast path).
 
 #include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
 #include <CGAL/Seamless_snapping/internal/integer_ops.h>
@@ -47,19 +48,29 @@ bool safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_poi
 {
   typedef Integer_ops<Int> Ops;
   ws.pos.clear(); ws.neg.clear();
+  const double s = grid.quantum;
+  // Fast path: when sum |c_i| |x_i| < delta, no partial sum in any order can leave the range, so
+  // the alternation is unnecessary and the sum is accumulated directly (in grid integers).
+  __int128 magnitude = 0, sum = 0;
+  bool small = true;
   for(const auto& t : terms) {
     if(Ops::is_zero(t.first) || t.second == 0) continue;
     std::int64_t c;
     if(!Ops::to_int64(Ops::abs(t.first), c) || c > (std::int64_t(1) << 53))
       return false;   // |c| x would exceed 2^53 s >= delta for any nonzero grid value x
-    const double ax = std::fabs(t.second);
+    const std::int64_t X = std::int64_t(std::fabs(t.second) / s);     // exact
     const bool positive = (Ops::sign(t.first) > 0) == (t.second > 0);
-    (positive ? ws.pos : ws.neg).push_back(Safe_dot_summand{c, ax});
+    if(small) {
+      magnitude += (__int128)c * X;
+      sum += positive ? (__int128)c * X : -(__int128)c * X;
+      if(magnitude >= ((__int128)1 << 52)) small = false;
+    }
+    (positive ? ws.pos : ws.neg).push_back(Safe_dot_summand{c, std::fabs(t.second)});
   }
+  if(small) { result = double(std::int64_t(sum)) * s; return true; }
   // Deterministic order: as given. (Any order is exact; the alternation is what bounds the range.)
   std::size_t ip = 0, in = 0;
   double r = 0;
-  const double s = grid.quantum;
   const std::int64_t D = std::int64_t(1) << 52;    // delta / s
   while(ip < ws.pos.size() || in < ws.neg.size()) {
     const bool take_pos = ip < ws.pos.size() && (r < 0 || in == ws.neg.size());
