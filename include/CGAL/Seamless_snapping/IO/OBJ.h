@@ -127,7 +127,6 @@ struct Obj_soup
   std::vector<std::array<std::size_t, 3> > face_v;   // 0-based "v" index of each corner
   std::vector<std::array<std::size_t, 3> > face_vt;  // 0-based "vt" index of each corner
   std::vector<std::size_t> face_line;                // line number of each "f"
-  std::vector<std::size_t> positive_ref_line;        // lines with a positive index, checked at the end
   std::size_t skipped_records = 0;                   // lines with a record type we ignore
 };
 
@@ -220,7 +219,8 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
           return fail(lineno, "face corner '" + tok_str + "' has no texture coordinate (expected v/vt or v/vt/vn)");
         ++q;
         if(q == tok_end || *q == '/')
-          return fail(lineno, "face corner '" + tok_str + "' has no texture coordinate (v//vn); per-corner UVs are required");
+          return fail(lineno, "face corner '" + tok_str + "' has no texture coordinate" + (q != tok_end ? " (v//vn)" : "") +
+                              "; per-corner UVs are required");
         if(!parse_index(q, tok_end, b))
           return fail(lineno, "cannot parse texture index in face corner '" + tok_str + "'");
         if(q != tok_end) {
@@ -411,6 +411,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
             std::to_string(soup.uvs.size()) + " texture coordinates from " + where;
   if(weld) message += "; welded " + std::to_string(welded) + " duplicated vertices";
   if(unreferenced != 0) message += "; dropped " + std::to_string(unreferenced) + " vertices used by no face";
+  if(soup.skipped_records != 0) message += "; skipped " + std::to_string(soup.skipped_records) + " other records (vn, g, s, ...)";
   return SUCCESS;
 }
 
@@ -580,6 +581,7 @@ Status format_obj_np(const TriangleMesh& tm, HalfedgeUVMap uv, std::string& out,
  * - Comments (`#` to the end of the line) and every other record (`vn`, `vp`, `g`, `o`, `s`,
  *   `usemtl`, `mtllib`, `l`, `p` and non-standard ones such as `c` or `sm`) are skipped.
  * - Vertices used by no face are dropped; the others keep their file order.
+ * - Lines are read one by one: line continuations (a `\` at the end of a line) are not supported.
  * - With `weld_vertices(true)`, vertices with bit-identical coordinates become one vertex (the
  *   first in the file): this turns the "cut meshes" written by libigl/Directional, whose
  *   vertices are duplicated along the seams, back into the closed surface. Coordinates that are

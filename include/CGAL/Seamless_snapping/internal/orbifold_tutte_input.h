@@ -44,6 +44,7 @@
 #include <cmath>
 #include <cstddef>
 #include <fstream>
+#include <iostream>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -92,6 +93,29 @@ inline const char* smp_error_name(SMP::Error_code e)
   }
   return "unknown error";
 }
+
+// CGAL's orbifold code prints diagnostics to std::cerr, and an empty line for every shortest
+// path (compute_shortest_paths_between_two_cones stops Dijkstra by throwing an exception whose
+// empty what() it prints). This guard captures them, so that they can go into a message instead.
+// Not thread-safe (std::cerr is global): this is test/example input code.
+class Scoped_cerr_capture
+{
+  std::ostringstream m_text;
+  std::streambuf* m_old;
+public:
+  Scoped_cerr_capture() : m_old(std::cerr.rdbuf(m_text.rdbuf())) {}
+  ~Scoped_cerr_capture() { std::cerr.rdbuf(m_old); }
+  Scoped_cerr_capture(const Scoped_cerr_capture&) = delete;
+  Scoped_cerr_capture& operator=(const Scoped_cerr_capture&) = delete;
+  /// " (CGAL: <text on one line>)", or "" when nothing but white space was printed
+  std::string str() const
+  {
+    std::string s = m_text.str();
+    for(char& c : s) if(c == '\n' || c == '\r') c = ' ';
+    const std::size_t b = s.find_first_not_of(' '), e = s.find_last_not_of(' ');
+    return b == std::string::npos ? std::string() : " (CGAL: " + s.substr(b, e - b + 1) + ")";
+  }
+};
 
 // Dijkstra over the edge graph with Euclidean edge lengths, from several sources at once.
 // Ties are broken by vertex index, so the result does not depend on anything but the mesh.
@@ -247,6 +271,7 @@ bool order_cones_for_seam(const Surface_mesh<Point_3>& sm, std::vector<typename 
   if(n < 2) return false;
   std::vector<std::vector<std::vector<SM_edge> > > path(n, std::vector<std::vector<SM_edge> >(n));
   std::vector<std::vector<double> > length(n, std::vector<double>(n, 0));
+  Scoped_cerr_capture quiet;
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t j = i + 1; j < n; ++j) {
       SMP::compute_shortest_paths_between_two_cones(sm, cones[i], cones[j], std::back_inserter(path[i][j]));
@@ -286,7 +311,7 @@ bool order_cones_for_seam(const Surface_mesh<Point_3>& sm, std::vector<typename 
 /// \return `SUCCESS`, or `INVALID_INPUT` (not a closed connected genus-0 triangle mesh, wrong cones,
 ///         crossing seam paths, orbifold solve failed); `corner_uv` is only written on success.
 /// The mesh must not contain removed elements (garbage); its connectivity is not modified
-/// (two temporary property maps are added and removed again).
+/// (three temporary property maps are added and removed again).
 template <class Point_3, class CornerUVMap>
 Status make_orbifold_tutte_uv(Surface_mesh<Point_3>& sm, CornerUVMap corner_uv,
                               const std::vector<typename Surface_mesh<Point_3>::Vertex_index>& cones,
@@ -345,6 +370,8 @@ Status make_orbifold_tutte_uv(Surface_mesh<Point_3>& sm, CornerUVMap corner_uv,
       if(cones[i] == cones[j]) { message = "cone vertex " + std::to_string(cones[i].idx()) + " is given twice"; return INVALID_INPUT; }
   }
 
+  Scoped_cerr_capture cerr_capture;   // from here on, CGAL's prints go into the message
+
   // --- seam: shortest edge paths between consecutive cones; must be one simple path
   std::vector<SM_edge> seam_edges;
   {
@@ -376,9 +403,10 @@ Status make_orbifold_tutte_uv(Surface_mesh<Point_3>& sm, CornerUVMap corner_uv,
   for(seam_vertex v : vertices(mesh)) index[v] = counter++;
   boost::associative_property_map<std::unordered_map<seam_vertex, int> > vimap(index);
 
+
   std::unordered_map<seam_vertex, SMP::Cone_type> cmap;
   if(!SMP::locate_cones(mesh, cones.begin(), cones.end(), cmap)) {
-    message = "CGAL could not place the cones on the seam mesh"; return INVALID_INPUT;
+    message = "CGAL could not place the cones on the seam mesh" + cerr_capture.str(); return INVALID_INPUT;
   }
   seam_halfedge bhd;
   for(seam_halfedge h : halfedges(mesh)) if(is_border(h, mesh)) { bhd = h; break; }
@@ -386,7 +414,7 @@ Status make_orbifold_tutte_uv(Surface_mesh<Point_3>& sm, CornerUVMap corner_uv,
   SMP::Orbifold_Tutte_parameterizer_3<Seam_mesh> parameterizer(type, weights);
   const SMP::Error_code err = parameterizer.parameterize(mesh, bhd, cmap, scratch.uv, vimap);
   if(err != SMP::OK) {
-    message = std::string("Orbifold_Tutte_parameterizer_3 failed: ") + smp_error_name(err);
+    message = std::string("Orbifold_Tutte_parameterizer_3 failed: ") + smp_error_name(err) + cerr_capture.str();
     return INVALID_INPUT;
   }
 

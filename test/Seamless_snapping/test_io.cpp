@@ -1,0 +1,519 @@
+// Tests of IO/OBJ.h (per-corner UV OBJ reading/writing) and of internal/orbifold_tutte_input.h.
+//
+//   io: every shared UV file reads, counts match SOURCES.md, write -> read is bit-exact
+//   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
+//   io: an invalid mesh or an unwritable place writes no file (atomic write)
+//   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not
+//
+// Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
+// parts whose data is missing are skipped with a message.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef SS_SHARED_DATA_DIR
+#define SS_SHARED_DATA_DIR ""
+#endif
+#ifndef SS_CGAL_DATA_DIR
+#define SS_CGAL_DATA_DIR ""
+#endif
+
+typedef CGAL::Simple_cartesian<double>                        K;
+typedef K::Point_2                                            Point_2;
+typedef K::Point_3                                            Point_3;
+typedef CGAL::Surface_mesh<Point_3>                           Mesh;
+typedef Mesh::Vertex_index                                    vertex_descriptor;
+typedef Mesh::Halfedge_index                                  halfedge_descriptor;
+typedef Mesh::Face_index                                      face_descriptor;
+typedef Mesh::Property_map<halfedge_descriptor, Point_2>      UV_map;   // corner: uv[h] = UV of target(h) in face(h)
+
+namespace SS = CGAL::Seamless_snapping;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace fs = std::filesystem;
+
+static int failures = 0;
+#define CHECK(cond, what)                                                                     \
+  do { if(!(cond)) { ++failures; std::cerr << "FAILED: " << what << "  [" #cond "] line " << __LINE__ << std::endl; } } while(0)
+
+static double ms_since(std::chrono::steady_clock::time_point t0)
+{ return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+
+static bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Same vertex order and the same faces in the same order; corners matched by target vertex index.
+static bool bit_identical(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, std::string& why)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces()) { why = "counts"; return false; }
+  for(vertex_descriptor v : a.vertices()) {
+    const Point_3& p = a.point(v); const Point_3& q = b.point(vertex_descriptor(v.idx()));
+    if(!same_bits(p.x(), q.x()) || !same_bits(p.y(), q.y()) || !same_bits(p.z(), q.z())) { why = "position of vertex " + std::to_string(v.idx()); return false; }
+  }
+  for(face_descriptor f : a.faces()) {
+    const face_descriptor g(f.idx());
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(a.halfedge(f), a)) {
+      bool found = false;
+      for(halfedge_descriptor k : CGAL::halfedges_around_face(b.halfedge(g), b))
+        if(b.target(k).idx() == a.target(h).idx()) {
+          found = true;
+          if(!same_bits(get(ua, h).x(), get(ub, k).x()) || !same_bits(get(ua, h).y(), get(ub, k).y())) { why = "UV in face " + std::to_string(f.idx()); return false; }
+        }
+      if(!found) { why = "connectivity of face " + std::to_string(f.idx()); return false; }
+    }
+  }
+  return true;
+}
+
+static fs::path scratch_dir()
+{
+  fs::path d = fs::temp_directory_path() / ("ss_test_io_" + std::to_string(std::random_device{}()));
+  fs::create_directories(d);
+  return d;
+}
+
+static std::size_t count_files(const fs::path& d)
+{
+  std::size_t n = 0;
+  for(const auto& e : fs::directory_iterator(d)) { (void)e; ++n; }
+  return n;
+}
+
+// ------------------------------------------------------------------------------------------
+static void test_shared_data(const fs::path& tmp)
+{
+  const fs::path root(SS_SHARED_DATA_DIR);
+  if(root.empty() || !fs::is_directory(root)) {
+    std::cout << "io: shared data: SKIPPED (no directory '" << root.string() << "'; the data lives beside the repository on the development machine)\n";
+    return;
+  }
+  // #f and #v after welding bit-identical vertices, from shared/data/SOURCES.md
+  const std::map<std::string, std::pair<std::size_t, std::size_t> > expected = {
+    {"cube.obj", {12, 8}},                         {"decimated-knight-param.obj", {1000, 502}},
+    {"torus-hex-param.obj", {1152, 576}},          {"spherer-param.obj", {1280, 642}},
+    {"horsers-param-full-seamless.obj", {6000, 3002}}, {"lilium-param.obj", {6590, 3389}},
+    {"retinal_miq.obj", {7282, 3643}},             {"fandisk_param.obj", {14454, 7229}},
+    {"duck_miq_8_param.obj", {19720, 9862}},       {"duck_qc_8_param.obj", {19720, 9862}},
+    {"dragon-param-rot-seamless.obj", {24984, 12494}}, {"dragon-param-full-seamless.obj", {24984, 12494}},
+    {"bear_orbifold_square_mvc.obj", {27648, 13826}},  {"bunny00_orbifold_square_mvc.obj", {75408, 37706}}};
+
+  std::vector<fs::path> files;
+  for(const auto& e : fs::recursive_directory_iterator(root))
+    if(e.is_regular_file() && e.path().extension() == ".obj") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::size_t checked = 0;
+  std::cout << "io: shared data (" << files.size() << " OBJ files under " << root.string() << ")\n";
+  for(const fs::path& file : files) {
+    const bool weld = file.parent_path().filename() == "directional";   // cut meshes: v duplicated along seams
+    Mesh m;
+    UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+    std::string msg;
+    auto t0 = std::chrono::steady_clock::now();
+    SS::Status s = SS::IO::read_OBJ_with_corner_uvs(file.string(), m, uv, msg, SS::parameters::weld_vertices(weld));
+    const double t_read = ms_since(t0);
+    CHECK(s == SS::SUCCESS, "read " << file << ": " << msg);
+    if(s != SS::SUCCESS) continue;
+    CHECK(m.is_valid(false) && CGAL::is_triangle_mesh(m), "valid triangle mesh " << file);
+
+    auto it = expected.find(file.filename().string());
+    if(it != expected.end()) {
+      CHECK(m.number_of_faces() == it->second.first, file << ": #f " << m.number_of_faces() << " expected " << it->second.first);
+      CHECK(m.number_of_vertices() == it->second.second, file << ": #v " << m.number_of_vertices() << " expected " << it->second.second);
+      ++checked;
+    }
+
+    const fs::path out = tmp / ("rt_" + file.filename().string());
+    t0 = std::chrono::steady_clock::now();
+    std::string wmsg;
+    s = SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, wmsg);
+    const double t_write = ms_since(t0);
+    CHECK(s == SS::SUCCESS, "write " << out << ": " << wmsg);
+    Mesh m2;
+    UV_map uv2 = m2.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+    std::string msg2;
+    s = SS::IO::read_OBJ_with_corner_uvs(out.string(), m2, uv2, msg2);   // no weld needed: one v per vertex
+    CHECK(s == SS::SUCCESS, "re-read " << out << ": " << msg2);
+    std::string why;
+    CHECK(s == SS::SUCCESS && bit_identical(m, uv, m2, uv2, why), "bit-exact round trip of " << file << ": " << why);
+    fs::remove(out);
+
+    std::size_t border = 0;
+    for(halfedge_descriptor h : m.halfedges()) if(m.is_border(h)) ++border;
+    std::printf("  %-34s %8.1f ms read, %7.1f ms write  #f %6zu  #v %6zu  border edges %4zu%s\n",
+                file.filename().string().c_str(), t_read, t_write, std::size_t(m.number_of_faces()), std::size_t(m.number_of_vertices()),
+                border, weld ? "  (welded)" : "");
+  }
+  CHECK(checked == expected.size(), "all " << expected.size() << " files of SOURCES.md were found (found " << checked << ")");
+
+  // A cut mesh read without welding is a disk with the seams as border.
+  const fs::path knight = root / "directional" / "decimated-knight-param.obj";
+  if(fs::exists(knight)) {
+    Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(knight.string(), m, uv, msg) == SS::SUCCESS, msg);
+    CHECK(m.number_of_vertices() == 691 && !CGAL::is_closed(m), "knight without weld: 691 vertices, open");
+  }
+}
+
+// ------------------------------------------------------------------------------------------
+// Reads `text`; expects INVALID_INPUT, an untouched (non-empty) mesh and map, and `needle` in the message.
+static void expect_invalid(const std::string& name, const std::string& text, const std::string& needle, bool weld = false)
+{
+  Mesh m;
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  std::string pre = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.5\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+  { std::istringstream is(pre); std::string msg;
+    assert(SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::SUCCESS); }
+  std::vector<Point_2> before;
+  for(halfedge_descriptor h : m.halfedges()) before.push_back(get(uv, h));
+  const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces(), nh = m.number_of_halfedges();
+
+  std::istringstream is(text);
+  std::string msg;
+  SS::Status s = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg, SS::parameters::weld_vertices(weld));
+  CHECK(s == SS::INVALID_INPUT, name << ": expected INVALID_INPUT, got " << SS::status_name(s));
+  CHECK(msg.find(needle) != std::string::npos, name << ": message '" << msg << "' should contain '" << needle << "'");
+  CHECK(m.number_of_vertices() == nv && m.number_of_faces() == nf && m.number_of_halfedges() == nh && !m.has_garbage(),
+        name << ": mesh changed");
+  std::size_t i = 0; bool same = true;
+  for(halfedge_descriptor h : m.halfedges()) same = same && (get(uv, h) == before[i++]);
+  CHECK(same, name << ": UV map changed");
+  std::cout << "  " << name << ": " << msg << "\n";
+}
+
+static void test_malformed()
+{
+  std::cout << "io: malformed inputs give INVALID_INPUT and touch nothing\n";
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n";
+  expect_invalid("no vt", tri + "f 1 2 3\n", "stream:9:");
+  expect_invalid("v//vn", tri + "vn 0 0 1\nf 1//1 2//1 3//1\n", "v//vn");
+  expect_invalid("quad", tri + "f 1/1 2/2 4/4 3/3\n", "does not triangulate");
+  expect_invalid("pentagon (counted)", tri + "v 2 2 0\nvt 2 2\nf 1/1 2/2 5/5 4/4 3/3\n", "5 vertices");
+  expect_invalid("two vertices", tri + "f 1/1 2/2\n", "2 vertices");
+  expect_invalid("non-manifold edge", tri + "v 0 -1 0\nv 0 0 1\nvt 0 0\nf 1/1 2/2 3/3\nf 2/2 1/1 5/5\nf 1/1 2/2 6/5\n", "same direction");
+  expect_invalid("inconsistent orientation", tri + "f 1/1 2/2 3/3\nf 2/2 4/4 3/3\nf 1/1 3/3 2/2\n", "stream:11:");
+  expect_invalid("bowtie vertex", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1/1 4/1 5/1\n", "non-manifold vertex 1");
+  // Moebius strip: 6 triangles; the last one must use an edge in the same direction as the first.
+  expect_invalid("non-orientable (Moebius)",
+                 "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nvt 0 0\n"
+                 "f 1/1 2/1 5/1\nf 1/1 5/1 4/1\nf 2/1 3/1 6/1\nf 2/1 6/1 5/1\nf 3/1 4/1 1/1\nf 3/1 1/1 6/1\n", "orientation");
+  expect_invalid("NaN", "v 0 0 nan\n" + tri + "f 1/1 2/2 3/3\n", "stream:1: non-finite");
+  expect_invalid("Inf", tri + "vt inf 0\nf 1/1 2/2 3/3\n", "non-finite");
+  expect_invalid("overflow", "v 0 0 1e400\n" + tri + "f 1/1 2/2 3/3\n", "outside the range of double");
+  expect_invalid("garbage number", "v 0 0 1x\n", "cannot parse coordinate '1x'");
+  expect_invalid("missing coordinate", "v 0 0\n", "needs 3 coordinates");
+  expect_invalid("vertex index out of range", tri + "f 1/1 2/2 9/3\n", "vertex index 9 out of range");
+  expect_invalid("texture index out of range", tri + "f 1/1 2/2 3/30\n", "texture index 30 out of range");
+  expect_invalid("index 0", tri + "f 0/1 2/2 3/3\n", "index 0");
+  expect_invalid("relative index before start", tri + "f -5/1 -2/2 -1/3\n", "relative vertex index -5");
+  expect_invalid("degenerate face", tri + "f 1/1 1/2 3/3\n", "degenerate");
+  expect_invalid("degenerate after weld", tri + "v 0 0 0\nf 1/1 5/2 3/3\n", "after welding", true);
+  expect_invalid("empty", "", "empty mesh");
+  expect_invalid("no faces", tri + "# only vertices\n", "empty mesh");
+}
+
+static void test_valid_variants()
+{
+  std::cout << "io: accepted variants\n";
+  // comments, unknown records, CRLF, v/vt/vn, negative indices, forward references, extra numbers
+  const std::string text =
+    "# header\r\nmtllib x.mtl\r\ng default\r\no obj\r\ns 1\r\nusemtl m\r\n#scale_uv 2\r\n"
+    "f 1/1/1 2/2/1 3/3/1\r\n"                               // refers to elements given below
+    "v 0 0 0 1\r\nv +1 0 0\r\nv 0 1 0   # trailing comment\r\nvn 0 0 1\r\n"
+    "vt 0 0 0\r\nvt 1 0\r\nvt 0 1\r\n"
+    "v 1 1 0 0.5 0.5 0.5\r\nvt 1 1\r\n"
+    "f -3/-3 -1/-1 -2/-2\r\n"                              // vertices 2 4 3
+    "c 1 1.5\r\nsm 1 2 1\r\nl 1 2\r\n";
+  Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
+  std::istringstream is(text);
+  SS::Status s = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg);
+  CHECK(s == SS::SUCCESS, "variants: " << msg);
+  CHECK(m.number_of_vertices() == 4 && m.number_of_faces() == 2 && CGAL::is_valid_polygon_mesh(m), "variants: counts");
+  for(halfedge_descriptor h : m.halfedges()) {          // vertex i is at (x,y), its vt is (x,y) too
+    if(m.is_border(h)) continue;
+    const Point_3& p = m.point(m.target(h));
+    CHECK(get(uv, h) == Point_2(p.x(), p.y()), "variants: corner UV of vertex " << m.target(h));
+  }
+
+  // welding: a cut square (two triangles with their own copies of the diagonal) becomes one disk
+  const std::string cut = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\n"
+                          "vt 0 0\nvt 1 0\nvt 1 1\nvt 5 5\nvt 6 6\nvt 5 6\nf 1/1 2/2 3/3\nf 4/4 5/5 6/6\n";
+  {
+    Mesh a; UV_map ua = a.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::istringstream i1(cut);
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i1, a, ua, msg) == SS::SUCCESS && a.number_of_vertices() == 6, "no weld: 6 vertices");
+    Mesh b; UV_map ub = b.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::istringstream i2(cut);
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i2, b, ub, msg, SS::parameters::weld_vertices(true)) == SS::SUCCESS, "weld: " << msg);
+    CHECK(b.number_of_vertices() == 4 && b.number_of_edges() == 5, "weld: 4 vertices, 5 edges");
+    CHECK(msg.find("welded 2") != std::string::npos, "weld message: " << msg);
+    // the shared diagonal is now a cut edge: its two faces disagree on both endpoint UVs
+    std::size_t cuts = SS::internal::fit_seam_transitions(b, ub).cut_halfedges.size();
+    CHECK(cuts == 1, "weld: one cut edge, got " << cuts);
+    // -0.0 and 0.0 are equal but not bit-identical: not welded
+    Mesh c; UV_map uc = c.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    // (a third triangle touching vertex 1 only if -0.0 were welded to 0.0, which would make a bowtie)
+    std::istringstream i3(cut + "v -0 0 0\nv 0 0 5\nv 0 5 5\nf 7/1 8/2 9/3\n");
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i3, c, uc, msg, SS::parameters::weld_vertices(true)) == SS::SUCCESS && c.number_of_vertices() == 7,
+          "weld keeps -0.0 and 0.0 apart: " << c.number_of_vertices());
+  }
+
+  // unreferenced vertices are dropped, appending keeps what was there
+  {
+    Mesh a; UV_map ua = a.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    std::istringstream i1(cut + "v 9 9 9\n");
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i1, a, ua, msg) == SS::SUCCESS && a.number_of_vertices() == 6, "unreferenced dropped");
+    CHECK(msg.find("dropped 1") != std::string::npos && a.point(vertex_descriptor(5)) == Point_3(0, 1, 0), "file order kept: " << msg);
+    std::istringstream i2(cut);
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i2, a, ua, msg) == SS::SUCCESS && a.number_of_faces() == 4, "append");
+  }
+
+  // extreme doubles survive the text round trip bit for bit
+  {
+    const double vals[] = {0.1, -0.0, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308, -1.0 / 3.0, 1e22, 123456789.123456789};
+    std::ostringstream o; o.precision(17);
+    for(double x : vals) o << "v " << x << ' ' << -x << " 0\n";
+    for(double x : vals) o << "vt " << x << ' ' << x / 7 << "\n";
+    o << "f 1/1 2/2 3/3\nf 3/3 2/2 7/7\nf 7/7 2/2 8/8\nf 4/4 5/5 6/6\n";
+    Mesh a; UV_map ua = a.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    std::istringstream i1(o.str());
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(i1, a, ua, msg) == SS::SUCCESS, "extreme values: " << msg);
+    std::size_t i = 0;
+    for(vertex_descriptor v : a.vertices()) { CHECK(same_bits(a.point(v).x(), vals[i]) && same_bits(a.point(v).y(), -vals[i]), "parse " << vals[i]); ++i; }
+    std::stringstream ss;
+    CHECK(SS::IO::write_OBJ_with_corner_uvs(ss, a, ua, msg) == SS::SUCCESS, "write extremes");
+    Mesh b; UV_map ub = b.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(ss, b, ub, msg) == SS::SUCCESS, "re-read extremes");
+    std::string why;
+    CHECK(bit_identical(a, ua, b, ub, why), "extremes round trip: " << why);
+  }
+}
+
+// ------------------------------------------------------------------------------------------
+static void test_write_failures(const fs::path& tmp)
+{
+  std::cout << "io: writing is atomic\n";
+  Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  std::string msg;
+  { std::istringstream is("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    assert(SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::SUCCESS); }
+
+  const fs::path dir = tmp / "write";
+  fs::create_directories(dir);
+  const fs::path out = dir / "x.obj";
+
+  // invalid meshes: nothing written
+  Mesh empty; UV_map euv = empty.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  CHECK(SS::IO::write_OBJ_with_corner_uvs(out.string(), empty, euv, msg) == SS::INVALID_INPUT && msg.find("empty") != std::string::npos, "empty: " << msg);
+  CHECK(!fs::exists(out) && count_files(dir) == 0, "empty mesh wrote a file");
+  {
+    Mesh bad = m; UV_map buv = bad.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    put(buv, *bad.halfedges().begin(), Point_2(std::numeric_limits<double>::quiet_NaN(), 0));
+    CHECK(SS::IO::write_OBJ_with_corner_uvs(out.string(), bad, buv, msg) == SS::INVALID_INPUT && msg.find("non-finite") != std::string::npos, "NaN UV: " << msg);
+    CHECK(!fs::exists(out) && count_files(dir) == 0, "NaN UV wrote a file");
+    std::ostringstream os;
+    CHECK(SS::IO::write_OBJ_with_corner_uvs(os, bad, buv, msg) == SS::INVALID_INPUT && os.str().empty(), "NaN UV wrote to a stream");
+  }
+  {
+    Mesh quad; UV_map quv = quad.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    std::vector<vertex_descriptor> vs;
+    for(int i = 0; i < 4; ++i) vs.push_back(quad.add_vertex(Point_3(i & 1, i >> 1, 0)));
+    quad.add_face(vs[0], vs[1], vs[3], vs[2]);
+    CHECK(SS::IO::write_OBJ_with_corner_uvs(out.string(), quad, quv, msg) == SS::INVALID_INPUT && msg.find("triangle") != std::string::npos, "quad: " << msg);
+    CHECK(!fs::exists(out) && count_files(dir) == 0, "quad wrote a file");
+  }
+
+  // unwritable places: no file, no temporary left behind
+  const fs::path missing = dir / "no_such_dir" / "x.obj";
+  CHECK(SS::IO::write_OBJ_with_corner_uvs(missing.string(), m, uv, msg) == SS::INVALID_INPUT, "missing directory");
+  CHECK(count_files(dir) == 0, "missing directory left a file");
+  std::cout << "  missing directory: " << msg << "\n";
+  const fs::path is_dir = dir / "a_directory";
+  fs::create_directories(is_dir);
+  CHECK(SS::IO::write_OBJ_with_corner_uvs(is_dir.string(), m, uv, msg) == SS::INVALID_INPUT, "target is a directory");
+  CHECK(count_files(dir) == 1 && fs::is_directory(is_dir) && count_files(is_dir) == 0, "rename failure left a temporary file");
+  std::cout << "  target is a directory: " << msg << "\n";
+  const fs::path ro = dir / "read_only";
+  fs::create_directories(ro);
+  fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
+  {
+    std::ofstream probe((ro / "probe").string());
+    if(probe) {
+      probe.close(); fs::remove(ro / "probe");
+      std::cout << "  read-only directory: SKIPPED (running with privileges that ignore permissions)\n";
+    } else {
+      CHECK(SS::IO::write_OBJ_with_corner_uvs((ro / "x.obj").string(), m, uv, msg) == SS::INVALID_INPUT, "read-only directory");
+      std::cout << "  read-only directory: " << msg << "\n";
+    }
+  }
+  fs::permissions(ro, fs::perms::owner_all);
+  CHECK(count_files(ro) == 0, "read-only directory got a file");
+
+  // success replaces an existing file and leaves only that file
+  { std::ofstream old(out.string()); old << "old content\n"; }
+  CHECK(SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, msg) == SS::SUCCESS, "overwrite: " << msg);
+  {
+    std::ifstream in(out.string()); std::string first; std::getline(in, first);
+    CHECK(first.rfind("# OBJ", 0) == 0, "overwrite replaced the content");
+  }
+  std::size_t tmp_files = 0;
+  for(const auto& e : fs::directory_iterator(dir)) if(e.path().string().find(".tmp-") != std::string::npos) ++tmp_files;
+  CHECK(tmp_files == 0, "temporary files left: " << tmp_files);
+  // the missing-file reader error
+  Mesh r; UV_map ruv = r.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  CHECK(SS::IO::read_OBJ_with_corner_uvs((dir / "nope.obj").string(), r, ruv, msg) == SS::INVALID_INPUT && msg.find("cannot open") != std::string::npos, "missing file: " << msg);
+}
+
+// ------------------------------------------------------------------------------------------
+static void test_orbifold(const fs::path& tmp)
+{
+  const fs::path bear = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
+  if(!fs::exists(bear)) {
+    std::cout << "orbifold: SKIPPED (no '" << bear.string() << "'; install libcgal-demo, which provides /usr/share/doc/libcgal-dev/data.tar.gz)\n";
+    return;
+  }
+  Mesh sm;
+  CHECK(CGAL::IO::read_polygon_mesh(bear.string(), sm) && sm.number_of_vertices() == 13826, "read bear.off");
+  // CGAL's examples/Surface_mesh_parameterization/data/bear.selection.txt (its first line)
+  std::vector<vertex_descriptor> cones;
+  std::string msg;
+  const fs::path sel_shared = fs::path(SS_SHARED_DATA_DIR) / "cgal" / "bear.selection.txt";
+  const fs::path sel = fs::exists(sel_shared) ? sel_shared : tmp / "bear.selection.txt";
+  if(!fs::exists(sel_shared)) { std::ofstream o(sel.string()); o << "5745 3093 7079\n\n\n"; }
+  CHECK(SS::internal::read_cone_selection_file(sel.string(), sm, cones, msg) == SS::SUCCESS, msg);
+  CHECK(cones.size() == 3 && cones[0] == vertex_descriptor(5745) && cones[2] == vertex_descriptor(7079), "bear cones");
+
+  { // cone file errors
+    std::vector<vertex_descriptor> c;
+    const fs::path f = tmp / "bad.selection.txt";
+    { std::ofstream o(f.string()); o << "1 2 99999\n"; }
+    CHECK(SS::internal::read_cone_selection_file(f.string(), sm, c, msg) == SS::INVALID_INPUT && c.empty(), "cone out of range");
+    { std::ofstream o(f.string()); o << "1 2 1\n"; }
+    CHECK(SS::internal::read_cone_selection_file(f.string(), sm, c, msg) == SS::INVALID_INPUT, "cone twice");
+    { std::ofstream o(f.string()); o << "1 2\n3 4 5\n"; }
+    CHECK(SS::internal::read_cone_selection_file(f.string(), sm, c, msg) == SS::INVALID_INPUT, "two cones");
+  }
+
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  const std::size_t n_props = sm.properties<halfedge_descriptor>().size();
+  auto t0 = std::chrono::steady_clock::now();
+  SS::Status s = SS::internal::make_orbifold_tutte_uv(sm, uv, cones, SMP::Square, msg);
+  const double t_orb = ms_since(t0);
+  CHECK(s == SS::SUCCESS, "orbifold Square: " << msg);
+  CHECK(sm.properties<halfedge_descriptor>().size() == n_props, "temporary properties removed");
+  auto fit = SS::internal::fit_seam_transitions(sm, uv);
+  std::printf("orbifold: Square on bear (%.0f ms): %s\n  %zu cut edges, k histogram %zu/%zu/%zu/%zu, max relative residual %.3g, max angle deviation %.3g deg\n",
+              t_orb, msg.c_str(), fit.cut_halfedges.size(), fit.k_histogram[0], fit.k_histogram[1], fit.k_histogram[2],
+              fit.k_histogram[3], fit.max_relative_residual, fit.max_angle_deviation_deg);
+  CHECK(fit.cut_halfedges.size() > 0 && fit.k_histogram[0] == 0 && fit.k_histogram[2] == 0, "Square: only +-90 degree transitions");
+  CHECK(fit.max_relative_residual < 1e-10 && fit.max_angle_deviation_deg < 1e-6, "Square: 90-degree seams up to solver error");
+  const double exact_before = SS::internal::exact_max_seam_violation(sm, uv, fit);
+  std::printf("  exact (Gmpq) max seam violation %.3g relative\n", exact_before);
+  CHECK(exact_before > 0 && exact_before < 1e-10, "Square: approximately, not exactly seamless");
+  // the orbifold map is injective: no UV triangle flipped
+  std::size_t flipped = 0;
+  for(face_descriptor f : sm.faces()) {
+    halfedge_descriptor h = sm.halfedge(f);
+    if(CGAL::orientation(get(uv, h), get(uv, sm.next(h)), get(uv, sm.prev(h))) != CGAL::LEFT_TURN) ++flipped;
+  }
+  CHECK(flipped == 0, "Square: " << flipped << " flipped UV triangles");
+  // seam corners: each cut edge joins two different corner UVs, all other corners of a vertex share one UV
+  // (checked implicitly by the fit: only 99-ish cut edges out of 41k)
+  CHECK(fit.cut_halfedges.size() < 500, "Square: seam is short");
+
+  // same map, bit for bit, as shared/data/cgal-orbifold-generated (made the same way, SOURCES.md note G)
+  const fs::path shared_bear = fs::path(SS_SHARED_DATA_DIR) / "cgal-orbifold-generated" / "bear_orbifold_square_mvc.obj";
+  if(fs::exists(shared_bear)) {
+    Mesh m2; UV_map uv2 = m2.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(shared_bear.string(), m2, uv2, msg) == SS::SUCCESS, msg);
+    std::string why;
+    CHECK(bit_identical(sm, uv, m2, uv2, why), "orbifold map equals bear_orbifold_square_mvc.obj bit for bit: " << why);
+  } else {
+    std::cout << "  comparison with bear_orbifold_square_mvc.obj: SKIPPED (no shared data)\n";
+  }
+
+  // round trip of the orbifold map through OBJ
+  {
+    const fs::path out = tmp / "bear_orbifold.obj";
+    CHECK(SS::IO::write_OBJ_with_corner_uvs(out.string(), sm, uv, msg) == SS::SUCCESS, msg);
+    Mesh m2; UV_map uv2 = m2.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(out.string(), m2, uv2, msg) == SS::SUCCESS, msg);
+    std::string why;
+    CHECK(bit_identical(sm, uv, m2, uv2, why), "orbifold OBJ round trip: " << why);
+  }
+
+  // Triangle orbifold: 120-degree seams, must NOT look quarter-turn seamless
+  {
+    UV_map uvt = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv_triangle", Point_2(0, 0)).first;
+    CHECK(SS::internal::make_orbifold_tutte_uv(sm, uvt, cones, SMP::Triangle, msg) == SS::SUCCESS, "Triangle: " << msg);
+    auto ft = SS::internal::fit_seam_transitions(sm, uvt);
+    std::printf("orbifold: Triangle on bear: %zu cut edges, max angle deviation from a quarter turn %.3g deg\n",
+                ft.cut_halfedges.size(), ft.max_angle_deviation_deg);
+    CHECK(ft.max_angle_deviation_deg > 10, "Triangle: 120-degree transitions are far from quarter turns");
+    sm.remove_property_map(uvt);
+  }
+
+  // Parallelogram with farthest-point cones: 180-degree rotations and translations only
+  {
+    t0 = std::chrono::steady_clock::now();
+    std::vector<vertex_descriptor> c4 = SS::internal::farthest_point_cones(sm, 4);
+    std::vector<vertex_descriptor> c4b = SS::internal::farthest_point_cones(sm, 4);
+    CHECK(c4.size() == 4 && c4 == c4b, "farthest_point_cones: 4, deterministic");
+    UV_map uvp = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv_parallelogram", Point_2(0, 0)).first;
+    s = SS::internal::make_orbifold_tutte_uv(sm, uvp, c4, SMP::Parallelogram, msg);
+    CHECK(s == SS::SUCCESS, "Parallelogram: " << msg);
+    if(s == SS::SUCCESS) {
+      auto fp = SS::internal::fit_seam_transitions(sm, uvp);
+      std::printf("orbifold: Parallelogram on bear, cones %u %u %u %u (%.0f ms): %zu cut edges, k histogram %zu/%zu/%zu/%zu, max relative residual %.3g\n",
+                  unsigned(c4[0]), unsigned(c4[1]), unsigned(c4[2]), unsigned(c4[3]), ms_since(t0), fp.cut_halfedges.size(),
+                  fp.k_histogram[0], fp.k_histogram[1], fp.k_histogram[2], fp.k_histogram[3], fp.max_relative_residual);
+      CHECK(fp.k_histogram[1] == 0 && fp.k_histogram[3] == 0 && fp.k_histogram[2] > 0, "Parallelogram: 0/180-degree transitions only");
+      CHECK(fp.max_relative_residual < 1e-10, "Parallelogram: seamless up to solver error");
+    }
+    sm.remove_property_map(uvp);
+  }
+
+  // refusals: wrong cone count, repeated cone, mesh with a border; the map stays untouched
+  {
+    Point_2 before = get(uv, *sm.halfedges().begin());
+    std::vector<vertex_descriptor> two(cones.begin(), cones.begin() + 2);
+    CHECK(SS::internal::make_orbifold_tutte_uv(sm, uv, two, SMP::Square, msg) == SS::INVALID_INPUT, "2 cones");
+    std::vector<vertex_descriptor> rep = {cones[0], cones[1], cones[0]};
+    CHECK(SS::internal::make_orbifold_tutte_uv(sm, uv, rep, SMP::Square, msg) == SS::INVALID_INPUT, "repeated cone");
+    CHECK(get(uv, *sm.halfedges().begin()) == before, "refusal left the map untouched");
+    Mesh open = sm;
+    CGAL::Euler::remove_face(open.halfedge(*open.faces().begin()), open);
+    open.collect_garbage();
+    UV_map ouv = open.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    CHECK(SS::internal::make_orbifold_tutte_uv(open, ouv, cones, SMP::Square, msg) == SS::INVALID_INPUT &&
+          msg.find("border") != std::string::npos, "mesh with border: " << msg);
+  }
+}
+
+int main()
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path tmp = scratch_dir();
+  test_malformed();
+  test_valid_variants();
+  test_write_failures(tmp);
+  test_shared_data(tmp);
+  test_orbifold(tmp);
+  fs::remove_all(tmp);
+  std::printf("test_io: %s (%d failures, %.1f s)\n", failures == 0 ? "OK" : "FAILED", failures, ms_since(t0) / 1000);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
