@@ -11,8 +11,9 @@
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
 
 // Exact evaluation of constraint rows on double values, and the exact seamlessness test of a
-// corner UV map. Doubles are dyadic rationals: each one converts to CGAL::Gmpq without error and
-// every row is evaluated in rational arithmetic, with zero tolerance.
+// corner UV map. Doubles are dyadic rationals: each one converts to CGAL::Mpzf (a multiprecision
+// binary float whose +, -, * are exact) or CGAL::Gmpq without error, and every row is evaluated
+// exactly, with zero tolerance.
 
 #include <CGAL/Seamless_snapping/internal/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/rotation_fit.h>
@@ -20,6 +21,7 @@
 #include <CGAL/Seamless_snapping/internal/transition_constraints.h>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Mpzf.h>
 
 #include <cmath>
 #include <cstddef>
@@ -30,12 +32,12 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// residual sum_j C_ij x_j of row i, exactly
-inline CGAL::Gmpq exact_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+// residual sum_j C_ij x_j of row i, exactly (CGAL::Mpzf: exact sums and products of doubles)
+inline CGAL::Mpzf exact_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
 {
-  CGAL::Gmpq r(0);
+  CGAL::Mpzf r(0);
   for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k)
-    r += CGAL::Gmpq(x[rows.col[k]]) * CGAL::Gmpq(rows.coef[k]);
+    r = r + CGAL::Mpzf(x[rows.col[k]]) * CGAL::Mpzf(double(rows.coef[k]));
   return r;
 }
 
@@ -43,20 +45,20 @@ inline CGAL::Gmpq exact_row_residual(const Constraint_rows& rows, std::size_t i,
 inline long first_violated_row(const Constraint_rows& rows, const std::vector<double>& x)
 {
   for(std::size_t i = 0; i < rows.size(); ++i)
-    if(!CGAL::is_zero(exact_row_residual(rows, i, x))) return long(i);
+    if(!exact_row_residual(rows, i, x).is_zero()) return long(i);
   return -1;
 }
 
 // max_i |sum_j C_ij x_j|, computed exactly, then rounded to double.
 inline double max_abs_residual(const Constraint_rows& rows, const std::vector<double>& x)
 {
-  CGAL::Gmpq m(0);
+  CGAL::Mpzf m(0);
   for(std::size_t i = 0; i < rows.size(); ++i) {
-    CGAL::Gmpq r = exact_row_residual(rows, i, x);
-    if(r < 0) r = -r;
-    if(m < r) m = r;
+    CGAL::Mpzf r = exact_row_residual(rows, i, x);
+    if(r.sign() == CGAL::NEGATIVE) r = -r;
+    if(CGAL::compare(m, r) == CGAL::SMALLER) m = r;
   }
-  return CGAL::to_double(m);
+  return m.to_double();
 }
 
 // true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).

@@ -200,9 +200,10 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
     for(int v : constrained_vars) sector_used[v / 2] = 1;
     for(char c : sector_used) report.constrained_sectors += c ? 1 : 0;
   }
-  const double rel = st.uv_diagonal > 0 ? 1. / st.uv_diagonal : 1.;
+  const double diagonal = st.uv_diagonal;
+  auto relative = [diagonal](double a) { return diagonal > 0 ? a / diagonal : a; };
   const std::vector<double>& ubar = st.ubar;
-  report.max_input_violation = max_abs_residual(full, ubar) * rel;
+  report.max_input_violation = relative(max_abs_residual(full, ubar));
   double max_abs = 0;
   for(int v : constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
   const Fixed_point_grid grid = Fixed_point_grid::from_max_abs(max_abs, 1);
@@ -221,8 +222,12 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
 
   std::vector<double> x = ubar;
   const bool already_exact = first_violated_row(full, ubar) < 0;
-  if(already_exact) {
-    report.system_rows = opt.use_reduced_system ? rs.node_rows.size() : full.size();
+  if(already_exact) {     // x = ubar satisfies every row: nothing to project, nothing to write
+    const Constraint_rows& system = opt.use_reduced_system ? rs.node_rows : full;
+    std::vector<int> system_vars, system_column_of;
+    used_variables(system, n_vars, system_vars, system_column_of);
+    report.system_rows = system.size();
+    report.system_columns = system_vars.size();
   } else if(opt.use_reduced_system) {
     // 3. node system -----------------------------------------------------------------------------
     s = project_rows(rs.node_rows, grid, x, report, message);
@@ -259,11 +264,11 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
   }
 
   // statistics ---------------------------------------------------------------------------------
-  double sum_change = 0;
-  for(std::size_t i = 0; i < n_vars; ++i)
-    report.max_change = (std::max)(report.max_change, std::fabs(x[i] - ubar[i]) * rel);
-  for(int v : constrained_vars) sum_change += std::fabs(x[v] - ubar[v]) * rel;
-  report.mean_change = constrained_vars.empty() ? 0. : sum_change / double(constrained_vars.size());
+  double max_change = 0, sum_change = 0;
+  for(std::size_t i = 0; i < n_vars; ++i) max_change = (std::max)(max_change, std::fabs(x[i] - ubar[i]));
+  for(int v : constrained_vars) sum_change += std::fabs(x[v] - ubar[v]);
+  report.max_change = relative(max_change);
+  report.mean_change = constrained_vars.empty() ? 0. : relative(sum_change / double(constrained_vars.size()));
   report.flips_after = count_flips(cm, st, x);
 
   // 6. write the corners of the changed sectors (and border halfedges that mirror them) --------
