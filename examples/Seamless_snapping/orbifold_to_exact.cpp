@@ -1,6 +1,6 @@
 // From CGAL's Orbifold Tutte embedding (seamless up to solver error) to an exactly seamless UV map.
-//   orbifold_to_exact MESH.off CONES.selection.txt [OUT.obj]
-// e.g. bear.off + bear.selection.txt from CGAL's data (scripts/demo.sh extracts them).
+//   orbifold_to_exact MESH.off CONES.selection.txt [OUT.obj [INPUT_OUT.obj]]
+// OUT.obj receives the exact map, INPUT_OUT.obj the approximately seamless map before snapping; e.g. bear.off + bear.selection.txt from CGAL's data (scripts/demo.sh extracts them).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -23,7 +23,7 @@ static int fail(const std::string& why) { std::fprintf(stderr, "orbifold_to_exac
 
 int main(int argc, char** argv)
 {
-  if(argc < 3) return fail("usage: orbifold_to_exact MESH.off CONES.selection.txt [OUT.obj]");
+  if(argc < 3) return fail("usage: orbifold_to_exact MESH.off CONES.selection.txt [OUT.obj [INPUT_OUT.obj]]");
   Mesh sm;
   if(!CGAL::IO::read_polygon_mesh(argv[1], sm)) return fail(std::string("cannot read mesh ") + argv[1]);
   std::vector<Mesh::Vertex_index> cones;
@@ -34,6 +34,7 @@ int main(int argc, char** argv)
   UV_map uv = sm.add_property_map<halfedge_descriptor, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
   if(SS::internal::make_orbifold_tutte_uv(sm, uv, cones, SS::internal::SMP::Square, msg) != SS::SUCCESS) return fail(msg);
   std::printf("%s\n", msg.c_str());
+  if(argc > 4 && SS::IO::write_OBJ_with_corner_uvs(argv[4], sm, uv, msg) != SS::SUCCESS) return fail(msg);
 
   // seam violation before: per cut edge the fitted quarter turn k, then |R^k d - d'| in CGAL::Gmpq
   const auto fit = SS::internal::fit_seam_transitions(sm, uv);
