@@ -606,6 +606,57 @@ void test_status_names()
   std::cout << names.size() << " statuses, distinct non-null names" << std::endl;
 }
 
+// Regressions: (a) summands with huge coefficients that cancel (the safe dot product must not
+// crawl through 2^40 alternation steps, nor give up on |c| > 2^53 when the value is 0);
+// (b) the Diophantine solver of the b != 0 congruences on random small systems with a known
+// integer solution (copies of CGAL::Gmpz share their representation: no in-place writes);
+// (c) b != 0 systems whose exact integer solution is given as x̄ come back exact.
+void test_regressions()
+{
+  std::cout << "== 7. regressions" << std::endl;
+  for(int e : {40, 52, 53, 54, 60}) {
+    typedef std::vector<std::vector<std::pair<long, long>>> Rows;
+    Linear_system s = small_system(3, Rows{ { { 0, 1 }, { 1, 1L << e }, { 2, -(1L << e) } } }, { 0 });
+    const std::vector<double> xbar{ 0., 0.5, 0.5 };
+    const Outcome o = run(s, xbar);
+    assert(o.status() == SS::SUCCESS && SS_test::exactly_satisfied(s, o.x) && bit_identical(o.x, xbar));
+    std::cout << "x0 + 2^" << e << " (x1 - x2) = 0 at an exact x̄: SUCCESS, unchanged" << std::endl;
+  }
+  SS_test::Rng rng(20261121);
+  int solved = 0;
+  for(int it = 0; it < 400; ++it) {
+    const std::size_t R = 1 + rng.index(4), N = R + rng.index(4);
+    std::vector<std::vector<CGAL::Gmpz>> A(R, std::vector<CGAL::Gmpz>(N));
+    std::vector<CGAL::Gmpz> ystar(N), B(R, CGAL::Gmpz(0)), y;
+    for(auto& row : A) for(auto& v : row) v = CGAL::Gmpz(rng.integer(-3, 3));
+    for(auto& v : ystar) v = CGAL::Gmpz(rng.integer(-5, 5));
+    for(std::size_t r = 0; r < R; ++r) for(std::size_t c = 0; c < N; ++c) B[r] += A[r][c] * ystar[c];
+    const bool ok = SS::internal::solve_integer_system(A, B, y);
+    assert(ok);                                                   // y* exists, so a solution must be found
+    for(std::size_t r = 0; r < R; ++r) {
+      CGAL::Gmpz t(0);
+      for(std::size_t c = 0; c < N; ++c) t += A[r][c] * y[c];
+      assert(t == B[r]);
+    }
+    ++solved;
+  }
+  std::cout << "Diophantine solver: " << solved << " random systems with a known integer solution solved exactly" << std::endl;
+  for(std::uint64_t seed : {1u, 715u, 9u}) {
+    SS_test::Random_options ro;
+    ro.rows = seed == 715u ? 100 : 16; ro.columns_per_row = 1.5; ro.seed = seed;
+    Linear_system s = SS_test::random_system(ro);
+    if(!s.has_solution) continue;
+    const Outcome o = run(s, s.solution);
+    std::cout << "random b != 0 (" << s.m << " x " << s.n << ", seed " << seed << ") at its integer solution: " << describe(o);
+    if(o.status() == SS::SUCCESS) {
+      assert(SS_test::exactly_satisfied(s, o.x));
+      std::cout << ", exact, max |x - x̄| = " << o.report.max_abs_change;
+    }
+    std::cout << std::endl;
+    assert(o.status() == SS::SUCCESS || o.status() == SS::RANGE_EXCEEDED);   // never INFEASIBLE: a solution exists
+  }
+}
+
 } // namespace
 
 int main()
@@ -617,6 +668,7 @@ int main()
   test_determinism();
   test_generated_systems();
   test_qp_reference();
+  test_regressions();
   std::cout << "test_projection: all tests passed in " << ms_since(t0) / 1000. << " s" << std::endl;
   return EXIT_SUCCESS;
 }

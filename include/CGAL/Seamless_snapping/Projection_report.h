@@ -27,7 +27,7 @@ struct Projection_options
 {
   /// Extra bits of headroom in the fixed-point range: `delta = 2^K` with
   /// `K = max_i e(|v_i|) + delta_margin_bits`, where `e(v)` is the binary exponent with
-  /// `|v| < 2^e(v)` and `v` runs over the constrained entries of x̄ and the IRREF right-hand side.
+  /// `|v| < 2^e(v)` and `v` runs over the constrained entries of x̄ and, for `b != 0`, the values `b̂_j / p_j` of the IRREF (implied values when the free variables are 0).
   /// The paper's choice (Sec. 4.3, "+1 adds a margin") is `1`: an implied value may then deviate
   /// from its input by up to `max |x̄|` before `RANGE_EXCEEDED` (Sec. 7).
   int delta_margin_bits = 1;

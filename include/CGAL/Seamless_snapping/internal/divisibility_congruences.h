@@ -41,55 +41,84 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// Dense column HNF solver for A y = B over Z (A: R x N, full row rank R <= N).
-// Returns false iff there is no integer solution; y gets one solution.
+// Column HNF solver for A y = B over Z (A: R x N, dense). Unimodular column operations bring A to
+// lower-triangular H = A U; H y' = B is solved by forward substitution with exact divisibility
+// checks, and y = U y'. U is never formed: the 2x2 column operations are recorded and applied to y'
+// in reverse order. Rows above the current one are already zero right of their pivot, so each
+// operation only touches the rows below. Returns false iff there is no integer solution.
+//
+// Entry growth: when row r has a "modulus column" (modulus_col[r] = c: column c equals p e_r, as the
+// w_j columns of the congruence system do), that column stays untouched until row r is processed,
+// so entries of row r can be reduced modulo p at any time by a unimodular column operation that
+// changes nothing else. Doing so after every operation keeps every entry below max |p| (without it,
+// the HNF coefficients explode).
 inline bool solve_integer_system(std::vector<std::vector<CGAL::Gmpz> > A, const std::vector<CGAL::Gmpz>& B,
-                                 std::vector<CGAL::Gmpz>& y)
+                                 std::vector<CGAL::Gmpz>& y,
+                                 const std::vector<std::size_t>& modulus_col = std::vector<std::size_t>())
 {
   typedef CGAL::Gmpz Z;
   const std::size_t R = A.size(), N = R == 0 ? 0 : A[0].size();
-  std::vector<std::vector<Z> > U(N, std::vector<Z>(N, Z(0)));      // unimodular, A U = H
-  for(std::size_t i = 0; i < N; ++i) U[i][i] = 1;
-  auto col_op = [&](std::size_t c1, std::size_t c2, const Z& a, const Z& b, const Z& c, const Z& d) {
-    // (col c1, col c2) <- (a col c1 + b col c2, c col c1 + d col c2), det = a d - b c = 1
-    for(std::size_t r = 0; r < R; ++r) {
-      Z x = A[r][c1], w = A[r][c2];
+  struct Op { std::size_t c1, c2; Z a, b, c, d; };   // (col c1, col c2) <- (a col c1 + b col c2, c col c1 + d col c2)
+  std::vector<Op> ops;
+  Z x, w;
+  const std::size_t NONE = std::size_t(-1);
+  auto has_modulus = [&](std::size_t r) { return r < modulus_col.size() && modulus_col[r] != NONE; };
+  // entry (r, c) <- entry mod p_r, by col_c -= q col_{modulus_col[r]} (changes only that entry)
+  auto reduce = [&](std::size_t r, std::size_t c) {
+    const std::size_t mc = modulus_col[r];
+    if(c == mc || A[r][c] == 0) return;
+    const Z& p = A[r][mc];
+    Z q; mpz_fdiv_q(q.mpz(), A[r][c].mpz(), p.mpz());
+    if(q == 0) return;
+    A[r][c] = Integer_ops<Z>::mod_floor(A[r][c], p);
+    ops.push_back(Op{c, mc, Z(1), Z(-q), Z(0), Z(1)});
+  };
+  auto col_op = [&](std::size_t r0, std::size_t c1, std::size_t c2, const Z& a, const Z& b, const Z& c, const Z& d) {
+    for(std::size_t r = r0; r < R; ++r) {
+      if(A[r][c1] == 0 && A[r][c2] == 0) continue;
+      x = A[r][c1]; w = A[r][c2];
       A[r][c1] = a * x + b * w; A[r][c2] = c * x + d * w;
     }
-    for(std::size_t r = 0; r < N; ++r) {
-      Z x = U[r][c1], w = U[r][c2];
-      U[r][c1] = a * x + b * w; U[r][c2] = c * x + d * w;
-    }
+    ops.push_back(Op{c1, c2, a, b, c, d});
+    for(std::size_t r = r0 + 1; r < R; ++r)
+      if(has_modulus(r)) { reduce(r, c1); reduce(r, c2); }
   };
   std::size_t rank = 0;
-  std::vector<std::size_t> pivot_row;                               // H column t has its leading entry in row pivot_row[t]
+  std::vector<std::size_t> pivot_row;                 // H column t has its leading entry in row pivot_row[t]
   for(std::size_t r = 0; r < R && rank < N; ++r) {
+    if(has_modulus(r)) for(std::size_t t = rank; t < N; ++t) reduce(r, t);
     for(std::size_t t = rank + 1; t < N; ++t) {
       if(A[r][t] == 0) continue;
-      if(A[r][rank] == 0) { col_op(rank, t, Z(0), Z(1), Z(1), Z(0)); continue; }   // swap (det -1 is fine: still unimodular)
+      if(A[r][rank] == 0) { col_op(r, rank, t, Z(0), Z(1), Z(1), Z(0)); continue; }   // swap (det -1: still unimodular)
       Z g, s, u;
       mpz_gcdext(g.mpz(), s.mpz(), u.mpz(), A[r][rank].mpz(), A[r][t].mpz());
       Z a = A[r][rank] / g, b = A[r][t] / g;
-      col_op(rank, t, s, u, Z(-b), a);                              // det = s a + u b = 1
+      col_op(r, rank, t, s, u, Z(-b), a);              // det = s a + u b = 1
     }
     if(A[r][rank] != 0) { pivot_row.push_back(r); ++rank; }
   }
-  // Solve H y' = B: columns 0..rank-1 are lower-triangular in rows pivot_row[], other rows must agree.
   std::vector<Z> yp(N, Z(0));
   for(std::size_t r = 0, t = 0; r < R; ++r) {
     Z rest = B[r];
-    for(std::size_t q = 0; q < t; ++q) rest -= A[r][q] * yp[q];
+    for(std::size_t q = 0; q < t; ++q) if(A[r][q] != 0 && yp[q] != 0) rest -= A[r][q] * yp[q];
     if(t < rank && pivot_row[t] == r) {
       if(!mpz_divisible_p(rest.mpz(), A[r][t].mpz())) return false;
-      Z v; mpz_divexact(v.mpz(), rest.mpz(), A[r][t].mpz());
-      yp[t] = v; ++t;
+      yp[t] = Integer_ops<Z>::exact_div(rest, A[r][t]);   // never write through mpz() of a shared copy
+      ++t;
     } else if(rest != 0) {
       return false;
     }
   }
-  y.assign(N, Z(0));
-  for(std::size_t i = 0; i < N; ++i)
-    for(std::size_t t = 0; t < rank; ++t) if(yp[t] != 0) y[i] += U[i][t] * yp[t];
+  // y = U y' = E_1 E_2 ... E_k y': apply the recorded operations in reverse order. An operation
+  // acting on columns (c1, c2) as [[a, c], [b, d]] maps (v_c1, v_c2) to (a v_c1 + c v_c2, b v_c1 + d v_c2).
+  for(std::size_t k = ops.size(); k-- > 0; ) {
+    const Op& o = ops[k];
+    if(yp[o.c1] == 0 && yp[o.c2] == 0) continue;
+    x = yp[o.c1]; w = yp[o.c2];
+    yp[o.c1] = o.a * x + o.c * w;
+    yp[o.c2] = o.b * x + o.d * w;
+  }
+  y.swap(yp);
   return true;
 }
 
@@ -145,15 +174,15 @@ Status solve_divisibility_congruences(const Irref<Int>& ir, const std::vector<CG
       Z p = to_gmpz(ir.pivot[j]);
       for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
         const std::size_t c = std::size_t(std::lower_bound(cols.begin(), cols.end(), ir.col[q]) - cols.begin());
-        Z v = to_gmpz(ir.val[q]);
-        mpz_fdiv_r(v.mpz(), v.mpz(), p.mpz());                       // coefficients matter modulo p only
-        A[r][c] = v;
+        A[r][c] = Integer_ops<Z>::mod_floor(to_gmpz(ir.val[q]), p);  // coefficients matter modulo p only
       }
       A[r][cols.size() + r] = p;
-      mpz_fdiv_r(rhs[r].mpz(), B[j].mpz(), p.mpz());
+      rhs[r] = Integer_ops<Z>::mod_floor(B[j], p);
     }
     std::vector<Z> y;
-    if(!solve_integer_system(A, rhs, y)) {
+    std::vector<std::size_t> modulus_col(R);
+    for(std::size_t r = 0; r < R; ++r) modulus_col[r] = cols.size() + r;   // the w_j column: p_j e_j
+    if(!solve_integer_system(A, rhs, y, modulus_col)) {
       message = "no solution on the grid F_delta: the divisibility conditions of rows ";
       for(std::size_t r = 0; r < R && r < 5; ++r) message += (r ? ", " : "") + std::to_string(G[r]);
       message += R > 5 ? ", ..." : "";
@@ -161,8 +190,7 @@ Status solve_divisibility_congruences(const Irref<Int>& ir, const std::vector<CG
       return INFEASIBLE;
     }
     for(std::size_t c = 0; c < cols.size(); ++c) {
-      Z l = to_gmpz(ir.divisor[cols[c]]);
-      Z v; mpz_fdiv_r(v.mpz(), y[c].mpz(), l.mpz());
+      const Z v = Integer_ops<Z>::mod_floor(y[c], to_gmpz(ir.divisor[cols[c]]));
       if(v != 0) z0[cols[c]] = v;
     }
   }

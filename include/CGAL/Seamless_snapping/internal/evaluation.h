@@ -49,9 +49,11 @@ namespace internal {
 // v * 2^e exactly (e may be negative); false when the result is not an integer.
 inline bool scale_by_power_of_two(const CGAL::Gmpz& v, int e, CGAL::Gmpz& out)
 {
-  if(e >= 0) { mpz_mul_2exp(out.mpz(), v.mpz(), (unsigned long)e); return true; }
+  CGAL::Gmpz r;                                 // fresh: `out` may share a representation
+  if(e >= 0) { mpz_mul_2exp(r.mpz(), v.mpz(), (unsigned long)e); out = r; return true; }
   if(v != 0 && mpz_scan1(v.mpz(), 0) < (unsigned long)(-e)) return false;   // not divisible by 2^-e
-  mpz_tdiv_q_2exp(out.mpz(), v.mpz(), (unsigned long)(-e));
+  mpz_tdiv_q_2exp(r.mpz(), v.mpz(), (unsigned long)(-e));
+  out = r;
   return true;
 }
 
@@ -72,28 +74,14 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz
   return false;
 }
 
+// One attempt on a given grid.
 template <typename Int>
-void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
-              const Projection_options& options, std::vector<double>& x, Projection_report& report)
+void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
+                      const Fixed_point_grid& grid, std::vector<double>& x, Projection_report& report)
 {
   typedef Integer_ops<Int> Ops;
   const std::size_t n = ir.n_cols, m = ir.rank();
   auto fail = [&](Status s, const std::string& msg) { report.status = s; report.message = msg; };
-
-  // -- input
-  for(std::size_t i = 0; i < n; ++i)
-    if(!std::isfinite(xbar[i])) { fail(INVALID_INPUT, "x̄[" + std::to_string(i) + "] is not finite"); return; }
-
-  // -- grid (Sec. 4.3): K from the constrained inputs and the right-hand side, unless given
-  Fixed_point_grid grid;
-  if(options.delta_exponent) {
-    grid = Fixed_point_grid(*options.delta_exponent);
-  } else {
-    double max_abs = 0;
-    for(std::size_t i = 0; i < n; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_abs = std::max(max_abs, std::fabs(xbar[i]));
-    for(const Int& v : ir.rhs) max_abs = std::max(max_abs, std::fabs(Ops::to_double(v)));
-    grid = Fixed_point_grid::from_max_abs(max_abs, options.delta_margin_bits);
-  }
   report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
   for(std::size_t i = 0; i < n; ++i)
     if(ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta)) {
@@ -102,21 +90,17 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
       return;
     }
 
-  // -- right-hand side on the grid: B_j = b̂_j / s must be an integer with |B_j| < 2^52
+  // -- right-hand side on the grid: B_j = b̂_j / s must be an integer (any size: only the constants
+  //    c0_j derived from it below must lie in the range)
   std::vector<CGAL::Gmpz> B;
   if(!ir.homogeneous) {
     B.resize(m);
     for(std::size_t j = 0; j < m; ++j) {
       if(Ops::is_zero(ir.rhs[j])) continue;
       if(!scale_by_power_of_two(to_gmpz(ir.rhs[j]), 52 - grid.K, B[j])) {
-        fail(INFEASIBLE, "b̂ of IRREF row " + std::to_string(j) + " (" + Ops::to_string(ir.rhs[j])
-                         + ") is not a multiple of the grid quantum 2^" + std::to_string(grid.K - 52) + ": no solution on the grid F_delta");
-        return;
-      }
-      std::int64_t t;
-      if(!Integer_ops<CGAL::Gmpz>::to_int64(B[j], t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
         fail(RANGE_EXCEEDED, "b̂ of IRREF row " + std::to_string(j) + " (" + Ops::to_string(ir.rhs[j])
-                             + ") is outside the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K) + ")");
+                             + ") is not a multiple of the quantum 2^" + std::to_string(grid.K - 52) + " of the grid F_delta:"
+                             + " the values are too large for a grid fine enough for b");
         return;
       }
     }
@@ -193,7 +177,7 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
                                        + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Eq. 2')");
           return;
         }
-        mpz_divexact(d.mpz(), d.mpz(), pz.mpz());
+        d = Integer_ops<CGAL::Gmpz>::exact_div(d, pz);
         if(!Integer_ops<CGAL::Gmpz>::to_int64(d, t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
           fail(RANGE_EXCEEDED, "the shifted free variable " + std::to_string(c) + " is outside the fixed-point range (Eq. 2')");
           return;
@@ -208,7 +192,7 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
         fail(EXACTNESS_CHECK_FAILED, "internal error: IRREF row " + std::to_string(j) + " violates its divisibility congruence (Eq. 2')");
         return;
       }
-      mpz_divexact(c0.mpz(), c0.mpz(), pz.mpz());
+      c0 = Integer_ops<CGAL::Gmpz>::exact_div(c0, pz);   // c0 may share B[j]'s representation: no in-place write
       std::int64_t c064;
       if(!Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) || c064 > Fixed_point_grid::max_integer() || c064 < -Fixed_point_grid::max_integer()) {
         fail(RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
@@ -217,12 +201,19 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
       }
       terms.push_back(std::make_pair(Ops::from_int64(1), grid.from_integer(c064)));
     }
-    double r;
-    if(!safe_dot(terms, grid, r, ws)) {
+    double r = 0;
+    const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
+    if(sr == SAFE_DOT_OUT_OF_RANGE) {
+      fail(RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
+                           + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
+                           + ") (Sec. 7; its input was " + std::to_string(xbar[ir.pivot_col[j]])
+                           + "): x̄ is far from satisfying this constraint, or a larger delta margin is needed");
+      return;
+    }
+    if(sr == SAFE_DOT_STUCK) {
       fail(SAFE_DOT_FAILED, "the safe dot product (Alg. 5) for implied variable " + std::to_string(ir.pivot_col[j])
-                            + " (IRREF row " + std::to_string(j) + ") cannot stay inside (-2^" + std::to_string(grid.K)
-                            + ", 2^" + std::to_string(grid.K) + "): the implied value is out of range (Sec. 7; input "
-                            + std::to_string(xbar[ir.pivot_col[j]]) + "); a larger delta margin may help");
+                            + " (IRREF row " + std::to_string(j) + ") got stuck although its exact value lies inside (-2^"
+                            + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K) + ")");
       return;
     }
     if(!(std::fabs(r) < grid.delta)) {
@@ -279,6 +270,37 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
   report.message = "all " + std::to_string(sys.n_rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
                    + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change);
   x.swap(out);
+}
+
+// Alg. 3 driver: validates x̄, chooses the grid (Sec. 4.3) and evaluates. K = e(max |x̄_i|) +
+// margin over the constrained x̄ (the paper's choice). If that grid is too small for the solution
+// (RANGE_EXCEEDED) and b != 0, one more attempt uses K from max(|x̄_i|, |b̂_j / p_j|): the values the
+// implied variables take when the free ones are 0. A grid given in the options is used as is.
+template <typename Int>
+void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
+              const Projection_options& options, std::vector<double>& x, Projection_report& report)
+{
+  typedef Integer_ops<Int> Ops;
+  for(std::size_t i = 0; i < xbar.size(); ++i)
+    if(!std::isfinite(xbar[i])) {
+      report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite";
+      return;
+    }
+  if(options.delta_exponent) { evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report); return; }
+  double max_x = 0, max_b = 0;
+  for(std::size_t i = 0; i < ir.n_cols; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_x = std::max(max_x, std::fabs(xbar[i]));
+  for(std::size_t j = 0; j < ir.rank(); ++j)
+    if(!Ops::is_zero(ir.rhs[j]))
+      max_b = std::max(max_b, std::fabs(Ops::to_double(ir.rhs[j]) / Ops::to_double(ir.pivot[j])));
+  const Fixed_point_grid g1 = Fixed_point_grid::from_max_abs(max_x, options.delta_margin_bits);
+  evaluate_on_grid(ir, sys, xbar, g1, x, report);
+  if(report.status != RANGE_EXCEEDED || max_b <= max_x) return;
+  const Fixed_point_grid g2 = Fixed_point_grid::from_max_abs(std::max(max_x, max_b), options.delta_margin_bits);
+  if(g2.K == g1.K) return;
+  Projection_report second;
+  evaluate_on_grid(ir, sys, xbar, g2, x, second);
+  if(second.status == SUCCESS) report = second;
+  else report.message += " (also with delta = 2^" + std::to_string(g2.K) + " from |b̂_j / p_j|: " + second.message + ")";
 }
 
 } // namespace internal

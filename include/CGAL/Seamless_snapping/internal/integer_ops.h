@@ -60,6 +60,8 @@ struct Integer_ops<std::int64_t>
   static Int from_int64(std::int64_t v) { return v; }
 };
 
+// Note on CGAL::Gmpz: copies share one representation and the non-const mpz() does not copy on
+// write, so every mpz_* function here writes into a freshly constructed Gmpz, never into a copy.
 template <>
 struct Integer_ops<CGAL::Gmpz>
 {
@@ -80,6 +82,8 @@ struct Integer_ops<CGAL::Gmpz>
   static Int exact_div(const Int& a, const Int& b) { Int r; mpz_divexact(r.mpz(), a.mpz(), b.mpz()); return r; }
   static bool divides(const Int& d, const Int& a) { return !is_zero(d) && mpz_divisible_p(a.mpz(), d.mpz()) != 0; }
   static Int lcm(const Int& a, const Int& b) { Int r; mpz_lcm(r.mpz(), a.mpz(), b.mpz()); return r; }
+  // a mod b in [0, |b|)
+  static Int mod_floor(const Int& a, const Int& b) { Int r; mpz_fdiv_r(r.mpz(), a.mpz(), b.mpz()); return r; }
   static bool to_int64(const Int& a, std::int64_t& out)
   {
     if(!mpz_fits_slong_p(a.mpz())) return false;

@@ -88,8 +88,8 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
     if(!Ops::is_zero(iv)) ++out.ptr[r + 1];                      // explicit zeros are not entries
   });
   if(bad_index) {
-    message = "entry (" + std::to_string(bad_r) + ", " + std::to_string(bad_c) + ") is outside the "
-            + std::to_string(n_rows) + " x " + std::to_string(n_cols) + " matrix";
+    message = "entry (" + std::to_string(std::int64_t(bad_r)) + ", " + std::to_string(std::int64_t(bad_c)) + ") is outside the "
+            + std::to_string(n_rows) + " x " + std::to_string(n_cols) + " matrix";   // negative indices print as such
     return INVALID_INPUT;
   }
   for(std::size_t i = 0; i < n_rows; ++i) out.ptr[i + 1] += out.ptr[i];

@@ -61,13 +61,14 @@ inline Status propagate_along_branches(const Reduced_system& rs, const std::vect
         terms[0] = std::make_pair(std::int64_t(1), x[2 * p.u0_minus + c]);
         terms[1] = std::make_pair(std::int64_t(-R.sign[c]), x[2 * p.u0_plus + R.col[c]]);
         terms[2] = std::make_pair(std::int64_t(R.sign[c]), x[2 * plus + R.col[c]]);
-        double r;
-        if(!safe_dot(terms, grid, r, ws)) {
-          message = "safe dot product stuck for sector " + std::to_string(minus) + " on cut branch " +
-                    std::to_string(branch) + " (the value would leave (-delta, delta), delta = 2^" + std::to_string(grid.K) + ")";
+        double r = 0;
+        const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
+        if(sr == SAFE_DOT_STUCK) {
+          message = "safe dot product (Alg. 5) stuck for sector " + std::to_string(minus) + " on cut branch " +
+                    std::to_string(branch) + " although its value lies inside (-delta, delta), delta = 2^" + std::to_string(grid.K);
           return SAFE_DOT_FAILED;
         }
-        if(!grid.contains(r)) {
+        if(sr == SAFE_DOT_OUT_OF_RANGE || !grid.contains(r)) {
           message = "implied value of sector " + std::to_string(minus) + " on cut branch " + std::to_string(branch) +
                     " leaves the fixed-point range (-delta, delta), delta = 2^" + std::to_string(grid.K);
           return RANGE_EXCEEDED;

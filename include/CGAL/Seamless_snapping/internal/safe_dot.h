@@ -11,16 +11,27 @@
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SAFE_DOT_H
 
 // The safe dot product, Alg. 5 (Sec. 4.3): r = sum_i c_i x_i with integer c_i and x_i in F_delta,
-// evaluated in double arithmetic so that no intermediate value leaves [-delta, delta]. Every
-// operation is then exact (see fixed_point_grid.h). Summands c_i x_i are taken as |c_i| copies of
-// +-|x_i|; the accumulator r alternates: while r < 0 a positive summand is added, otherwise a
-// negative one (while any is left). Copies are taken k at a time, with k as large as the range
-// allows (k = min(c, floor((delta - r) / |x|))), not one by one. k is computed in integers on the
-// grid (z = v / s), so no rounded division can overshoot. When the summands' magnitudes add up
-// to less than delta, any order is safe and the sum is taken directly (the fast path).
+// evaluated in double arithmetic so that no intermediate value leaves [-delta, delta]; every
+// operation is then exact (see fixed_point_grid.h). Summands c_i x_i are |c_i| copies of +-|x_i|;
+// the accumulator alternates: while r < 0 a positive summand is added, otherwise a negative one
+// (while any is left). Copies are taken k at a time, k as large as the range allows
+// (k = min(c, floor((delta - r) / |x|))), not one by one; k is computed on the grid integers
+// (z = v / s), so no rounded division can overshoot.
+//
+// Because every x_i is a grid multiple, the exact value of the sum is also available as an integer
+// sum_i c_i z_i (128-bit, or Gmpz when that overflows). We compute it first:
+//  - if |sum| >= 2^52 the result is outside (-delta, delta): OUT_OF_RANGE (Alg. 5 would get stuck);
+//  - if sum_i |c_i z_i| < 2^52, no partial sum in any order can leave the range, and the result is
+//    the integer sum (fast path; this is the common case on seamless systems);
+//  - otherwise Alg. 5 runs in doubles. Its alternation needs about sum|c_i x_i| / delta steps, which
+//    is unbounded when large positive and negative summands cancel (e.g. coefficients 2^40 and
+//    -2^40); after a fixed number of steps the remaining summands are taken from the exact integer
+//    sum instead. A completed Alg. 5 must agree with the integer sum (else STUCK: an internal error).
 
 #include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
 #include <CGAL/Seamless_snapping/internal/integer_ops.h>
+
+#include <CGAL/Gmpz.h>
 
 #include <cmath>
 #include <cstdint>
@@ -31,69 +42,105 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// One summand: `count` copies of `value` (count > 0, value on the grid, nonzero).
+enum Safe_dot_result { SAFE_DOT_OK = 0, SAFE_DOT_OUT_OF_RANGE, SAFE_DOT_STUCK };
+
+// One summand: `count` copies of `value` (count > 0, value > 0 on the grid).
 struct Safe_dot_summand { std::int64_t count; double value; };
 
 // Scratch buffers, reused across calls to avoid allocations in the evaluation loop.
 struct Safe_dot_workspace { std::vector<Safe_dot_summand> pos, neg; };
 
-// Computes sum c_i x_i into `result`. Returns false when the accumulation gets stuck, i.e. the
-// next copy would leave [-delta, delta] (then the exact result is itself outside the range, as the
-// alternation keeps every partial sum between the result and the range of the summands; Sec. 4.3),
-// or when a coefficient is so large that a single copy-count cannot be represented.
-// Preconditions: every x_i is in F_delta (grid.contains(x_i)).
+// The exact integer value sum_i c_i (x_i / s), as 128-bit integer or, on overflow, Gmpz.
 template <typename Int>
-bool safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid,
-              double& result, Safe_dot_workspace& ws)
+bool exact_grid_sum(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid,
+                    __int128& sum, __int128& magnitude, CGAL::Gmpz& big)
 {
   typedef Integer_ops<Int> Ops;
+  sum = 0; magnitude = 0;
+  bool overflow = false;
+  for(const auto& t : terms) {
+    if(Ops::is_zero(t.first) || t.second == 0) continue;
+    const std::int64_t z = std::int64_t(t.second / grid.quantum);              // exact
+    std::int64_t c;
+    __int128 p, ap;
+    if(!overflow && Ops::to_int64(t.first, c) && !__builtin_mul_overflow((__int128)c, (__int128)z, &p)) {
+      ap = p < 0 ? -p : p;
+      if(!__builtin_add_overflow(sum, p, &sum) && !__builtin_add_overflow(magnitude, ap, &magnitude)) continue;
+    }
+    overflow = true;
+    break;
+  }
+  if(!overflow) return true;
+  big = 0;                                                                     // redo in Gmpz
+  for(const auto& t : terms) {
+    if(Ops::is_zero(t.first) || t.second == 0) continue;
+    big += to_gmpz(t.first) * Integer_ops<CGAL::Gmpz>::from_int64(std::int64_t(t.second / grid.quantum));
+  }
+  return false;
+}
+
+template <typename Int>
+Safe_dot_result safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid,
+                         double& result, Safe_dot_workspace& ws)
+{
+  typedef Integer_ops<Int> Ops;
+  const std::int64_t D = std::int64_t(1) << 52;    // delta / s
+  __int128 sum, magnitude;
+  CGAL::Gmpz big;
+  if(!exact_grid_sum(terms, grid, sum, magnitude, big)) {
+    std::int64_t v;
+    if(!Integer_ops<CGAL::Gmpz>::to_int64(big, v) || v >= D || v <= -D) return SAFE_DOT_OUT_OF_RANGE;
+    sum = v;
+    magnitude = (__int128)D;                       // forces the checked path below
+  }
+  if(sum >= D || sum <= -D) return SAFE_DOT_OUT_OF_RANGE;
+  if(magnitude < D) { result = grid.from_integer(std::int64_t(sum)); return SAFE_DOT_OK; }   // fast path
+
+  // Alg. 5 in doubles.
   ws.pos.clear(); ws.neg.clear();
-  const double s = grid.quantum;
-  // Fast path: when sum |c_i| |x_i| < delta, no partial sum in any order can leave the range, so
-  // the alternation is unnecessary and the sum is accumulated directly (in grid integers).
-  __int128 magnitude = 0, sum = 0;
-  bool small = true;
   for(const auto& t : terms) {
     if(Ops::is_zero(t.first) || t.second == 0) continue;
     std::int64_t c;
-    if(!Ops::to_int64(Ops::abs(t.first), c) || c > (std::int64_t(1) << 53))
-      return false;   // |c| x would exceed 2^53 s >= delta for any nonzero grid value x
-    const std::int64_t X = std::int64_t(std::fabs(t.second) / s);     // exact
-    const bool positive = (Ops::sign(t.first) > 0) == (t.second > 0);
-    if(small) {
-      magnitude += (__int128)c * X;
-      sum += positive ? (__int128)c * X : -(__int128)c * X;
-      if(magnitude >= ((__int128)1 << 52)) small = false;
+    if(!Ops::to_int64(Ops::abs(t.first), c) || c > (std::int64_t(1) << 53)) {
+      // |c x| > 2 delta: Alg. 5 would need more than 2^(#bits of c - 53) steps; the integer sum is exact.
+      result = grid.from_integer(std::int64_t(sum));
+      return SAFE_DOT_OK;
     }
+    const bool positive = (Ops::sign(t.first) > 0) == (t.second > 0);
     (positive ? ws.pos : ws.neg).push_back(Safe_dot_summand{c, std::fabs(t.second)});
   }
-  if(small) { result = double(std::int64_t(sum)) * s; return true; }
-  // Deterministic order: as given. (Any order is exact; the alternation is what bounds the range.)
-  std::size_t ip = 0, in = 0;
+  const double s = grid.quantum;
+  std::size_t ip = 0, in = 0, steps = 0;
+  const std::size_t max_steps = 4 * (ws.pos.size() + ws.neg.size()) + 64;
   double r = 0;
-  const std::int64_t D = std::int64_t(1) << 52;    // delta / s
   while(ip < ws.pos.size() || in < ws.neg.size()) {
+    if(++steps > max_steps) {                      // slow cancellation: take the exact integer sum
+      result = grid.from_integer(std::int64_t(sum));
+      return SAFE_DOT_OK;
+    }
     const bool take_pos = ip < ws.pos.size() && (r < 0 || in == ws.neg.size());
     Safe_dot_summand& t = take_pos ? ws.pos[ip] : ws.neg[in];
     const std::int64_t R = std::int64_t(r / s);     // exact, |R| <= D
     const std::int64_t X = std::int64_t(t.value / s);// exact, 0 < X < D
     const std::int64_t room = take_pos ? D - R : D + R;   // (delta - r)/s  or  (r + delta)/s, in [0, 2D]
     const std::int64_t k = std::min<std::int64_t>(t.count, room / X);
-    if(k == 0) return false;                         // stuck: the next copy leaves the range
+    if(k == 0) return SAFE_DOT_STUCK;                // cannot happen when |sum| < delta (see header)
     const double kx = double(k) * t.value;           // exact: k X <= room <= 2^53
     r = take_pos ? r + kx : r - kx;                  // exact: result in [-delta, delta]
     t.count -= k;
     if(t.count == 0) { if(take_pos) ++ip; else ++in; }
   }
+  if(r != grid.from_integer(std::int64_t(sum))) return SAFE_DOT_STUCK;   // Alg. 5 and the integer sum disagree
   result = r;
-  return true;
+  return SAFE_DOT_OK;
 }
 
+// Convenience form: true iff the sum was computed (SAFE_DOT_OK).
 template <typename Int>
 bool safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid, double& result)
 {
   Safe_dot_workspace ws;
-  return safe_dot(terms, grid, result, ws);
+  return safe_dot(terms, grid, result, ws) == SAFE_DOT_OK;
 }
 
 } // namespace internal
