@@ -33,6 +33,8 @@
 #include <CGAL/Seamless_snapping/internal/integer_system.h>
 
 #include <algorithm>
+#include <memory>
+#include <type_traits>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -285,8 +287,10 @@ private:
     for(std::uint32_t i : m_targets) {
       Row& row = m_rows[i];
       const Int a = *find(row, c);
-      const Int g = Ops::gcd(p, a);
-      const Int fi = Ops::exact_div(p, g), fk = Ops::exact_div(a, g);
+      Int fi, fk;
+      if(Ops::is_unit(p)) { fi = p; fk = a; }                 // gcd 1: the common case, no division
+      else if(Ops::is_unit(a)) { fi = p; fk = a; }
+      else { const Int g = Ops::gcd(p, a); fi = Ops::exact_div(p, g); fk = Ops::exact_div(a, g); }
       combine(row, i, fi, pr, fk);
       ++eliminations;
       if(row.state == ACTIVE) push(i);
@@ -328,9 +332,29 @@ private:
       for(Entry& x : m_merged) x.val = Ops::exact_div(x.val, g);
       row.b = Ops::exact_div(row.b, g);
     }
-    row.own.swap(m_merged);
-    row.data = row.own.data();
-    row.size = std::uint32_t(row.own.size());
+    store(row, m_merged);
+  }
+
+  // Gives `row` the entries of `merged`. Built-in integers go into an arena of large blocks
+  // (stable addresses, no allocation per row; superseded versions are simply left behind), GMP
+  // integers into the row's own vector.
+  void store(Row& row, std::vector<Entry>& merged)
+  {
+    if(std::is_trivially_copyable<Entry>::value) {
+      if(m_arena.empty() || m_arena_used + merged.size() > m_arena_block) {
+        m_arena.emplace_back(new Entry[std::max(m_arena_block, merged.size())]);
+        m_arena_used = 0;
+      }
+      Entry* dst = m_arena.back().get() + m_arena_used;
+      std::copy(merged.begin(), merged.end(), dst);
+      m_arena_used += merged.size();
+      row.data = dst;
+      row.size = std::uint32_t(merged.size());
+    } else {
+      row.own.swap(merged);
+      row.data = row.own.data();
+      row.size = std::uint32_t(row.own.size());
+    }
   }
 
   void extract(const Integer_system& sys, const std::vector<std::uint32_t>& order, Irref<Int>& out)
@@ -381,6 +405,9 @@ private:
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;
   std::vector<Entry> m_merged;
+  std::vector<std::unique_ptr<Entry[]> > m_arena;      // see store()
+  std::size_t m_arena_used = 0;
+  static constexpr std::size_t m_arena_block = std::size_t(1) << 16;
 };
 
 // Computes the IRREF of the canonical system in Int. With Int = int64 an overflow throws
