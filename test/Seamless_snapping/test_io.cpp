@@ -4,6 +4,7 @@
 //   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
 //   io: an invalid mesh or an unwritable place writes no file (atomic write)
 //   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not
+//   seam_mesh: SMP UVs on a Seam_mesh -> corner map -> back is bit-exact; border-halfedge pitfall; atomic failure
 //
 // Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
 // parts whose data is missing are skipped with a message.
@@ -12,13 +13,19 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
 
 #include <algorithm>
 #include <cassert>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -28,6 +35,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #ifndef SS_SHARED_DATA_DIR
@@ -504,6 +512,106 @@ static void test_orbifold(const fs::path& tmp)
   }
 }
 
+// ------------------------------------------------------------------------------------------
+// seam_mesh: a tube (open cylinder, 8 x 4 vertices) cut along one generator line (3 seam edges), so that
+// the seam mesh is a disk: 36 seam-mesh vertices. Its 14 border vertices that are on no seam are the
+// CGAL_CONVENTIONS pitfall: their canonical halfedge is a border halfedge.
+static void test_seam_mesh()
+{
+  typedef Mesh::Property_map<Mesh::Edge_index, bool>                 Seam_edge_pmap;
+  typedef Mesh::Property_map<vertex_descriptor, bool>                Seam_vertex_pmap;
+  typedef CGAL::Seam_mesh<Mesh, Seam_edge_pmap, Seam_vertex_pmap>    Seam_mesh;
+  typedef boost::graph_traits<Seam_mesh>::vertex_descriptor          seam_vertex;
+  typedef boost::graph_traits<Seam_mesh>::halfedge_descriptor        seam_halfedge;
+
+  const int ring = 8, rows = 4;
+  Mesh tm;
+  std::vector<vertex_descriptor> v(ring * rows);
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < ring; ++i)
+      v[j * ring + i] = tm.add_vertex(Point_3(std::cos(2 * CGAL_PI * i / ring), std::sin(2 * CGAL_PI * i / ring), j));
+  for(int j = 0; j + 1 < rows; ++j)
+    for(int i = 0; i < ring; ++i) {
+      const vertex_descriptor a = v[j * ring + i], b = v[j * ring + (i + 1) % ring];
+      const vertex_descriptor c = v[(j + 1) * ring + (i + 1) % ring], d = v[(j + 1) * ring + i];
+      CHECK(tm.add_face(a, b, c) != Mesh::null_face() && tm.add_face(a, c, d) != Mesh::null_face(), "tube face");
+    }
+  Seam_edge_pmap sem = tm.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
+  Seam_vertex_pmap svm = tm.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
+  Seam_mesh smesh(tm, sem, svm);
+  for(int j = 0; j + 1 < rows; ++j) smesh.add_seam(v[j * ring], v[(j + 1) * ring]);
+  CHECK(num_vertices(smesh) == 36 && smesh.number_of_seam_edges() == 3, "tube seam mesh: 36 vertices, 3 seam edges");
+  std::size_t border_canonical = 0;
+  for(seam_vertex sv : vertices(smesh)) if(tm.is_border(static_cast<halfedge_descriptor>(sv))) ++border_canonical;
+  CHECK(border_canonical == 14, "tube: 14 seam-mesh vertices have a border canonical halfedge, got " << border_canonical);
+
+  // 1. SMP's default parameterizer (mean value coordinates, circular border), UVs on canonical halfedges
+  UV_map smp_uv = tm.add_property_map<halfedge_descriptor, Point_2>("h:smp_uv", Point_2(-7, -7)).first;
+  seam_halfedge bhd;
+  for(seam_halfedge h : halfedges(smesh)) if(is_border(h, smesh)) { bhd = h; break; }
+  const SMP::Error_code err = SMP::parameterize(smesh, bhd, smp_uv);
+  CHECK(err == SMP::OK, "SMP::parameterize on the cut tube: " << SS::internal::smp_error_name(err));
+
+  // 2. to the corner map
+  UV_map corner = tm.add_property_map<halfedge_descriptor, Point_2>("h:corner", Point_2(-9, -9)).first;
+  SS::seam_mesh_uv_to_corner_uv(smesh, smp_uv, corner);
+  std::size_t naive_wrong = 0;
+  for(halfedge_descriptor h : tm.halfedges()) {
+    if(tm.is_border(h)) {
+      CHECK(corner[h] == corner[tm.prev(tm.opposite(h))], "border halfedge carries the corner prev(opposite(h))");
+      continue;
+    }
+    const seam_vertex sv = target(seam_halfedge(h), smesh);       // CGAL's own wedge lookup
+    CHECK(same_bits(corner[h].x(), get(smp_uv, sv).x()) && same_bits(corner[h].y(), get(smp_uv, sv).y()),
+          "corner UV is the UV of its seam-mesh vertex");
+    if(smp_uv[h] != corner[h]) ++naive_wrong;                     // reading the map at h itself
+  }
+  CHECK(naive_wrong > 0, "reading the SMP map at each corner's own halfedge would be wrong (test is meaningful)");
+  const auto fit = SS::internal::fit_seam_transitions(tm, corner);
+  CHECK(fit.cut_halfedges.size() == 3, "the corner map has exactly the 3 seam edges as cut edges, got " << fit.cut_halfedges.size());
+  std::printf("seam_mesh: cut tube, %zu seam-mesh vertices (%zu with a border canonical halfedge), %zu corners differ "
+              "from a naive read, %zu cut edges\n", std::size_t(num_vertices(smesh)), border_canonical, naive_wrong,
+              fit.cut_halfedges.size());
+
+  // 3. back, into a map keyed by seam-mesh vertices and into an SMP-style halfedge map: bit-exact round trip
+  std::unordered_map<seam_vertex, Point_2> back_storage;
+  boost::associative_property_map<std::unordered_map<seam_vertex, Point_2> > back(back_storage);
+  std::string msg;
+  CHECK(SS::corner_uv_to_seam_mesh_uv(smesh, corner, back, msg) == SS::SUCCESS, msg);
+  UV_map back_h = tm.add_property_map<halfedge_descriptor, Point_2>("h:back", Point_2(-5, -5)).first;
+  CHECK(SS::corner_uv_to_seam_mesh_uv(smesh, corner, back_h) == SS::SUCCESS, "to a halfedge map");
+  CHECK(back_storage.size() == 36, "every seam-mesh vertex written");
+  for(seam_vertex sv : vertices(smesh)) {
+    const Point_2 p = get(smp_uv, sv), q = get(back, sv), r = get(back_h, static_cast<halfedge_descriptor>(sv));
+    CHECK(same_bits(p.x(), q.x()) && same_bits(p.y(), q.y()) && same_bits(p.x(), r.x()) && same_bits(p.y(), r.y()),
+          "round trip seam-mesh UV -> corner -> seam-mesh UV is bit-exact");
+  }
+
+  // 4. in place (the SMP map itself becomes a corner map), and the same map given as both arguments back
+  UV_map inplace = tm.add_property_map<halfedge_descriptor, Point_2>("h:inplace", Point_2(-7, -7)).first;
+  for(halfedge_descriptor h : tm.halfedges()) inplace[h] = smp_uv[h];
+  SS::seam_mesh_uv_to_corner_uv(smesh, inplace, inplace);
+  bool same = true;
+  for(halfedge_descriptor h : tm.halfedges()) same = same && inplace[h] == corner[h];
+  CHECK(same, "in-place conversion gives the same corner map");
+  CHECK(SS::corner_uv_to_seam_mesh_uv(smesh, inplace, inplace) == SS::SUCCESS, "in place back");
+  for(halfedge_descriptor h : tm.halfedges()) same = same && inplace[h] == corner[h];
+  CHECK(same, "a complete corner map is a fixed point of the backward conversion");
+
+  // 5. a discontinuity that is not a seam: INVALID_INPUT, the output untouched
+  // a corner of an interior vertex off the seam that is not the one representing its seam-mesh vertex
+  const halfedge_descriptor inner = tm.prev(tm.opposite(tm.halfedge(v[1 * ring + 3])));
+  const Point_2 old = corner[inner];
+  corner[inner] = Point_2(old.x() + 1e-12, old.y());
+  UV_map untouched = tm.add_property_map<halfedge_descriptor, Point_2>("h:untouched", Point_2(3, 4)).first;
+  CHECK(SS::corner_uv_to_seam_mesh_uv(smesh, corner, untouched, msg) == SS::INVALID_INPUT &&
+        msg.find("1 corner ") == 0, "a corner off by 1e-12 is rejected: " << msg);
+  bool kept = true;
+  for(halfedge_descriptor h : tm.halfedges()) kept = kept && untouched[h] == Point_2(3, 4);
+  CHECK(kept, "failed conversion writes nothing");
+  corner[inner] = old;
+}
+
 int main()
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -513,6 +621,7 @@ int main()
   test_write_failures(tmp);
   test_shared_data(tmp);
   test_orbifold(tmp);
+  test_seam_mesh();
   fs::remove_all(tmp);
   std::printf("test_io: %s (%d failures, %.1f s)\n", failures == 0 ? "OK" : "FAILED", failures, ms_since(t0) / 1000);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

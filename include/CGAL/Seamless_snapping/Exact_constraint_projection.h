@@ -98,7 +98,10 @@ public:
    * are summed, as `Eigen::SparseMatrix::setFromTriplets()` does.
    * \tparam TripletRange a range of objects `t` with `t.row()`, `t.col()` and `t.value()`
    *         (e.g. `Eigen::Triplet<long>`); the value type is integral or `CGAL::Gmpz`
-   * \param n_rows m, \param n_cols n
+   * \param n_rows m, the number of rows of `C`
+   * \param n_cols n, the number of columns of `C`
+   * \param triplets the nonzero entries of `C`, with `0 <= row() < m` and `0 <= col() < n`
+   * \param b random-access range of m integers, as for the other overload
    */
   template <typename TripletRange, typename BRange>
   Status initialize(std::size_t n_rows, std::size_t n_cols, const TripletRange& triplets, const BRange& b)

@@ -24,6 +24,7 @@
 // Everything here is undocumented helper code (namespace internal); it is not an exactness tool:
 // `fit_seam_transitions()` works in double, `exact_max_seam_violation()` evaluates in CGAL::Gmpq.
 
+#include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/Status.h>
 
 #include <CGAL/Surface_mesh.h>
@@ -418,15 +419,14 @@ Status make_orbifold_tutte_uv(Surface_mesh<Point_3>& sm, CornerUVMap corner_uv,
     return INVALID_INPUT;
   }
 
-  // --- seam-mesh vertex UVs -> corner map. The UV of a seam-mesh vertex is stored on its canonical
-  // halfedge, which may be any halfedge of the wedge (or a border halfedge, see CGAL_CONVENTIONS);
-  // so read through target() of the face's own halfedge, never through `h` itself.
+  // --- seam-mesh vertex UVs -> corner map (the public conversion of Seam_mesh_uv.h, in place:
+  // the orbifold solve stored each seam-mesh vertex's UV on its canonical halfedge only)
+  Seamless_snapping::seam_mesh_uv_to_corner_uv(mesh, scratch.uv, scratch.uv);
   std::vector<std::pair<SM_halfedge, UV> > staged;
   staged.reserve(sm.number_of_halfedges());
   for(SM_halfedge h : sm.halfedges()) {
     if(sm.is_border(h)) continue;
-    const seam_vertex sv = target(seam_halfedge(h, false), mesh);
-    const Orbifold_point_2 p = get(scratch.uv, static_cast<SM_halfedge>(sv.hd));
+    const Orbifold_point_2 p = get(scratch.uv, h);
     const double u = CGAL::to_double(p.x()), v = CGAL::to_double(p.y());
     if(!std::isfinite(u) || !std::isfinite(v)) {
       message = "the orbifold solve produced a non-finite UV"; return INVALID_INPUT;
