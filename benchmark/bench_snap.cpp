@@ -2,18 +2,29 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
 // Times are wall clock in ms, the minimum over N runs (default 3). Lengths are relative to the UV
 // bounding-box diagonal. Not part of the test run.
+//
+// --connections: instead, the stress study of Table 3 / Fig. 2: per model, 0, 10, 20, 50 and 100 random
+// connection constraints (Eq. 6) between pairs of cones (shortest edge paths, random component; seed
+// fixed per model and count, so the table is reproducible) are added; per count: the size of the node
+// system, the maximum |entry| of its IRREF C^ (Table 3), the IRREF time (Fig. 2, minimum over N runs),
+// and whether the result is exact: SUCCESS (whose final check evaluates every row, connection rows
+// included, in exact arithmetic), is_exactly_seamless(), and every connection re-checked by an
+// independent exact (Gmpq) unfolding along its path (test/Seamless_snapping/connection_test_utils.h).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+
+#include "../test/Seamless_snapping/connection_test_utils.h"
 
 #include <algorithm>
 #include <chrono>
@@ -31,12 +42,71 @@ typedef Mesh::Property_map<Mesh::Halfedge_index, K::Point_2> UV_map;   // uv[h] 
 namespace SS = CGAL::Seamless_snapping;
 namespace fs = std::filesystem;
 
+// Table 3 / Fig. 2 of the paper: random connection constraints between cones, per model
+static int connection_study(const std::vector<fs::path>& files, int repeat)
+{
+  namespace CT = connection_test;
+  const std::size_t counts[] = {0, 10, 20, 50, 100};
+  std::printf("%-36s %7s %6s | %5s %7s %9s %10s %9s %6s %10s\n", "model", "#F", "#cones", "#conn", "#nodes",
+              "node sys", "max|C^|", "IRREF ms", "exact", "max du/d");
+  int failures = 0;
+  for(const fs::path& p : files) {
+    const bool weld = p.string().find("directional") != std::string::npos;
+    Mesh input;
+    UV_map uv_in = input.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    std::string msg;
+    if(SS::IO::read_OBJ_with_corner_uvs(p.string(), input, uv_in, msg, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+      std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str());
+      ++failures;
+      continue;
+    }
+    const std::vector<CT::vertex_descriptor> cones = CT::find_cones(input, uv_in);
+    if(cones.size() < 2) {
+      std::printf("%-36s %7zu %6zu | fewer than 2 cones, skipped\n", p.filename().string().c_str(),
+                  std::size_t(input.number_of_faces()), cones.size());
+      continue;
+    }
+    for(std::size_t n : counts) {
+      const std::vector<CT::Constraint> cc = CT::random_cone_connections(input, cones, n, unsigned(1000 + n));
+      SS::Snap_report best;
+      bool exact = true;
+      for(int r = 0; r < repeat; ++r) {
+        Mesh m = input;
+        UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+        SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv, SS::parameters::connection_constraints(std::cref(cc)));
+        if(r == 0) {
+          exact = rep.status == SS::SUCCESS && SS::is_exactly_seamless(m, uv);
+          for(std::size_t j = 0; exact && j < cc.size(); ++j) exact = CT::exact_connection_holds(m, uv, uv_in, cc[j]).holds;
+          if(rep.status != SS::SUCCESS)
+            std::printf("%-36s %zu connections: %s: %s\n", p.filename().string().c_str(), n, SS::status_name(rep.status),
+                        rep.message.c_str());
+        }
+        if(r == 0 || rep.irref_ms < best.irref_ms) best = rep;
+      }
+      if(!exact) ++failures;
+      char sys[32];
+      std::snprintf(sys, sizeof(sys), "%zux%zu", best.system_rows, best.system_columns);
+      std::printf("%-36s %7zu %6zu | %5zu %7zu %9s %10s %9.3f %6s %10.3g\n", p.filename().string().c_str(),
+                  std::size_t(input.number_of_faces()), cones.size(), n, best.nodes, sys, best.max_abs_coefficient.c_str(),
+                  best.irref_ms, exact ? "yes" : "NO", best.max_change);
+    }
+  }
+  std::printf("\ncolumns: #conn = random connection constraints between pairs of cones (Table 3); node sys = rows x\n"
+              "columns of the reduced system C; max|C^| = largest |entry| of its IRREF; IRREF ms = initialize() of\n"
+              "Exact_constraint_projection (minimum over the runs; Fig. 2 plots it against #nodes); exact = SUCCESS,\n"
+              "is_exactly_seamless() and every connection re-checked by an independent Gmpq unfolding; max du/d = largest\n"
+              "change relative to the UV diagonal (the constraints are not in the input, so it is as large as their violation).\n");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   int repeat = 3;
+  bool connections = false;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) { repeat = (std::max)(1, std::atoi(argv[++i])); continue; }
+    if(std::strcmp(argv[i], "--connections") == 0) { connections = true; continue; }
     inputs.emplace_back(argv[i]);
   }
   if(inputs.empty()) {
@@ -57,6 +127,7 @@ int main(int argc, char** argv)
     }
   }
   std::sort(files.begin(), files.end());
+  if(connections) return connection_study(files, repeat);
 
   std::printf("%-36s %7s %6s %6s %6s | %8s %8s %8s %8s %8s %8s | %9s %6s %9s %6s | %9s %9s %9s | %7s | %9s\n",
               "model", "#F", "#cut", "#nodes", "#branch", "extract", "reduce", "IRREF", "evaluate", "propag.", "total",

@@ -11,6 +11,8 @@
 //                                          Triangle (120 degree seams) is refused
 //   snap: failing inputs                   NaN UV, empty mesh, Triangle orbifold: status, map bit-identical
 //   snap: node system vs exact optimum     CGAL QP solver (Gmpzf) on the node system of small real meshes
+//   flip repair: synthetic                 a sliver next to a cut that snapping inverts is repaired, still exact
+//   flip repair: data meshes               flips input / after snap / after repair per file; exact, never worse
 //
 // Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
 // parts whose data is missing are skipped with a message.
@@ -166,9 +168,10 @@ static void test_data_meshes(std::vector<File_result>& results)
       const double change = max_corner_change(m, uv, uv_in, r.uv_diagonal);
       if(change != r.max_change) std::fprintf(stderr, "change %.17g report %.17g\n", change, r.max_change);
       assert(change == r.max_change);
-      // corners of vertices away from seams and border are untouched, bit for bit
+      // corners of vertices away from seams and border are untouched, bit for bit (unless the flip
+      // repair moved free vertices; what it may move is checked in `flip repair: data meshes`)
       for(halfedge_descriptor h : m.halfedges())
-        if(!m.is_border(h) && !constrained[m.target(h).idx()]) assert(get(uv, h) == get(uv_in, h));
+        if(!m.is_border(h) && !constrained[m.target(h).idx()]) assert(get(uv, h) == get(uv_in, h) || r.repair_moves > 0);
       if(cube) assert(uv_bits(m, uv) == bits_in);
       // deterministic
       {
@@ -632,6 +635,145 @@ static void test_node_system_vs_qp()
   if(done > 0) assert(done >= 2);
 }
 
+// ---------------------------------------------------------------------------------------------
+// flip repair (Sec. 5.4)
+// ---------------------------------------------------------------------------------------------
+// number of faces with negative UV orientation (exact predicate)
+static std::size_t negative_faces(const Mesh& m, UV_map uv)
+{
+  std::size_t n = 0;
+  for(Mesh::Face_index f : m.faces()) {
+    halfedge_descriptor h = m.halfedge(f);
+    if(CGAL::orientation(get(uv, h), get(uv, m.next(h)), get(uv, m.prev(h))) == CGAL::NEGATIVE) ++n;
+  }
+  return n;
+}
+
+// vertices of the faces with negative UV orientation
+static std::vector<char> vertices_of_flipped_faces(const Mesh& m, UV_map uv)
+{
+  std::vector<char> out(m.number_of_vertices(), 0);
+  for(Mesh::Face_index f : m.faces()) {
+    halfedge_descriptor h = m.halfedge(f);
+    if(CGAL::orientation(get(uv, h), get(uv, m.next(h)), get(uv, m.prev(h))) != CGAL::NEGATIVE) continue;
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) out[m.target(g).idx()] = 1;
+  }
+  return out;
+}
+
+// An 8 x 8 grid cut along the row y = 4 (k = 1, as in `cut meeting the boundary`), with UVs that
+// are exact binary fractions, so that the only violated constraint is at the inner cut vertex
+// w = (4, 4): its corners below the cut are offset by (0, d). Snapping moves one side of w by d
+// (the side is not known in advance), in the frame of the faces below: down to y_w, or up to
+// y_w + d. Two free vertices make a sliver with w for either case: v = (4, 3) below at y_w + d - e
+// and v' = (4, 5) above at y_w + e (e = d / 4). Without repair, snapping flips 2 triangles; with
+// repair, a free vertex moves into its 1-ring kernel, and the result is still exact.
+static void test_flip_repair_synthetic()
+{
+  Mesh m;
+  const int n = 8;
+  const double d = std::ldexp(1., -30), e = d / 4;
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      vertex_descriptor a = vs[j * (n + 1) + i], b = vs[j * (n + 1) + i + 1], c = vs[(j + 1) * (n + 1) + i + 1], dd = vs[(j + 1) * (n + 1) + i];
+      m.add_face(a, b, dd); m.add_face(b, c, dd);
+    }
+  const vertex_descriptor w = vs[4 * (n + 1) + 4], v_below = vs[3 * (n + 1) + 4], v_above = vs[5 * (n + 1) + 4];
+  UV_map uv = uv_of(m);
+  for(halfedge_descriptor h : m.halfedges()) {
+    if(m.is_border(h)) continue;
+    double cy = 0;
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) cy += m.point(m.target(g)).y() / 3;
+    const bool above = cy > n / 2;
+    const Point_3& p = m.point(m.target(h));
+    double x = p.x() / n, y = p.y() / n;
+    if(m.target(h) == v_below) y = 0.5 + d - e;
+    if(m.target(h) == v_above) y = 0.5 + e;
+    if(m.target(h) == w && !above) y += d;
+    if(above) put(uv, h, Point_2(-y + 3.25, x + 0.5));   // R(x, y) + t
+    else      put(uv, h, Point_2(x, y));
+  }
+  assert(!SS::is_exactly_seamless(m, uv));
+  assert(negative_faces(m, uv) == 0);
+
+  Mesh m0 = m, m1 = m;
+  UV_map uv0 = uv_of(m0), uv1 = uv_of(m1);
+  SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::repair_flips(false));
+  SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv1);
+  assert(r0.status == SS::SUCCESS && r1.status == SS::SUCCESS);
+  assert(r0.cut_branches == 1);
+  // without repair: snapping inverted the slivers on one side of the cut
+  assert(r0.flips_before == 0 && r0.flips_after == 2 && r0.flips_after_repair == 2 && r0.flips_unrepaired == 2);
+  assert(r0.repair_moves == 0);
+  assert(negative_faces(m0, uv0) == 2);
+  assert(SS::is_exactly_seamless(m0, uv0));
+  // with repair: the same snap, then one move; no flip left, still exact, no larger change
+  assert(r1.flips_before == 0 && r1.flips_after == 2 && r1.flips_after_repair == 0 && r1.flips_unrepaired == 0);
+  assert(r1.repair_moves >= 1);
+  assert(negative_faces(m1, uv1) == 0);
+  assert(SS::is_exactly_seamless(m1, uv1));
+  assert(r1.max_change <= r0.max_change);
+  assert(r1.to_json().find("\"flips_after_repair\": 0") != std::string::npos);
+  // only corners of the flipped triangles' vertices differ between the two results
+  const std::vector<char> near_flip = vertices_of_flipped_faces(m0, uv0);
+  for(halfedge_descriptor h : m1.halfedges())
+    if(!m1.is_border(h) && get(uv0, h) != get(uv1, h)) assert(near_flip[m1.target(h).idx()]);
+  std::printf("flip repair: synthetic: OK (flips %zu -> %zu -> %zu, %zu move(s), max change %.3g vs %.3g without repair)\n",
+              r1.flips_before, r1.flips_after, r1.flips_after_repair, r1.repair_moves, r1.max_change, r0.max_change);
+}
+
+// Every data mesh, with and without repair: the snap itself is the same, the repair never adds a
+// flip nor increases the change, the result is exact, and only vertices of triangles that were
+// flipped after snapping move.
+static void test_flip_repair_data()
+{
+  const fs::path dir(SS_SHARED_DATA_DIR);
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
+    std::cout << "flip repair: data meshes: SKIPPED (no shared data directory '" << dir.string() << "')\n";
+    return;
+  }
+  std::vector<fs::path> files;
+  for(const auto& entry : fs::recursive_directory_iterator(dir))
+    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  std::size_t introduced = 0, unrepaired = 0;
+  for(const fs::path& p : files) {
+    const std::string name = fs::relative(p, dir).string();
+    Mesh input;
+    const bool ok = load_obj(p, input);
+    assert(ok);
+    Mesh m0 = input, m1 = input;
+    UV_map uv0 = uv_of(m0), uv1 = uv_of(m1);
+    const SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::repair_flips(false));
+    const SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv1);
+    assert(r0.status == SS::SUCCESS && r1.status == SS::SUCCESS);
+    assert(SS::is_exactly_seamless(m1, uv1));
+    assert(r1.flips_before == r0.flips_before && r1.flips_after == r0.flips_after);
+    assert(r0.flips_after_repair == r0.flips_after);
+    assert(r1.flips_after_repair <= r1.flips_after);
+    assert(r1.flips_unrepaired <= r0.flips_unrepaired);
+    assert(negative_faces(m1, uv1) == r1.flips_after_repair);
+    assert(negative_faces(m0, uv0) == r0.flips_after);
+    assert(r1.max_change <= r0.max_change);
+    assert((r1.repair_moves == 0) == (uv_bits(m1, uv1) == uv_bits(m0, uv0)));
+    // a moved corner belongs to a vertex of a triangle that is flipped after snapping
+    const std::vector<char> near_flip = vertices_of_flipped_faces(m0, uv0);
+    for(halfedge_descriptor h : m1.halfedges())
+      if(!m1.is_border(h) && get(uv0, h) != get(uv1, h)) assert(near_flip[m1.target(h).idx()]);
+    introduced += r0.flips_unrepaired;
+    unrepaired += r1.flips_unrepaired;
+    std::printf("flip repair: %-48s flips input %4zu  after snap %4zu (introduced %3zu)  after repair %4zu (introduced left %3zu)"
+                "  moves %3zu  max change %.3g  repair %.1f ms\n",
+                name.c_str(), r1.flips_before, r1.flips_after, r0.flips_unrepaired, r1.flips_after_repair, r1.flips_unrepaired,
+                r1.repair_moves, r1.max_change, r1.repair_ms);
+    if(r1.flips_unrepaired > 0) std::printf("  %s\n", r1.message.c_str());
+  }
+  std::printf("flip repair: data meshes: OK (%zu flips introduced by snapping, %zu left after repair)\n", introduced, unrepaired);
+}
+
 int main()
 {
   auto t0 = std::chrono::steady_clock::now();
@@ -645,6 +787,8 @@ int main()
   test_failing_inputs();
   test_orbifolds();
   test_node_system_vs_qp();
+  test_flip_repair_synthetic();
+  test_flip_repair_data();
   std::printf("test_snap: all checks passed (%.1f s)\n", ms_since(t0) / 1000);
   return EXIT_SUCCESS;
 }

@@ -57,12 +57,16 @@ struct Snap_report
   double max_change = 0;               ///< max |u - ū| over all UV coordinates, relative
   double mean_change = 0;              ///< mean |u - ū| over the coordinates of constrained sectors, relative
   std::size_t flips_before = 0;        ///< UV triangles with negative orientation in the input (exact test)
-  std::size_t flips_after = 0;         ///< the same after snapping
+  std::size_t flips_after = 0;         ///< the same after snapping, before the flip repair
+  std::size_t flips_after_repair = 0;  ///< the same after the flip repair (Sec. 5.4; = `flips_after` without repair)
+  std::size_t flips_unrepaired = 0;    ///< triangles flipped by snapping (not in the input) that are still flipped at the end
+  std::size_t repair_moves = 0;        ///< accepted flip-repair moves (each moves one vertex, with its partner across a cut)
   /// @}
 
   /// \name Timings (milliseconds, wall clock)
   /// @{
   double extract_ms = 0, reduce_ms = 0, irref_ms = 0, evaluate_ms = 0, propagate_ms = 0, verify_ms = 0, total_ms = 0;
+  double repair_ms = 0;                ///< flip repair
   /// @}
 
   /// returns the report as one JSON object (numbers with 17 significant digits).
@@ -90,8 +94,11 @@ struct Snap_report
     num("uv_diagonal", uv_diagonal); num("max_input_violation", max_input_violation);
     num("max_change", max_change); num("mean_change", mean_change);
     num("flips_before", double(flips_before)); num("flips_after", double(flips_after));
+    num("flips_after_repair", double(flips_after_repair)); num("flips_unrepaired", double(flips_unrepaired));
+    num("repair_moves", double(repair_moves));
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
+    num("repair_ms", repair_ms);
     o << "  \"total_ms\": " << total_ms << "\n}\n";
     return o.str();
   }

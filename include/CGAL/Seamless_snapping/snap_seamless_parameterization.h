@@ -10,6 +10,7 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_SNAP_SEAMLESS_PARAMETERIZATION_H
 #define CGAL_SEAMLESS_SNAPPING_SNAP_SEAMLESS_PARAMETERIZATION_H
 
+#include <CGAL/Seamless_snapping/Connection_constraint.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
@@ -131,6 +132,36 @@ namespace Seamless_snapping {
  *     \cgalParamDefault{`true`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::use_reduced_system()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{repair_flips}
+ *     \cgalParamDescription{whether UV triangles that snapping turned negatively oriented are repaired (Sec. 5.4):
+ *                           one vertex of the triangle is moved into the kernel of its 1-ring, together with its
+ *                           partner sector across a cut (by the rotated displacement, on the grid F_delta) or only
+ *                           along its aligned axis, so that every constraint still holds exactly; node sectors stay
+ *                           fixed. Each move is accepted only if exact orientation tests show that no triangle of
+ *                           the 1-ring gets flipped or degenerate and the flip count drops. Every moved coordinate
+ *                           stays within the largest change made by snapping of its input value, so `max_change`
+ *                           does not grow. Flips already present in the input are tried as well.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::repair_flips()`. The report gives the
+ *                     flips before, after snapping and after repair, and the introduced ones left unrepaired.}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{connection_constraints}
+ *     \cgalParamDescription{connection constraints (Eq. 6): the two end vertices of each path lie on one isocurve of
+ *                           the given UV coordinate, after transport along the path's face strip; a closed path is a
+ *                           cycle constraint (Eq. 8): the isocurve through its vertex closes up. See
+ *                           `Connection_constraint` for the face strip, the convention and the checks (an invalid path
+ *                           gives `INVALID_INPUT`). One row per constraint joins the system; in the reduced system
+ *                           (Sec. 5.3) the path endpoints become nodes and the translations of Eq. (7) at crossed cut
+ *                           edges are rewritten in node variables with the cumulative equations (Eq. 9). The input
+ *                           need not satisfy these constraints approximately, but the change then is as large as
+ *                           their violation.}
+ *     \cgalParamType{a range (e.g. `std::vector`) of
+ *                    `CGAL::Seamless_snapping::Connection_constraint<boost::graph_traits<TriangleMesh>::%halfedge_descriptor>`}
+ *     \cgalParamDefault{no connection or cycle constraints}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::connection_constraints()`; wrap a large range
+ *                     in `std::cref()` to avoid a copy}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
  *     \cgalParamType{Boolean}
@@ -141,7 +172,8 @@ namespace Seamless_snapping {
  * \return a `Snap_report`. Its status is
  *   - `SUCCESS`: the map now is exactly seamless (checked in rational arithmetic), or already was;
  *   - `INVALID_INPUT`: no face, a face that is not a triangle, a NaN or infinite UV, corners of one sector
- *     with different UVs, an align edge without direction;
+ *     with different UVs, an align edge without direction, an invalid connection or cycle path (the message
+ *     names the constraint and the halfedge);
  *   - `NOT_QUARTER_TURN_SEAMLESS`: a transition is not a rotation by a multiple of 90 degrees (the message names the
  *     edge by its vertex indices and gives the angle);
  *   - `RANGE_EXCEEDED`, `SAFE_DOT_FAILED`, `INFEASIBLE`: the exact projection or the propagation failed
@@ -152,7 +184,8 @@ namespace Seamless_snapping {
  *
  * \warning The result consists of doubles and satisfies the constraints exactly, but it is not the
  * closest such point (Sec. 4.2): free variables keep their (rounded) values and implied ones absorb
- * the change. Small triangles near the seams may flip; the report counts flips before and after.
+ * the change. Small triangles near the seams may flip; they are repaired locally when possible
+ * (`repair_flips`), and the report counts flips in the input, after snapping and after repair.
  *
  * \sa `is_exactly_seamless()`, `Exact_constraint_projection`
  */
@@ -163,6 +196,7 @@ Snap_report snap_seamless_parameterization(TriangleMesh& tm, HalfedgeUVMap uv,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
   using CGAL::parameters::is_default_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::edge_descriptor edge_descriptor;
@@ -194,7 +228,11 @@ Snap_report snap_seamless_parameterization(TriangleMesh& tm, HalfedgeUVMap uv,
   options.use_reduced_system = choose_parameter(get_parameter(np, snap_np::use_reduced_system), defaults.use_reduced_system);
   options.alignment_tolerance = choose_parameter(get_parameter(np, snap_np::alignment_tolerance), defaults.alignment_tolerance);
   options.rotation_tolerance = choose_parameter(get_parameter(np, snap_np::rotation_tolerance), defaults.rotation_tolerance);
+  options.repair_flips = choose_parameter(get_parameter(np, snap_np::repair_flips), defaults.repair_flips);
   options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
+  // connection and cycle constraints, in the halfedge numbering of the pipeline
+  internal::connection_paths_from_parameter(tm, get_parameter_reference(np, snap_np::connection_constraints),
+                                            options.connections);
 
   return internal::snap_pipeline(tm, uv,
                                  [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,

@@ -25,6 +25,8 @@ enum use_reduced_system_t{ use_reduced_system };// bool: node system of Sec. 5.3
 enum alignment_tolerance_t{ alignment_tolerance };// double: max angle (degrees) for "axis-parallel"
 enum rotation_tolerance_t{ rotation_tolerance };// double: max angle (degrees) between a transition and k*90 degrees
 enum weld_vertices_t     { weld_vertices };     // bool, OBJ reading: merge vertices with bit-identical positions
+enum connection_constraints_t{ connection_constraints };// range of Connection_constraint: Eq. (6), and Eq. (8) for closed paths
+enum repair_flips_t      { repair_flips };      // bool: repair UV flips introduced by snapping (Sec. 5.4, default true)
 } // namespace snap_np
 
 namespace parameters {
@@ -54,6 +56,8 @@ CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(use_reduced_system_t,  use_reduced_sy
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(alignment_tolerance_t, alignment_tolerance)
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(rotation_tolerance_t,  rotation_tolerance)
 CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(weld_vertices_t,       weld_vertices)
+CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(connection_constraints_t, connection_constraints)
+CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(repair_flips_t,        repair_flips)
 #undef CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER
 
 // combine(np1, np2): every entry of np2 stacked on top of np1 (CGAL >= 5.6 offers the member

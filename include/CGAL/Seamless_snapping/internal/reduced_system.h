@@ -17,7 +17,8 @@
 //   edge and an align edge; vertices with align edges of different components; vertices whose
 //   align-degree is 1 or > 2; vertices of cut-degree 2 where the rotation k changes along the chain
 //   or whose two sides do not continue (sector structure), and the smallest vertex of a closed
-//   cut (or align) loop without any node.
+//   cut (or align) loop without any node; the endpoints of connection and cycle constraints
+//   (their rows are reduced to node variables in connection_constraints.h).
 // Branches: the chains of cut (resp. align) edges between nodes; k (resp. the aligned component)
 //   is constant along a branch.
 //
@@ -67,8 +68,11 @@ struct Reduced_system
   Constraint_rows node_rows;                  // the node system C over sector variables (b = 0)
 };
 
+// `forced_nodes[v]` (optional): further node vertices, the endpoints of connection and cycle
+// constraints (node rule 2 of Sec. 5.3).
 inline void build_reduced_system(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                 const Align_edges& al, Reduced_system& rs)
+                                 const Align_edges& al, Reduced_system& rs,
+                                 const std::vector<char>& forced_nodes = std::vector<char>())
 {
   rs = Reduced_system();
   const int nv = cm.n_vertices;
@@ -97,7 +101,8 @@ inline void build_reduced_system(const Corner_mesh& cm, const Seam_topology& st,
   for(int v = 0; v < nv; ++v) {
     const int cd = st.cut_degree[v], ad = align_degree[v];
     bool node = st.is_cone[v] || cd == 1 || cd > 2 || (cm.vertex_on_border[v] && cd > 0) ||
-                (cd > 0 && ad > 0) || align_mask[v] == 3 || (ad > 0 && ad != 2);
+                (cd > 0 && ad > 0) || align_mask[v] == 3 || (ad > 0 && ad != 2) ||
+                (!forced_nodes.empty() && forced_nodes[v]);
     if(!node && cd == 2) {
       // v inside a chain h_in -> h_out: same k, and the + and - sides continue through v
       const int h_out = cut_halfedges_out[v][1];
@@ -149,7 +154,8 @@ inline void build_reduced_system(const Corner_mesh& cm, const Seam_topology& st,
   }
 
   for(int v = 0; v < nv; ++v)
-    if(rs.is_node[v] && (st.cut_degree[v] > 0 || align_degree[v] > 0)) ++rs.n_nodes;
+    if(rs.is_node[v] && (st.cut_degree[v] > 0 || align_degree[v] > 0 || (!forced_nodes.empty() && forced_nodes[v])))
+      ++rs.n_nodes;
 }
 
 } // namespace internal

@@ -15,6 +15,7 @@
 //   2. reduce    nodes, branches, node system C                                    (Sec. 5.3)
 //   3. project   C through Exact_constraint_projection on the common grid F_delta  (Sec. 4)
 //   4. propagate non-node sectors along the branches                               (Sec. 5.3.1)
+//  4b. repair    flips by moving one sector group into its 1-ring kernel, exactly  (Sec. 5.4)
 //   5. verify    every row of the full system, exactly (Gmpq), before anything is written
 //   6. write     the corners of the changed sectors into the caller's map
 // With use_reduced_system = false, steps 2 and 4 are skipped and the full system goes to step 3.
@@ -22,14 +23,18 @@
 // One grid for everything: K = e(max |ubar|) + 1 over all constrained sector coordinates
 // (Fixed_point_grid::from_max_abs(max, 1)), passed to the projection via
 // Projection_options::delta_exponent, so that node values and propagated values are multiples of
-// the same quantum 2^(K-52).
+// the same quantum 2^(K-52). If steps 3-4 leave (-delta, delta) (RANGE_EXCEEDED), they are redone
+// from ubar with K + 4, up to 5 times (large changes come from connection/cycle constraints that the
+// input violates by much; transition constraints alone never need it).
 
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/connection_constraints.h>
 #include <CGAL/Seamless_snapping/internal/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/flip_repair.h>
 #include <CGAL/Seamless_snapping/internal/propagation.h>
 #include <CGAL/Seamless_snapping/internal/reduced_system.h>
 #include <CGAL/Seamless_snapping/internal/rotation_fit.h>
@@ -61,6 +66,8 @@ struct Snap_options
   bool verbose = false;
   double alignment_tolerance = 1e-3;   // degrees
   double rotation_tolerance = 1;       // degrees
+  bool repair_flips = true;            // Sec. 5.4: move one vertex of a flipped triangle into its 1-ring kernel
+  std::vector<Connection_path> connections;  // connection (Eq. 6) and cycle (Eq. 8) constraints
 };
 
 // number of UV triangles with negative orientation (exact predicate), corner values from `x`
@@ -191,6 +198,11 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
 
   Constraint_rows full;
   build_full_system(cm, st, rot, al, full);
+  // connection and cycle constraints (Eq. 6-8): one row each, appended to the full system
+  const std::size_t first_connection_row = full.size();
+  std::vector<char> path_endpoints;
+  s = add_connection_rows(cm, st, rot, opt.connections, full, path_endpoints, message);
+  if(s != SUCCESS) return finish(s, message);
   report.constraints = full.size();
   const std::size_t n_vars = 2 * std::size_t(st.n_sectors);
   std::vector<int> constrained_vars, column_of;
@@ -206,14 +218,16 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
   report.max_input_violation = relative(max_abs_residual(full, ubar));
   double max_abs = 0;
   for(int v : constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
-  const Fixed_point_grid grid = Fixed_point_grid::from_max_abs(max_abs, 1);
+  Fixed_point_grid grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (below)
   report.flips_before = count_flips(cm, st, ubar);
   report.extract_ms = ms_since(t);
 
   // 2. reduction ---------------------------------------------------------------------------------
   t = Clock::now();
   Reduced_system rs;
-  build_reduced_system(cm, st, rot, al, rs);
+  build_reduced_system(cm, st, rot, al, rs, path_endpoints);
+  s = add_reduced_connection_rows(cm, st, full, first_connection_row, rs, message);
+  if(s != SUCCESS) return finish(s, "node system: " + message);
   report.nodes = rs.n_nodes;
   report.cut_branches = rs.cut_branches.size();
   report.align_branches = rs.align_branches.size();
@@ -228,28 +242,62 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
     used_variables(system, n_vars, system_vars, system_column_of);
     report.system_rows = system.size();
     report.system_columns = system_vars.size();
-  } else if(opt.use_reduced_system) {
-    // 3. node system -----------------------------------------------------------------------------
-    s = project_rows(rs.node_rows, grid, x, report, message);
-    if(s != SUCCESS) return finish(s, "node system: " + message);
-    // node sectors used by the propagation but absent from C (e.g. the node of a closed loop,
-    // whose node rows cancel): free, rounded to the grid
-    std::vector<int> node_vars, node_column_of;
-    used_variables(rs.node_rows, n_vars, node_vars, node_column_of);
-    auto fix_free_node_var = [&](int var) {
-      if(node_column_of[var] < 0) { x[var] = grid.round(ubar[var]); node_column_of[var] = -2; }
-    };
-    for(const Cut_branch_plan& p : rs.cut_branches)
-      for(int c = 0; c < 2; ++c) { fix_free_node_var(2 * p.u0_plus + c); fix_free_node_var(2 * p.u0_minus + c); }
-    for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
-    // 4. propagation ---------------------------------------------------------------------------
-    t = Clock::now();
-    s = propagate_along_branches(rs, ubar, grid, x, message);
-    report.propagate_ms = ms_since(t);
-    if(s != SUCCESS) return finish(s, "propagation: " + message);
   } else {
-    s = project_rows(full, grid, x, report, message);
-    if(s != SUCCESS) return finish(s, "full system: " + message);
+    // Steps 3 and 4 on the grid; RANGE_EXCEEDED is retried on a grid with 4 more bits of range (up to
+    // 5 times): constraints that the input violates by a lot (connection and cycle constraints added
+    // after the fact) move implied values further than the margin of Sec. 4.3 allows.
+    std::string prefix;
+    for(int retry = 0;; ++retry) {
+      x = ubar;
+      if(opt.use_reduced_system) {
+        // 3. node system ---------------------------------------------------------------------------
+        prefix = "node system: ";
+        s = project_rows(rs.node_rows, grid, x, report, message);
+        if(s == SUCCESS) {
+          // node sectors used by the propagation but absent from C (e.g. the node of a closed loop,
+          // whose node rows cancel): free, rounded to the grid
+          std::vector<int> node_vars, node_column_of;
+          used_variables(rs.node_rows, n_vars, node_vars, node_column_of);
+          auto fix_free_node_var = [&](int var) {
+            if(node_column_of[var] < 0) { x[var] = grid.round(ubar[var]); node_column_of[var] = -2; }
+          };
+          for(const Cut_branch_plan& p : rs.cut_branches)
+            for(int c = 0; c < 2; ++c) { fix_free_node_var(2 * p.u0_plus + c); fix_free_node_var(2 * p.u0_minus + c); }
+          for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
+          // 4. propagation -------------------------------------------------------------------------
+          prefix = "propagation: ";
+          t = Clock::now();
+          s = propagate_along_branches(rs, ubar, grid, x, message);
+          report.propagate_ms = ms_since(t);
+        }
+      } else {
+        prefix = "full system: ";
+        s = project_rows(full, grid, x, report, message);
+      }
+      if(s != RANGE_EXCEEDED || retry == 5) break;
+      grid = Fixed_point_grid(grid.K + 4);
+    }
+    if(s != SUCCESS) return finish(s, prefix + message);
+  }
+
+  // 4b. flip repair (Sec. 5.4): moves that keep every row exact, each checked exactly -----------
+  report.flips_after = count_flips(cm, st, x);
+  report.flips_after_repair = report.flips_after;
+  std::string flip_note;
+  if(opt.repair_flips && !already_exact) {
+    t = Clock::now();
+    const Flip_repair_result fr = repair_flips(cm, st, rs, full, grid, ubar, x);
+    report.repair_ms = ms_since(t);
+    report.flips_after_repair = fr.flips_after;
+    report.flips_unrepaired = fr.unrepaired;
+    report.repair_moves = fr.moves;
+    if(fr.unrepaired > 0) {
+      flip_note = "; " + std::to_string(fr.unrepaired) + " flip(s) introduced by snapping could not be repaired locally (faces";
+      for(std::size_t i = 0; i < fr.unrepaired_faces.size() && i < 10; ++i) flip_note += " " + std::to_string(fr.unrepaired_faces[i]);
+      flip_note += fr.unrepaired_faces.size() > 10 ? " ...)" : ")";
+    }
+  } else {
+    report.flips_unrepaired = count_introduced_flips(cm, st, ubar, x);
   }
 
   // 5. exact verification of every row of the full system ------------------------------------
@@ -259,7 +307,8 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
   if(bad >= 0) {
     const int e = full.edge[std::size_t(bad)];
     return finish(EXACTNESS_CHECK_FAILED,
-                  "row " + std::to_string(bad) + " of the full system (edge " + vertex_pair_name(cm, cm.edge_halfedge[e]) +
+                  "row " + std::to_string(bad) + " of the full system (" +
+                  (e >= 0 ? "edge " + vertex_pair_name(cm, cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e))) +
                   ") does not hold exactly after snapping; nothing was written");
   }
 
@@ -269,7 +318,6 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
   for(int v : constrained_vars) sum_change += std::fabs(x[v] - ubar[v]);
   report.max_change = relative(max_change);
   report.mean_change = constrained_vars.empty() ? 0. : relative(sum_change / double(constrained_vars.size()));
-  report.flips_after = count_flips(cm, st, x);
 
   // 6. write the corners of the changed sectors (and border halfedges that mirror them) --------
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
@@ -300,6 +348,7 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
              " align edges, " + std::to_string(report.constraints) + " constraints, " +
              (opt.use_reduced_system ? std::to_string(report.nodes) + " nodes, " : std::string()) +
              "system " + std::to_string(report.system_rows) + " x " + std::to_string(report.system_columns) + ")";
+  summary += flip_note;
   return finish(SUCCESS, summary);
 }
 

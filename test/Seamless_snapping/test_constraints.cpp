@@ -1,0 +1,458 @@
+// Tests of connection constraints (Eq. 6) and cycle constraints (Eq. 8) in
+// snap_seamless_parameterization() (Sec. 5.1, 5.3 "Connections and Cycles").
+//
+//   connections: random cone pairs on every data mesh   10 connection constraints between random pairs of
+//                                                        cones (shortest edge paths), reduced and unreduced:
+//                                                        SUCCESS, exactly seamless, and every constraint holds
+//                                                        exactly, checked by an independent exact unfolding;
+//                                                        snapping the result again changes nothing (unless
+//                                                        it has zero-length cut edges, whose k is arbitrary)
+//                                                        5 more from vertices inside cut branches to random
+//                                                        vertices (endpoints become nodes)
+//   connections: orbifold Tutte inputs                   the same on Square orbifold maps of CGAL meshes
+//   cycles: torus loops and cone links                   closed paths: the cut loops of the torus (the
+//                                                        isocurves close instead of spiralling) and the link
+//                                                        of a cone (holonomy), reduced and unreduced
+//   connections: invalid paths                           empty, disconnected, foreign halfedge, bad component:
+//                                                        INVALID_INPUT naming the constraint, map bit-identical
+//
+// The independent exact check (Gmpq unfolding along the face strip) is in connection_test_utils.h.
+//
+// Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
+// parts whose data is missing are skipped with a message.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Seamless_snapping/Connection_constraint.h>
+#include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
+
+#include <CGAL/Gmpq.h>
+
+#include "connection_test_utils.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#ifndef SS_SHARED_DATA_DIR
+#define SS_SHARED_DATA_DIR ""
+#endif
+#ifndef SS_CGAL_DATA_DIR
+#define SS_CGAL_DATA_DIR ""
+#endif
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel    K;
+typedef K::Point_2                                             Point_2;
+typedef K::Point_3                                             Point_3;
+typedef CGAL::Surface_mesh<Point_3>                            Mesh;
+typedef Mesh::Vertex_index                                     vertex_descriptor;
+typedef Mesh::Halfedge_index                                   halfedge_descriptor;
+typedef Mesh::Edge_index                                       edge_descriptor;
+typedef Mesh::Property_map<halfedge_descriptor, Point_2>       UV_map;   // uv[h] = UV of target(h) in face(h)
+
+namespace SS = CGAL::Seamless_snapping;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace fs = std::filesystem;
+typedef SS::Connection_constraint<halfedge_descriptor>         Constraint;
+using namespace connection_test;
+
+static UV_map uv_of(Mesh& m)
+{
+  auto r = m.property_map<halfedge_descriptor, Point_2>("h:uv");
+  if(r.second) return r.first;
+  return m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+}
+
+static std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
+{
+  std::vector<std::uint64_t> out;
+  for(halfedge_descriptor h : m.halfedges()) {
+    double x = get(uv, h).x(), y = get(uv, h).y();
+    std::uint64_t a, b;
+    std::memcpy(&a, &x, 8); std::memcpy(&b, &y, 8);
+    out.push_back(a); out.push_back(b);
+  }
+  return out;
+}
+
+static bool load_obj(const fs::path& p, Mesh& m)
+{
+  const bool weld = p.string().find("directional") != std::string::npos;   // Directional writes cut meshes
+  std::string msg;
+  SS::Status s = SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv_of(m), msg, SS::parameters::weld_vertices(weld));
+  if(s != SS::SUCCESS) std::cerr << "cannot read " << p << ": " << msg << std::endl;
+  return s == SS::SUCCESS;
+}
+
+static std::size_t g_checked = 0, g_ambiguous = 0;
+
+// snaps a copy of `input` with the constraints, reduced or not; checks everything; returns the report
+static SS::Snap_report snap_and_check(const Mesh& input, const std::vector<Constraint>& cc, bool reduced,
+                                      const std::string& name, Mesh* out = nullptr)
+{
+  Mesh m = input;
+  UV_map uv = uv_of(m);
+  Mesh m_in = input;
+  UV_map uv_in = uv_of(m_in);
+  SS::Snap_report r = SS::snap_seamless_parameterization(
+      m, uv, SS::parameters::use_reduced_system(reduced, SS::parameters::connection_constraints(std::cref(cc))));
+  if(r.status != SS::SUCCESS)
+    std::cerr << name << (reduced ? " reduced: " : " unreduced: ") << SS::status_name(r.status) << ": " << r.message << std::endl;
+  assert(r.status == SS::SUCCESS);
+  assert(SS::is_exactly_seamless(m, uv));
+  for(std::size_t j = 0; j < cc.size(); ++j) {
+    const Check_result cr = exact_connection_holds(m, uv, uv_in, cc[j]);
+    if(!cr.holds) std::cerr << name << ": constraint " << j << " does not hold exactly" << std::endl;
+    assert(cr.holds);
+    ++g_checked;
+    g_ambiguous += cr.ambiguous;
+  }
+  // idempotent: the result satisfies everything, a second snap changes nothing. Not checked when the
+  // result has zero-length cut edges: their transition holds for every rotation k, so the rotations
+  // fitted on the result may differ from those fitted on the input (and then the connection rows
+  // that cross them, or the arc's rotation check, differ as well).
+  std::size_t zero_length_cuts = 0;
+  for(edge_descriptor e : m.edges()) {
+    const halfedge_descriptor h = m.halfedge(e), o = m.opposite(h);
+    if(m.is_border(e)) continue;
+    const bool cut = get(uv, h) != get(uv, m.prev(o)) || get(uv, m.prev(h)) != get(uv, o);
+    if(cut && get(uv, h) == get(uv, m.prev(h)) && get(uv, o) == get(uv, m.prev(o))) ++zero_length_cuts;
+  }
+  if(zero_length_cuts == 0) {
+    Mesh m2 = m;
+    UV_map uv2 = uv_of(m2);
+    SS::Snap_report r2 = SS::snap_seamless_parameterization(
+        m2, uv2, SS::parameters::use_reduced_system(reduced, SS::parameters::connection_constraints(std::cref(cc))));
+    if(r2.status != SS::SUCCESS) std::cerr << name << ": second snap: " << r2.message << std::endl;
+    assert(r2.status == SS::SUCCESS);
+    assert(uv_bits(m2, uv2) == uv_bits(m, uv));
+  } else {
+    std::printf("  NOTE %s: %zu zero-length cut edges in the result, idempotence not checked\n", name.c_str(), zero_length_cuts);
+  }
+  if(out != nullptr) *out = m;
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// connections: random cone pairs on every data mesh
+// ---------------------------------------------------------------------------------------------
+static void test_data_meshes()
+{
+  const fs::path dir(SS_SHARED_DATA_DIR);
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
+    std::cout << "connections: random cone pairs on every data mesh: SKIPPED (no shared data directory '"
+              << dir.string() << "')\n";
+    return;
+  }
+  std::vector<fs::path> files;
+  for(const auto& entry : fs::recursive_directory_iterator(dir))
+    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  assert(!files.empty());
+  unsigned seed = 2019;
+  for(const fs::path& p : files) {
+    const std::string name = fs::relative(p, dir).string();
+    Mesh input;
+    assert(load_obj(p, input));
+    UV_map uv_in = uv_of(input);
+    const std::vector<vertex_descriptor> cones = find_cones(input, uv_in);
+    if(cones.size() < 2) { std::cout << "connections: " << name << ": fewer than 2 cones, skipped\n"; continue; }
+    const std::vector<Constraint> cc = random_cone_connections(input, cones, 10, seed++);
+    std::size_t path_edges = 0;
+    for(const Constraint& c : cc) path_edges += c.path.size();
+    const SS::Snap_report r = snap_and_check(input, cc, true, name);
+    std::printf("connections: %-48s cones %4zu paths %5zu edges  node system %4zux%-4zu max|C^| %-3s IRREF %.2f ms"
+                "  max change %.3g  total %.1f ms\n",
+                name.c_str(), cones.size(), path_edges, r.system_rows, r.system_columns, r.max_abs_coefficient.c_str(),
+                r.irref_ms, r.max_change, r.total_ms);
+    const SS::Snap_report ru = snap_and_check(input, cc, false, name);
+    std::printf("             %-48s unreduced: system %5zux%-5zu max|C^| %-3s %.1f ms\n", "", ru.system_rows,
+                ru.system_columns, ru.max_abs_coefficient.c_str(), ru.total_ms);
+    // endpoints inside cut branches and away from seams (node rule 2 of Sec. 5.3 makes them nodes)
+    std::vector<vertex_descriptor> inner;
+    for(vertex_descriptor v : input.vertices()) {
+      int cut_degree = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_source(v, input)) {
+        const halfedge_descriptor o = input.opposite(h);
+        if(!input.is_border(input.edge(h)) &&
+           (get(uv_in, h) != get(uv_in, input.prev(o)) || get(uv_in, input.prev(h)) != get(uv_in, o))) ++cut_degree;
+      }
+      if(cut_degree == 2 && !input.is_border(v)) inner.push_back(v);
+    }
+    if(!inner.empty()) {
+      std::mt19937 rng(seed++);
+      std::vector<Constraint> cv;
+      while(cv.size() < 5) {
+        const vertex_descriptor a = inner[rng() % inner.size()];
+        const vertex_descriptor b(Mesh::size_type(rng() % input.number_of_vertices()));
+        if(a == b) continue;
+        cv.emplace_back(shortest_path(input, a, b), int(rng() % 2));
+      }
+      const SS::Snap_report rv = snap_and_check(input, cv, true, name);
+      const SS::Snap_report rvu = snap_and_check(input, cv, false, name);
+      std::printf("             %-48s 5 constraints from cut-branch vertices: nodes %zu (with the cone pairs: %zu), max change %.3g / %.3g\n",
+                  "", rv.nodes, r.nodes, rv.max_change, rvu.max_change);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// connections: orbifold Tutte inputs
+// ---------------------------------------------------------------------------------------------
+static void test_orbifolds()
+{
+  const fs::path dir(SS_CGAL_DATA_DIR);
+  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::is_directory(dir)) {
+    std::cout << "connections: orbifold Tutte inputs: SKIPPED (no '" << dir.string() << "')\n";
+    return;
+  }
+  for(const char* name : {"bear.off", "cow.off"}) {
+    const fs::path p = dir / name;
+    Mesh base;
+    if(!fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), base) || base.is_empty()) {
+      std::cout << "connections: orbifold: " << name << " SKIPPED (cannot read " << p.string() << ")\n";
+      continue;
+    }
+    for(SMP::Orbifold_type type : {SMP::Square, SMP::Parallelogram}) {
+      Mesh m = base;
+      UV_map uv = uv_of(m);
+      const auto cones = SS::internal::farthest_point_cones(m, SS::internal::orbifold_cone_count(type));
+      std::string msg;
+      if(SS::internal::make_orbifold_tutte_uv(m, uv, cones, type, msg) != SS::SUCCESS) {
+        std::cout << "connections: orbifold: " << name << ": input generation failed, SKIPPED: " << msg << "\n";
+        continue;
+      }
+      // every pair of the orbifold's cones, both components
+      std::vector<Constraint> cc;
+      for(std::size_t i = 0; i < cones.size(); ++i)
+        for(std::size_t j = i + 1; j < cones.size(); ++j)
+          cc.emplace_back(shortest_path(m, cones[i], cones[j]), int((i + j) % 2));
+      for(int reduced = 1; reduced >= 0; --reduced) {
+        const SS::Snap_report r = snap_and_check(m, cc, reduced == 1, name);
+        std::printf("connections: orbifold %-9s %-13s %s: %zu constraints, system %zux%zu max|C^| %s, max change %.3g\n",
+                    name, SS::internal::orbifold_type_name(type), reduced ? "reduced  " : "unreduced", cc.size(),
+                    r.system_rows, r.system_columns, r.max_abs_coefficient.c_str(), r.max_change);
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// cycles: torus loops and cone links
+// ---------------------------------------------------------------------------------------------
+
+// a closed path along cut edges (exact UV test) that starts with the cut halfedge `first` and
+// follows at each vertex the first unused cut edge; empty if `first` is not cut or the walk gets stuck
+static std::vector<halfedge_descriptor> cut_loop(const Mesh& m, UV_map uv, halfedge_descriptor first)
+{
+  auto is_cut = [&](halfedge_descriptor h) {
+    const halfedge_descriptor o = m.opposite(h);
+    return !m.is_border(m.edge(h)) && (get(uv, h) != get(uv, m.prev(o)) || get(uv, m.prev(h)) != get(uv, o));
+  };
+  std::vector<halfedge_descriptor> path;
+  if(!is_cut(first)) return path;
+  std::vector<char> used(m.number_of_edges(), 0);
+  const vertex_descriptor v0 = m.source(first);
+  halfedge_descriptor next = first;
+  for(;;) {
+    used[m.edge(next).idx()] = 1;
+    path.push_back(next);
+    const vertex_descriptor v = m.target(next);
+    if(v == v0) return path;
+    next = Mesh::null_halfedge();
+    for(halfedge_descriptor h : CGAL::halfedges_around_source(v, m))
+      if(is_cut(h) && !used[m.edge(h).idx()]) { next = h; break; }
+    if(next == Mesh::null_halfedge()) return std::vector<halfedge_descriptor>();
+  }
+}
+
+// the link of vertex c, counter-clockwise, as a closed path of halfedges
+static std::vector<halfedge_descriptor> link_loop(const Mesh& m, vertex_descriptor c)
+{
+  std::vector<halfedge_descriptor> path;
+  for(halfedge_descriptor h : CGAL::halfedges_around_target(c, m)) path.push_back(m.prev(h));   // edge opposite to c
+  std::reverse(path.begin(), path.end());
+  // make it connected: order by following targets
+  std::vector<halfedge_descriptor> ordered(1, path.front());
+  while(ordered.size() < path.size()) {
+    for(halfedge_descriptor h : path)
+      if(m.source(h) == m.target(ordered.back())) { ordered.push_back(h); break; }
+  }
+  return ordered;
+}
+
+static void test_cycles()
+{
+  const fs::path dir(SS_SHARED_DATA_DIR);
+  const fs::path torus = dir / "directional" / "torus-hex-param.obj";
+  const fs::path knight = dir / "directional" / "decimated-knight-param.obj";
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(torus) || !fs::exists(knight)) {
+    std::cout << "cycles: SKIPPED (no '" << torus.string() << "' or '" << knight.string() << "')\n";
+    return;
+  }
+  {
+    Mesh input;
+    assert(load_obj(torus, input));
+    UV_map uv_in = uv_of(input);
+    // cut loops through a vertex where cut edges meet (cut-degree > 2): the torus' generators;
+    // each constrains the component along which its period is (nearly) zero in the input
+    std::vector<Constraint> cc;
+    for(vertex_descriptor v : input.vertices()) {
+      int cut_degree = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_source(v, input)) {
+        const halfedge_descriptor o = input.opposite(h);
+        if(get(uv_in, h) != get(uv_in, input.prev(o)) || get(uv_in, input.prev(h)) != get(uv_in, o)) ++cut_degree;
+      }
+      if(cut_degree <= 2) continue;
+      for(halfedge_descriptor first : CGAL::halfedges_around_source(v, input)) {
+        const std::vector<halfedge_descriptor> loop = cut_loop(input, uv_in, first);
+        if(loop.empty()) continue;
+        std::vector<std::size_t> edges, other;
+        for(halfedge_descriptor h : loop) edges.push_back(std::size_t(input.edge(h).idx()));
+        std::sort(edges.begin(), edges.end());
+        bool duplicate = false;
+        for(const Constraint& c : cc) {
+          other.clear();
+          for(halfedge_descriptor h : c.path) other.push_back(std::size_t(input.edge(h).idx()));
+          std::sort(other.begin(), other.end());
+          duplicate = duplicate || other == edges;
+        }
+        if(duplicate) continue;
+        Constraint c(loop, 0);
+        double viol[2];
+        input_violation(input, uv_in, c, viol);
+        c.component = viol[0] <= viol[1] ? 0 : 1;
+        std::printf("cycles: torus cut loop %zu: %zu edges, input period (%.3g, %.3g) in absolute value, constrained component %d\n",
+                    cc.size(), loop.size(), viol[0], viol[1], c.component);
+        cc.push_back(c);
+      }
+      if(!cc.empty()) break;
+    }
+    assert(!cc.empty());
+    assert(input.source(cc.front().path.front()) == input.target(cc.front().path.back()));   // closed
+    for(int reduced = 1; reduced >= 0; --reduced) {
+      const SS::Snap_report r = snap_and_check(input, cc, reduced == 1, "torus");
+      std::printf("cycles: torus, %zu cut loops %s: system %zux%zu max|C^| %s, max change %.3g\n", cc.size(),
+                  reduced ? "reduced  " : "unreduced", r.system_rows, r.system_columns, r.max_abs_coefficient.c_str(),
+                  r.max_change);
+    }
+  }
+  {
+    Mesh input;
+    assert(load_obj(knight, input));
+    UV_map uv_in = uv_of(input);
+    const std::vector<vertex_descriptor> cones = find_cones(input, uv_in);
+    assert(cones.size() >= 3);
+    std::vector<Constraint> cc;
+    for(std::size_t i = 0; i < 3; ++i) {
+      const std::vector<halfedge_descriptor> loop = link_loop(input, cones[i * cones.size() / 3]);
+      assert(input.source(loop.front()) == input.target(loop.back()));
+      cc.emplace_back(loop, int(i % 2));
+    }
+    // and a connection that goes to a cone and back along the same edges: a loop around that cone
+    std::vector<halfedge_descriptor> there = shortest_path(input, cones[0], cones[1]);
+    std::vector<halfedge_descriptor> back_and_forth = there;
+    for(auto it = there.rbegin(); it != there.rend(); ++it) back_and_forth.push_back(input.opposite(*it));
+    cc.emplace_back(back_and_forth, 0);
+    for(int reduced = 1; reduced >= 0; --reduced) {
+      const SS::Snap_report r = snap_and_check(input, cc, reduced == 1, "knight");
+      std::printf("cycles: knight, 3 cone links + 1 back-and-forth loop %s: system %zux%zu max|C^| %s, max change %.3g\n",
+                  reduced ? "reduced  " : "unreduced", r.system_rows, r.system_columns, r.max_abs_coefficient.c_str(),
+                  r.max_change);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// connections: invalid paths
+// ---------------------------------------------------------------------------------------------
+static void test_invalid()
+{
+  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / "directional" / "decimated-knight-param.obj";
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
+    std::cout << "connections: invalid paths: SKIPPED (no '" << p.string() << "')\n";
+    return;
+  }
+  Mesh m;
+  assert(load_obj(p, m));
+  UV_map uv = uv_of(m);
+  const std::vector<vertex_descriptor> cones = find_cones(m, uv);
+  const std::vector<halfedge_descriptor> good = shortest_path(m, cones[0], cones[1]);
+  assert(good.size() >= 3);
+  const std::vector<std::uint64_t> before = uv_bits(m, uv);
+
+  std::vector<std::pair<std::string, Constraint> > cases;
+  cases.emplace_back("the path is empty", Constraint(std::vector<halfedge_descriptor>(), 0));
+  {
+    std::vector<halfedge_descriptor> gap = good;
+    gap.erase(gap.begin() + 1);
+    cases.emplace_back("not connected", Constraint(gap, 1));
+  }
+  {
+    std::vector<halfedge_descriptor> reversed_edge = good;
+    reversed_edge[1] = m.opposite(reversed_edge[1]);
+    cases.emplace_back("not connected", Constraint(reversed_edge, 0));
+  }
+  {
+    std::vector<halfedge_descriptor> foreign = good;
+    foreign.push_back(halfedge_descriptor(Mesh::size_type(10 * m.number_of_halfedges())));
+    cases.emplace_back("is not a halfedge of the mesh", Constraint(foreign, 0));
+  }
+  cases.emplace_back("neither 0 (u) nor 1 (v)", Constraint(good, 2));
+  cases.emplace_back("neither 0 (u) nor 1 (v)", Constraint(good, -1));
+
+  for(int reduced = 1; reduced >= 0; --reduced) {
+    for(const auto& c : cases) {
+      // a valid constraint first, so that the message must name constraint 1
+      std::vector<Constraint> cc(1, Constraint(good, 0));
+      cc.push_back(c.second);
+      SS::Snap_report r = SS::snap_seamless_parameterization(
+          m, uv, SS::parameters::use_reduced_system(reduced == 1, SS::parameters::connection_constraints(cc)));
+      if(r.status != SS::INVALID_INPUT || r.message.find("connection constraint 1") == std::string::npos ||
+         r.message.find(c.first) == std::string::npos)
+        std::cerr << "expected INVALID_INPUT with '" << c.first << "', got " << SS::status_name(r.status) << ": " << r.message << "\n";
+      assert(r.status == SS::INVALID_INPUT);
+      assert(r.message.find("connection constraint 1") != std::string::npos);
+      assert(r.message.find(c.first) != std::string::npos);
+      assert(uv_bits(m, uv) == before);
+      if(reduced) std::cout << "connections: invalid: " << r.message << "\n";
+    }
+  }
+  // an empty range is no constraint at all: the same result as without the parameter
+  {
+    Mesh a = m, b = m;
+    UV_map uva = uv_of(a), uvb = uv_of(b);
+    const std::vector<Constraint> none;
+    assert(SS::snap_seamless_parameterization(a, uva).status == SS::SUCCESS);
+    assert(SS::snap_seamless_parameterization(b, uvb, SS::parameters::connection_constraints(none)).status == SS::SUCCESS);
+    assert(uv_bits(a, uva) == uv_bits(b, uvb));
+  }
+  std::cout << "connections: invalid paths: OK\n";
+}
+
+int main()
+{
+  test_invalid();
+  test_cycles();
+  test_data_meshes();
+  test_orbifolds();
+  std::cout << "exact constraint checks: " << g_checked << " (" << g_ambiguous
+            << " crossings of zero-length cut edges, rotation taken from the input)\n";
+  std::cout << "test_constraints: all tests passed" << std::endl;
+  return EXIT_SUCCESS;
+}
