@@ -178,6 +178,8 @@ private:
       for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) m_col_rows[pos[in.e[q].col]++] = std::uint32_t(i);
     m_fill_head.assign(m_n_cols, NIL);
     m_fill_pool.clear();
+    m_seen.assign(sys.n_rows, 0);
+    m_stamp = 0;
     // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
     m_cursor = 0;
@@ -273,14 +275,19 @@ private:
   void eliminate_column(std::uint32_t k, std::uint32_t c, std::size_t& eliminations)
   {
     m_targets.clear();
-    auto consider = [&](std::uint32_t i) {
-      if(i != k && m_rows[i].state != ZERO && find(m_rows[i], c) != nullptr) m_targets.push_back(i);
-    };
-    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) consider(m_col_rows[q]);
-    for(std::uint32_t f = m_fill_head[c]; f != NIL; f = m_fill_pool[f].second) consider(m_fill_pool[f].first);
-    if(m_targets.size() > 1) {
-      std::sort(m_targets.begin(), m_targets.end());
-      m_targets.erase(std::unique(m_targets.begin(), m_targets.end()), m_targets.end());
+    // m_count[c] is exact, so the scan of the (possibly stale, possibly repeated) occurrence lists
+    // stops as soon as all m_count[c] - 1 other rows are found; a stamp per row removes repeats.
+    const std::size_t wanted = m_count[c] - 1;
+    if(wanted > 0) {
+      ++m_stamp;
+      auto consider = [&](std::uint32_t i) {
+        if(i == k || m_seen[i] == m_stamp) return;
+        if(m_rows[i].state != ZERO && find(m_rows[i], c) != nullptr) { m_seen[i] = m_stamp; m_targets.push_back(i); }
+      };
+      for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1] && m_targets.size() < wanted; ++q) consider(m_col_rows[q]);
+      for(std::uint32_t f = m_fill_head[c]; f != NIL && m_targets.size() < wanted; f = m_fill_pool[f].second) consider(m_fill_pool[f].first);
+      CGAL_assertion(m_targets.size() == wanted);
+      if(m_targets.size() > 1) std::sort(m_targets.begin(), m_targets.end());   // deterministic order
     }
     const Row& pr = m_rows[k];
     const Int p = *find(pr, c);
@@ -404,6 +411,8 @@ private:
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;
+  std::vector<std::uint32_t> m_seen;                   // per row: stamp of the last column scan that took it
+  std::uint32_t m_stamp = 0;
   std::vector<Entry> m_merged;
   std::vector<std::unique_ptr<Entry[]> > m_arena;      // see store()
   std::size_t m_arena_used = 0;
