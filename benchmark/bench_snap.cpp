@@ -2,7 +2,7 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] [--connections] <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] [--subdivide L] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
@@ -27,6 +27,7 @@
 #include "../test/Seamless_snapping/connection_test_utils.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -41,6 +42,69 @@ typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
 typedef Mesh::Property_map<Mesh::Halfedge_index, K::Point_2> UV_map;   // uv[h] = UV of target(h) in face(h)
 namespace SS = CGAL::Seamless_snapping;
 namespace fs = std::filesystem;
+
+// --subdivide L: instead, the scaling check: each model is refined L times by 1-to-4 midpoint
+// subdivision (corner UVs of a new corner = midpoint of its face's corner UVs, so every seam stays
+// approximately seamless and the cones stay), and the snap time (reduced pipeline, no IO) is printed
+// per level with the time per 1000 faces: linear growth keeps that column flat.
+
+// One level of 1-to-4 midpoint subdivision of a triangle mesh with a corner UV map.
+static void subdivide(const Mesh& in, UV_map uv_in, Mesh& out, UV_map& uv_out)
+{
+  out.clear();
+  uv_out = out.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+  std::vector<Mesh::Vertex_index> vmap(in.number_of_vertices());
+  for(Mesh::Vertex_index v : in.vertices()) vmap[v] = out.add_vertex(in.point(v));
+  std::vector<Mesh::Vertex_index> emap(in.number_of_edges());
+  for(Mesh::Edge_index e : in.edges()) {
+    const Mesh::Halfedge_index h = in.halfedge(e);
+    emap[e] = out.add_vertex(CGAL::midpoint(in.point(in.source(h)), in.point(in.target(h))));
+  }
+  for(Mesh::Face_index f : in.faces()) {
+    const Mesh::Halfedge_index h0 = in.halfedge(f), h1 = in.next(h0), h2 = in.next(h1);
+    const Mesh::Vertex_index a = vmap[in.target(h0)], b = vmap[in.target(h1)], c = vmap[in.target(h2)];
+    const Mesh::Vertex_index mab = emap[in.edge(h1)], mbc = emap[in.edge(h2)], mca = emap[in.edge(h0)];
+    const K::Point_2 ua = get(uv_in, h0), ub = get(uv_in, h1), uc = get(uv_in, h2);
+    const K::Point_2 uab = CGAL::midpoint(ua, ub), ubc = CGAL::midpoint(ub, uc), uca = CGAL::midpoint(uc, ua);
+    const std::array<std::array<std::pair<Mesh::Vertex_index, K::Point_2>, 3>, 4> tris = {{
+      {{ {a, ua}, {mab, uab}, {mca, uca} }}, {{ {mab, uab}, {b, ub}, {mbc, ubc} }},
+      {{ {mca, uca}, {mbc, ubc}, {c, uc} }}, {{ {mab, uab}, {mbc, ubc}, {mca, uca} }} }};
+    for(const auto& t : tris) {
+      const Mesh::Face_index nf = out.add_face(t[0].first, t[1].first, t[2].first);
+      for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(out.halfedge(nf), out))
+        for(const auto& corner : t) if(out.target(h) == corner.first) put(uv_out, h, corner.second);
+    }
+  }
+}
+
+static int scaling_study(const std::vector<fs::path>& files, int levels, int repeat)
+{
+  std::printf("%-36s %5s %9s %9s %10s %9s  %s\n", "model", "level", "#F", "snap ms", "ms/1000F", "#cut", "status");
+  int failures = 0;
+  for(const fs::path& p : files) {
+    Mesh m;
+    UV_map uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    std::string msg;
+    const bool weld = p.string().find("directional") != std::string::npos;
+    if(SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+      std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str()); ++failures; continue;
+    }
+    for(int level = 0; level <= levels; ++level) {
+      if(level > 0) { Mesh next; UV_map uv_next; subdivide(m, uv, next, uv_next); m = std::move(next); uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first; }
+      double best = 0; SS::Snap_report rep;
+      for(int r = 0; r < repeat; ++r) {
+        Mesh c = m;
+        UV_map cuv = c.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+        rep = SS::snap_seamless_parameterization(c, cuv);
+        if(r == 0 || rep.total_ms < best) best = rep.total_ms;
+      }
+      if(rep.status != SS::SUCCESS) ++failures;
+      std::printf("%-36s %5d %9zu %9.2f %10.3f %9zu  %s\n", p.filename().string().c_str(), level, rep.faces, best,
+                  1000. * best / double(rep.faces), rep.cut_edges, SS::status_name(rep.status));
+    }
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
 
 // Table 3 / Fig. 2 of the paper: random connection constraints between cones, per model
 static int connection_study(const std::vector<fs::path>& files, int repeat)
@@ -103,10 +167,12 @@ int main(int argc, char** argv)
 {
   int repeat = 3;
   bool connections = false;
+  int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) { repeat = (std::max)(1, std::atoi(argv[++i])); continue; }
     if(std::strcmp(argv[i], "--connections") == 0) { connections = true; continue; }
+    if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
   if(inputs.empty()) {
@@ -128,6 +194,7 @@ int main(int argc, char** argv)
   }
   std::sort(files.begin(), files.end());
   if(connections) return connection_study(files, repeat);
+  if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
 
   std::printf("%-36s %7s %6s %6s %6s | %8s %8s %8s %8s %8s %8s | %9s %6s %9s %6s | %9s %9s %9s | %7s | %9s\n",
               "model", "#F", "#cut", "#nodes", "#branch", "extract", "reduce", "IRREF", "evaluate", "propag.", "total",
