@@ -49,55 +49,12 @@
 #include <string>
 #include <vector>
 
-#ifndef SS_SHARED_DATA_DIR
-#define SS_SHARED_DATA_DIR ""
-#endif
-#ifndef SS_CGAL_DATA_DIR
-#define SS_CGAL_DATA_DIR ""
-#endif
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel    K;
-typedef K::Point_2                                             Point_2;
-typedef K::Point_3                                             Point_3;
-typedef CGAL::Surface_mesh<Point_3>                            Mesh;
-typedef Mesh::Vertex_index                                     vertex_descriptor;
-typedef Mesh::Halfedge_index                                   halfedge_descriptor;
-typedef Mesh::Edge_index                                       edge_descriptor;
-typedef Mesh::Property_map<halfedge_descriptor, Point_2>       UV_map;   // uv[h] = UV of target(h) in face(h)
-
-namespace SS = CGAL::Seamless_snapping;
-namespace SMP = CGAL::Surface_mesh_parameterization;
-namespace fs = std::filesystem;
+#include "mesh_test_support.h"
 typedef SS::Connection_constraint<halfedge_descriptor>         Constraint;
 using namespace connection_test;
 
-static UV_map uv_of(Mesh& m)
-{
-  auto r = m.property_map<halfedge_descriptor, Point_2>("h:uv");
-  if(r.second) return r.first;
-  return m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
-}
 
-static std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
-{
-  std::vector<std::uint64_t> out;
-  for(halfedge_descriptor h : m.halfedges()) {
-    double x = get(uv, h).x(), y = get(uv, h).y();
-    std::uint64_t a, b;
-    std::memcpy(&a, &x, 8); std::memcpy(&b, &y, 8);
-    out.push_back(a); out.push_back(b);
-  }
-  return out;
-}
 
-static bool load_obj(const fs::path& p, Mesh& m)
-{
-  const bool weld = p.string().find("directional") != std::string::npos;   // Directional writes cut meshes
-  std::string msg;
-  SS::Status s = SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv_of(m), msg, SS::parameters::weld_vertices(weld));
-  if(s != SS::SUCCESS) std::cerr << "cannot read " << p << ": " << msg << std::endl;
-  return s == SS::SUCCESS;
-}
 
 static std::size_t g_checked = 0, g_ambiguous = 0;
 
