@@ -48,6 +48,14 @@ namespace fs = std::filesystem;
 // approximately seamless and the cones stay), and the snap time (reduced pipeline, no IO) is printed
 // per level with the time per 1000 faces: linear growth keeps that column flat.
 
+// Reads a model; files under a "directional" folder are cut meshes (Directional) and get welded.
+static SS::Status read_model(const fs::path& p, Mesh& m, UV_map& uv, std::string& msg)
+{
+  uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+  const bool weld = p.string().find("directional") != std::string::npos;
+  return SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld));
+}
+
 // One level of 1-to-4 midpoint subdivision of a triangle mesh with a corner UV map.
 static void subdivide(const Mesh& in, UV_map uv_in, Mesh& out, UV_map& uv_out)
 {
@@ -83,10 +91,9 @@ static int scaling_study(const std::vector<fs::path>& files, int levels, int rep
   int failures = 0;
   for(const fs::path& p : files) {
     Mesh m;
-    UV_map uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    UV_map uv;
     std::string msg;
-    const bool weld = p.string().find("directional") != std::string::npos;
-    if(SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+    if(read_model(p, m, uv, msg) != SS::SUCCESS) {
       std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str()); ++failures; continue;
     }
     for(int level = 0; level <= levels; ++level) {
@@ -115,11 +122,10 @@ static int connection_study(const std::vector<fs::path>& files, int repeat)
               "node sys", "max|C^|", "IRREF ms", "exact", "max du/d");
   int failures = 0;
   for(const fs::path& p : files) {
-    const bool weld = p.string().find("directional") != std::string::npos;
     Mesh input;
-    UV_map uv_in = input.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    UV_map uv_in;
     std::string msg;
-    if(SS::IO::read_OBJ_with_corner_uvs(p.string(), input, uv_in, msg, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+    if(read_model(p, input, uv_in, msg) != SS::SUCCESS) {
       std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str());
       ++failures;
       continue;
@@ -201,12 +207,11 @@ int main(int argc, char** argv)
               "unreduced", "ratio", "unr.proj", "ratio", "max Cx/d", "avg du/d", "max du/d", "flips", "read OBJ");
   int failures = 0;
   for(const fs::path& p : files) {
-    const bool weld = p.string().find("directional") != std::string::npos;
     Mesh input;
-    UV_map uv_in = input.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    UV_map uv_in;
     std::string msg;
     auto t0 = std::chrono::steady_clock::now();
-    SS::Status s = SS::IO::read_OBJ_with_corner_uvs(p.string(), input, uv_in, msg, SS::parameters::weld_vertices(weld));
+    SS::Status s = read_model(p, input, uv_in, msg);
     const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if(s != SS::SUCCESS) { std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str()); ++failures; continue; }
 
