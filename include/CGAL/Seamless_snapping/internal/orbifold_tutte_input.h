@@ -13,7 +13,7 @@
 // Test and example input: an *approximately* seamless corner UV map of a closed genus-0 surface,
 // made with CGAL's Orbifold Tutte embedding (Aigerman & Lipman 2015, CGAL Surface_mesh_parameterization).
 // The orbifold solve is a floating-point linear solve, so its seam transitions hold only up to
-// solver error (~1e-13..1e-12 relative): exactly what the snapping is meant to repair.
+// solver error (~1e-13..1e-12 relative), which is what the snapping is meant to repair.
 //
 //   Square        3 cones (90, 90, 180 degrees), seam transitions are +-90 degree rotations
 //   Parallelogram 4 cones (180 degrees each),   seam transitions are 180 degree rotations / translations
