@@ -13,8 +13,8 @@
 // (SS_test::exactly_satisfied, generators.h). No floating-point tolerance is used as evidence.
 //
 // Cases (one line of output each):
-//  1. seamless-like and random systems, up to 20000 rows, x̄ = a solution plus noise (1e-12, 1e-9, 1e-3):
-//     SUCCESS with every row holding in Gmpq, untouched variables bit-identical, statistics consistent
+//  1. seamless-like and random systems, up to 20000 rows, x̄ = a solution plus noise
+//     (of 1e-12, 1e-9, 1e-3): SUCCESS with every row holding in Gmpq, untouched variables bit-identical, statistics consistent
 //     (rank cross-checked mod p)
 //  2. adversarial doubling chain (coefficients 2^N): Gmpz for N >= 70, exact or a clear failure;
 //     force_multiprecision gives the identical x
