@@ -19,6 +19,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -79,6 +80,38 @@ static inline bool load_obj(const fs::path& p, Mesh& m)
   SS::Status s = SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv_of(m), msg, SS::parameters::weld_vertices(weld));
   if(s != SS::SUCCESS) std::cerr << "cannot read " << p << ": " << msg << std::endl;
   return s == SS::SUCCESS;
+}
+
+// reads the shared data file SS_SHARED_DATA_DIR/relative into m; when the shared data is missing,
+// prints "<what>: SKIPPED" and returns false (a file that exists must read, else the test fails)
+static inline bool load_shared_or_skip(const char* relative, const char* what, Mesh& m)
+{
+  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / relative;
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
+    std::cout << what << ": SKIPPED (no '" << p.string() << "')\n";
+    return false;
+  }
+  const bool ok = load_obj(p, m);
+  if(!ok) { std::cerr << what << ": cannot read " << p << std::endl; std::abort(); }
+  return true;
+}
+
+// an n x n grid of unit squares in the plane z = 0, two triangles per square: split along the
+// diagonal (i, j)-(i+1, j+1) when `main_diagonal`, else along (i+1, j)-(i, j+1). Returns the
+// vertices, vertex (i, j) at index j (n + 1) + i.
+static inline std::vector<vertex_descriptor> make_grid(Mesh& m, int n, bool main_diagonal)
+{
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const vertex_descriptor a = vs[j * (n + 1) + i], b = vs[j * (n + 1) + i + 1],
+                              c = vs[(j + 1) * (n + 1) + i + 1], d = vs[(j + 1) * (n + 1) + i];
+      if(main_diagonal) { m.add_face(a, b, c); m.add_face(a, c, d); }
+      else              { m.add_face(a, b, d); m.add_face(b, c, d); }
+    }
+  return vs;
 }
 
 #endif // CGAL_SEAMLESS_SNAPPING_TEST_MESH_TEST_SUPPORT_H

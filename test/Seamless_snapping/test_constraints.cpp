@@ -340,13 +340,8 @@ static void test_cycles()
 // ---------------------------------------------------------------------------------------------
 static void test_invalid()
 {
-  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / "directional" / "decimated-knight-param.obj";
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
-    std::cout << "connections: invalid paths: SKIPPED (no '" << p.string() << "')\n";
-    return;
-  }
   Mesh m;
-  assert(load_obj(p, m));
+  if(!load_shared_or_skip("directional/decimated-knight-param.obj", "connections: invalid paths", m)) return;
   UV_map uv = uv_of(m);
   const std::vector<vertex_descriptor> cones = find_cones(m, uv);
   const std::vector<halfedge_descriptor> good = shortest_path(m, cones[0], cones[1]);

@@ -159,14 +159,8 @@ static void test_data_meshes(std::vector<File_result>& results)
 // ---------------------------------------------------------------------------------------------
 static void test_scale_covariance()
 {
-  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / "directional" / "spherer-param.obj";
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
-    std::cout << "snap: scale covariance: SKIPPED (no " << p.string() << ")\n";
-    return;
-  }
   Mesh input;
-  bool ok = load_obj(p, input);
-  assert(ok);
+  if(!load_shared_or_skip("directional/spherer-param.obj", "snap: scale covariance", input)) return;
   Mesh m0 = input;
   SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv_of(m0));
   assert(r0.status == SS::SUCCESS);
@@ -191,14 +185,8 @@ static void test_scale_covariance()
 // ---------------------------------------------------------------------------------------------
 static void test_given_seams_and_rotations()
 {
-  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / "directional" / "horsers-param-full-seamless.obj";
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
-    std::cout << "snap: given seams and rotations: SKIPPED (no " << p.string() << ")\n";
-    return;
-  }
   Mesh input;
-  bool ok = load_obj(p, input);
-  assert(ok);
+  if(!load_shared_or_skip("directional/horsers-param-full-seamless.obj", "snap: given seams and rotations", input)) return;
   UV_map uv_in = uv_of(input);
   Mesh m0 = input;
   SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv_of(m0));
@@ -250,14 +238,7 @@ static void test_alignment()
   // an n x n grid of the unit square, UV = position, perturbed by 1e-12 (relative)
   Mesh m;
   const int n = 12;
-  std::vector<vertex_descriptor> vs;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      vertex_descriptor a = vs[j * (n + 1) + i], b = vs[j * (n + 1) + i + 1], c = vs[(j + 1) * (n + 1) + i + 1], d = vs[(j + 1) * (n + 1) + i];
-      m.add_face(a, b, c); m.add_face(a, c, d);
-    }
+  make_grid(m, n, true);
   UV_map uv = uv_of(m);
   auto noise = [](vertex_descriptor v, int c) { return 1e-12 * std::sin(12.9898 * double(v.idx()) + 78.233 * c); };
   for(halfedge_descriptor h : m.halfedges()) {
@@ -323,14 +304,7 @@ static void test_cut_and_boundary()
 {
   Mesh m;
   const int n = 10;
-  std::vector<vertex_descriptor> vs;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      vertex_descriptor a = vs[j * (n + 1) + i], b = vs[j * (n + 1) + i + 1], c = vs[(j + 1) * (n + 1) + i + 1], d = vs[(j + 1) * (n + 1) + i];
-      m.add_face(a, b, d); m.add_face(b, c, d);
-    }
+  make_grid(m, n, false);
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h)) continue;
@@ -374,14 +348,8 @@ static void test_cut_and_boundary()
 // default tolerance (1e-3 degrees) leaves them alone.
 static void test_alignment_tolerance()
 {
-  const fs::path p = fs::path(SS_SHARED_DATA_DIR) / "directional" / "lilium-param.obj";
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::exists(p)) {
-    std::cout << "snap: alignment tolerance: SKIPPED (no " << p.string() << ")\n";
-    return;
-  }
   Mesh input;
-  bool ok = load_obj(p, input);
-  assert(ok);
+  if(!load_shared_or_skip("directional/lilium-param.obj", "snap: alignment tolerance", input)) return;
   Mesh m0 = input, m1 = input;
   SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv_of(m0));
   SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv_of(m1), SS::parameters::alignment_tolerance(1.));
@@ -626,14 +594,7 @@ static void test_flip_repair_synthetic()
   Mesh m;
   const int n = 8;
   const double d = std::ldexp(1., -30), e = d / 4;
-  std::vector<vertex_descriptor> vs;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      vertex_descriptor a = vs[j * (n + 1) + i], b = vs[j * (n + 1) + i + 1], c = vs[(j + 1) * (n + 1) + i + 1], dd = vs[(j + 1) * (n + 1) + i];
-      m.add_face(a, b, dd); m.add_face(b, c, dd);
-    }
+  const std::vector<vertex_descriptor> vs = make_grid(m, n, false);
   const vertex_descriptor w = vs[4 * (n + 1) + 4], v_below = vs[3 * (n + 1) + 4], v_above = vs[5 * (n + 1) + 4];
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {
