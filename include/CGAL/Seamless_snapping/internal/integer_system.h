@@ -66,10 +66,8 @@ inline bool convert_integer(const CGAL::Gmpz& v, std::int64_t& out) { return to_
 template <typename T> bool convert_integer(const T& v, std::int64_t& out) { return to_int64(v, out); }
 template <typename T> bool convert_integer(const T& v, CGAL::Gmpz& out) { out = to_gmpz(v); return true; }
 
-struct Too_large {};   // a value does not fit int64: rebuild in Gmpz
-
 // Builds the canonical rows in Int, visiting the caller's entries twice (count, then place: a
-// counting sort by row in linear time, without an intermediate copy). Throws Too_large (int64
+// counting sort by row in linear time, without an intermediate copy). Throws Integer_overflow (int64
 // only) when a value or a sum of duplicates does not fit.
 template <typename Int, typename BRange, typename Visit>
 Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit& visit,
@@ -84,7 +82,7 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
   visit([&](std::size_t r, std::size_t c, const auto& v) {      // pass 1: count
     if(r >= n_rows || c >= n_cols) { if(!bad_index) { bad_index = true; bad_r = r; bad_c = c; } return; }
     Int iv;
-    if(!convert_integer(v, iv)) throw Too_large();
+    if(!convert_integer(v, iv)) throw Integer_overflow();
     if(!Ops::is_zero(iv)) ++out.ptr[r + 1];                      // explicit zeros are not entries
   });
   if(bad_index) {
@@ -121,7 +119,7 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
       if(!Ops::is_zero(v)) out.e[w++] = Entry{c, v};
     }
     Int bi;
-    if(!convert_integer(b[i], bi)) throw Too_large();
+    if(!convert_integer(b[i], bi)) throw Integer_overflow();
     Int g = Ops::abs(bi);
     for(std::size_t k = row_begin; k < w && !Ops::is_unit(g); ++k) g = Ops::gcd(g, out.e[k].val);
     if(!Ops::is_zero(g) && !Ops::is_unit(g)) {
@@ -157,11 +155,7 @@ Status build_integer_system(std::size_t n_rows, std::size_t n_cols, const BRange
   try {
     st = build_rows<std::int64_t>(n_rows, n_cols, b, visit, sys.rows64, message);
     sys.fits_int64 = true;
-  } catch(const Too_large&) {
-    sys.rows64.clear();
-    sys.fits_int64 = false;
-    st = build_rows<CGAL::Gmpz>(n_rows, n_cols, b, visit, sys.rowsz, message);
-  } catch(const Integer_overflow&) {
+  } catch(const Integer_overflow&) {            // a value or a sum of duplicates does not fit int64
     sys.rows64.clear();
     sys.fits_int64 = false;
     st = build_rows<CGAL::Gmpz>(n_rows, n_cols, b, visit, sys.rowsz, message);

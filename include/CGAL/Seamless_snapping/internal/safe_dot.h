@@ -135,14 +135,6 @@ Safe_dot_result safe_dot(const std::vector<std::pair<Int, double> >& terms, cons
   return SAFE_DOT_OK;
 }
 
-// Convenience form: true iff the sum was computed (SAFE_DOT_OK).
-template <typename Int>
-bool safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid, double& result)
-{
-  Safe_dot_workspace ws;
-  return safe_dot(terms, grid, result, ws) == SAFE_DOT_OK;
-}
-
 } // namespace internal
 } // namespace Seamless_snapping
 } // namespace CGAL
