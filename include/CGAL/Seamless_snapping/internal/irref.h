@@ -108,19 +108,33 @@ class Irref_eliminator
   typedef Integer_ops<Int> Ops;
   typedef Sparse_entry<Int> Entry;
   enum Row_state : unsigned char { ACTIVE = 0, PIVOT = 1, ZERO = 2 };
+  static constexpr bool FLAT = std::is_trivially_copyable<Entry>::value;   // int64: rows live in an arena
 
-  // A row's entries (sorted by column) live in the input array until the row is first modified,
-  // then in its own vector: unmodified rows cost no allocation.
-  struct Row
+  // Data layout. The elimination is bound by memory latency: on seamless systems a step touches
+  // one new row and a few new columns at random places. So the per-row and per-column state are
+  // each one small aligned record (one cache line fetch), and a column's first two occurrences are
+  // stored in its record, where the scan for the rows that hold it finds them.
+  //
+  // A row's entries (sorted by column) stay in the input array until the row is first modified;
+  // then they move to the arena (int64) or to the row's own vector (Gmpz).
+  struct alignas(32) Row
   {
     const Entry* data = nullptr;
     std::uint32_t size = 0;
-    std::uint32_t key = 0;         // queue key when last pushed
+    std::uint32_t stamp = 0;             // stamp of the last column scan that took this row
     std::uint32_t pivot_col = 0;
     Row_state state = ACTIVE;
-    std::vector<Entry> own;
+    unsigned char key = 0;               // queue key when last pushed
     Int b;
   };
+  // Rows holding a column: r0, r1, then a linked list in m_pool. Entries may be stale (the row
+  // lost the column by cancellation) or repeated (it got the column back); `count` is exact.
+  struct alignas(16) Column
+  {
+    std::uint32_t count = 0;             // rows (active or pivot) containing the column
+    std::uint32_t r0 = NIL, r1 = NIL, more = NIL;
+  };
+  struct Occurrence { std::uint32_t row, next; };
 
   static constexpr std::uint32_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
   static constexpr std::uint32_t NIL = std::uint32_t(-1);
@@ -129,8 +143,6 @@ public:
   Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
   {
     load(sys);
-    std::vector<std::uint32_t> order;           // pivot rows in the order chosen
-    order.reserve(std::min(m_rows.size(), m_n_cols));
     std::uint32_t k;
     while(pop(k)) {
       Row& row = m_rows[k];
@@ -148,9 +160,8 @@ public:
       eliminate_column(k, c, out.eliminations);
       m_rows[k].state = PIVOT;
       m_rows[k].pivot_col = c;
-      order.push_back(k);
     }
-    extract(sys, order, out);
+    extract(sys, out);
     return SUCCESS;
   }
 
@@ -161,25 +172,17 @@ private:
     const std::vector<std::size_t>& ptr = in.ptr;
     m_n_cols = sys.n_cols;
     m_rows.assign(sys.n_rows, Row());
+    if(!FLAT) m_own.assign(sys.n_rows, std::vector<Entry>());
+    m_cols.assign(m_n_cols, Column());
+    m_pool.clear();
+    m_stamp = 0;
     for(std::size_t i = 0; i < sys.n_rows; ++i) {
       Row& row = m_rows[i];
       row.data = in.e.data() + ptr[i];
       row.size = std::uint32_t(ptr[i + 1] - ptr[i]);
       row.b = in.b[i];
+      for(std::uint32_t q = 0; q < row.size; ++q) add_occurrence(row.data[q].col, std::uint32_t(i));
     }
-    // Column occurrences: compressed storage of the input, plus pooled lists for fill-in.
-    m_count.assign(m_n_cols, 0);
-    for(const Entry& x : in.e) ++m_count[x.col];
-    m_col_ptr.assign(m_n_cols + 1, 0);
-    for(std::size_t c = 0; c < m_n_cols; ++c) m_col_ptr[c + 1] = m_col_ptr[c] + m_count[c];
-    m_col_rows.resize(in.e.size());
-    std::vector<std::size_t> pos(m_col_ptr.begin(), m_col_ptr.end() - 1);
-    for(std::size_t i = 0; i < sys.n_rows; ++i)
-      for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) m_col_rows[pos[in.e[q].col]++] = std::uint32_t(i);
-    m_fill_head.assign(m_n_cols, NIL);
-    m_fill_pool.clear();
-    m_seen.assign(sys.n_rows, 0);
-    m_stamp = 0;
     // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
     m_cursor = 0;
@@ -214,15 +217,24 @@ private:
     return m_converted;
   }
 
-  static std::uint32_t key(const Row& row)
+  void add_occurrence(std::uint32_t c, std::uint32_t i)
+  {
+    Column& col = m_cols[c];
+    ++col.count;
+    if(col.r0 == NIL) col.r0 = i;
+    else if(col.r1 == NIL) col.r1 = i;
+    else { m_pool.push_back(Occurrence{i, col.more}); col.more = std::uint32_t(m_pool.size() - 1); }
+  }
+
+  static unsigned char key(const Row& row)
   {
     bool unit = false;
     for(std::uint32_t q = 0; q < row.size; ++q) if(Ops::is_unit(row.data[q].val)) { unit = true; break; }
-    return (unit ? 0 : NNZ_BUCKETS) + std::min(row.size, NNZ_BUCKETS - 1);
+    return (unsigned char)((unit ? 0 : NNZ_BUCKETS) + std::min(row.size, NNZ_BUCKETS - 1));
   }
   void push(std::uint32_t i)
   {
-    const std::uint32_t k = key(m_rows[i]);
+    const unsigned char k = key(m_rows[i]);
     m_rows[i].key = k;
     m_buckets[k].push_back(i);
     if(k < m_cursor) m_cursor = k;
@@ -253,7 +265,8 @@ private:
         if(Ops::less(ab, a)) continue;
       }
       const std::uint32_t c = row.data[q].col, cb = row.data[best].col;
-      if(m_count[c] < m_count[cb] || (m_count[c] == m_count[cb] && c < cb)) best = q;
+      const std::uint32_t n = m_cols[c].count, nb = m_cols[cb].count;
+      if(n < nb || (n == nb && c < cb)) best = q;
     }
     return row.data[best].col;
   }
@@ -265,27 +278,25 @@ private:
     return (e != row.data + row.size && e->col == c) ? &e->val : nullptr;
   }
 
-  void add_fill(std::uint32_t c, std::uint32_t i)
-  {
-    m_fill_pool.push_back(std::make_pair(i, m_fill_head[c]));
-    m_fill_head[c] = std::uint32_t(m_fill_pool.size() - 1);
-  }
-
   // Eliminates column c from every row but k (fraction-free, then divided by the row gcd).
   void eliminate_column(std::uint32_t k, std::uint32_t c, std::size_t& eliminations)
   {
+    Column& col = m_cols[c];
     m_targets.clear();
-    // m_count[c] is exact, so the scan of the (possibly stale, possibly repeated) occurrence lists
-    // stops as soon as all m_count[c] - 1 other rows are found; a stamp per row removes repeats.
-    const std::size_t wanted = m_count[c] - 1;
+    // The count is exact, so the scan of the (possibly stale, possibly repeated) occurrences stops
+    // as soon as all count - 1 other rows are found; a stamp per row removes repeats.
+    const std::size_t wanted = col.count - 1;
     if(wanted > 0) {
-      ++m_stamp;
+      const std::uint32_t stamp = ++m_stamp;
+      m_rows[k].stamp = stamp;
       auto consider = [&](std::uint32_t i) {
-        if(i == k || m_seen[i] == m_stamp) return;
-        if(m_rows[i].state != ZERO && find(m_rows[i], c) != nullptr) { m_seen[i] = m_stamp; m_targets.push_back(i); }
+        Row& r = m_rows[i];
+        if(r.stamp == stamp) return;
+        if(r.state != ZERO && find(r, c) != nullptr) { r.stamp = stamp; m_targets.push_back(i); }
       };
-      for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1] && m_targets.size() < wanted; ++q) consider(m_col_rows[q]);
-      for(std::uint32_t f = m_fill_head[c]; f != NIL && m_targets.size() < wanted; f = m_fill_pool[f].second) consider(m_fill_pool[f].first);
+      if(col.r0 != NIL) consider(col.r0);
+      if(col.r1 != NIL && m_targets.size() < wanted) consider(col.r1);
+      for(std::uint32_t f = col.more; f != NIL && m_targets.size() < wanted; f = m_pool[f].next) consider(m_pool[f].row);
       CGAL_assertion(m_targets.size() == wanted);
       if(m_targets.size() > 1) std::sort(m_targets.begin(), m_targets.end());   // deterministic order
     }
@@ -295,92 +306,90 @@ private:
       Row& row = m_rows[i];
       const Int a = *find(row, c);
       Int fi, fk;
-      if(Ops::is_unit(p)) { fi = p; fk = a; }                 // gcd 1: the common case, no division
-      else if(Ops::is_unit(a)) { fi = p; fk = a; }
+      if(Ops::is_unit(p) || Ops::is_unit(a)) { fi = p; fk = a; }   // gcd 1: the common case, no division
       else { const Int g = Ops::gcd(p, a); fi = Ops::exact_div(p, g); fk = Ops::exact_div(a, g); }
       combine(row, i, fi, pr, fk);
       ++eliminations;
       if(row.state == ACTIVE) push(i);
     }
     // Only row k holds column c now (pivot columns never spread again: every later pivot row is free of c).
-    for(std::size_t q = m_col_ptr[c]; q < m_col_ptr[c + 1]; ++q) m_col_rows[q] = k;
-    m_fill_head[c] = NIL;
-    if(m_col_ptr[c + 1] == m_col_ptr[c]) add_fill(c, k);
-    m_count[c] = 1;
+    Column& cc = m_cols[c];                                  // combine() may not move m_cols, but be explicit
+    cc.count = 1; cc.r0 = k; cc.r1 = NIL; cc.more = NIL;
   }
 
-  // row <- fi * row - fk * pr, then divided by the gcd of its entries and b.
+  // row <- fi * row - fk * pr, then divided by the gcd of its entries and b; written straight into
+  // the arena (int64) or the row's own vector (Gmpz).
   void combine(Row& row, std::uint32_t i, const Int& fi, const Row& pr, const Int& fk)
   {
-    m_merged.clear();
-    m_merged.reserve(row.size + pr.size);
+    Entry* const dst = FLAT ? arena_reserve(std::size_t(row.size) + pr.size) : merge_buffer(std::size_t(row.size) + pr.size);
+    Entry* w = dst;
     const bool fi_one = Ops::is_unit(fi) && Ops::sign(fi) > 0;
     const Entry *a = row.data, *ae = row.data + row.size;
     const Entry *b = pr.data, *be = pr.data + pr.size;
     while(a != ae || b != be) {
       if(b == be || (a != ae && a->col < b->col)) {
-        m_merged.push_back(Entry{a->col, fi_one ? a->val : Ops::mul(fi, a->val)}); ++a;
+        *w++ = Entry{a->col, fi_one ? a->val : Ops::mul(fi, a->val)}; ++a;
       } else if(a == ae || b->col < a->col) {
-        m_merged.push_back(Entry{b->col, Ops::neg(Ops::mul(fk, b->val))});
-        ++m_count[b->col];
-        add_fill(b->col, i);
+        *w++ = Entry{b->col, Ops::neg(Ops::mul(fk, b->val))};
+        add_occurrence(b->col, i);
         ++b;
       } else {
         Int v = Ops::sub(fi_one ? a->val : Ops::mul(fi, a->val), Ops::mul(fk, b->val));
-        if(Ops::is_zero(v)) --m_count[a->col];
-        else m_merged.push_back(Entry{a->col, v});
+        if(Ops::is_zero(v)) --m_cols[a->col].count;
+        else *w++ = Entry{a->col, v};
         ++a; ++b;
       }
     }
+    const std::size_t size = std::size_t(w - dst);
     row.b = Ops::sub(fi_one ? row.b : Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
     Int g = Ops::abs(row.b);
-    for(std::size_t q = 0; q < m_merged.size() && !Ops::is_unit(g); ++q) g = Ops::gcd(g, m_merged[q].val);
+    for(std::size_t q = 0; q < size && !Ops::is_unit(g); ++q) g = Ops::gcd(g, dst[q].val);
     if(!Ops::is_zero(g) && !Ops::is_unit(g)) {
-      for(Entry& x : m_merged) x.val = Ops::exact_div(x.val, g);
+      for(std::size_t q = 0; q < size; ++q) dst[q].val = Ops::exact_div(dst[q].val, g);
       row.b = Ops::exact_div(row.b, g);
     }
-    store(row, m_merged);
+    if(FLAT) m_arena_used += size;
+    else { m_merged.resize(size); m_own[i].swap(m_merged); }
+    row.data = FLAT ? dst : m_own[i].data();
+    row.size = std::uint32_t(size);
   }
 
-  // Gives `row` the entries of `merged`. Built-in integers go into an arena of large blocks
-  // (stable addresses, no allocation per row; superseded versions are simply left behind), GMP
-  // integers into the row's own vector.
-  void store(Row& row, std::vector<Entry>& merged)
+  // Room for `size` entries at the end of the arena: large blocks with stable addresses, no
+  // allocation per row; superseded versions of rows are simply left behind.
+  Entry* arena_reserve(std::size_t size)
   {
-    if(std::is_trivially_copyable<Entry>::value) {
-      if(m_arena.empty() || m_arena_used + merged.size() > m_arena_block) {
-        m_arena.emplace_back(new Entry[std::max(m_arena_block, merged.size())]);
-        m_arena_used = 0;
-      }
-      Entry* dst = m_arena.back().get() + m_arena_used;
-      std::copy(merged.begin(), merged.end(), dst);
-      m_arena_used += merged.size();
-      row.data = dst;
-      row.size = std::uint32_t(merged.size());
-    } else {
-      row.own.swap(merged);
-      row.data = row.own.data();
-      row.size = std::uint32_t(row.own.size());
+    if(m_arena.empty() || m_arena_used + size > m_arena_capacity) {
+      m_arena_capacity = std::max(m_arena_block, size);
+      m_arena.emplace_back(new Entry[m_arena_capacity]);
+      m_arena_used = 0;
     }
+    return m_arena.back().get() + m_arena_used;
+  }
+  Entry* merge_buffer(std::size_t size)
+  {
+    m_merged.clear();
+    m_merged.resize(size);
+    return m_merged.data();
   }
 
-  void extract(const Integer_system& sys, const std::vector<std::uint32_t>& order, Irref<Int>& out)
+  // The pivot rows in row order (the order of IRREF rows does not matter, Eq. 2' uses free variables only).
+  void extract(const Integer_system& sys, Irref<Int>& out)
   {
     out.n_cols = m_n_cols;
     out.kind.assign(m_n_cols, (unsigned char)UNCONSTRAINED_COLUMN);
     for(std::size_t c = 0; c < m_n_cols; ++c) if(sys.column_used[c]) out.kind[c] = FREE_COLUMN;
-    for(std::uint32_t k : order) out.kind[m_rows[k].pivot_col] = IMPLIED_COLUMN;
-    std::size_t total = 0;
-    for(std::uint32_t k : order) total += m_rows[k].size - 1;
-    out.ptr.reserve(order.size() + 1); out.ptr.assign(1, 0);
+    std::size_t rank = 0, total = 0;
+    for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[row.pivot_col] = IMPLIED_COLUMN; }
+    out.ptr.reserve(rank + 1); out.ptr.assign(1, 0);
     out.col.reserve(total); out.val.reserve(total);
-    out.pivot_col.reserve(order.size()); out.pivot.reserve(order.size()); out.rhs.reserve(order.size());
+    out.pivot_col.reserve(rank); out.pivot.reserve(rank); out.rhs.reserve(rank);
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
-    for(std::uint32_t k : order) {
+    for(std::size_t k = 0; k < m_rows.size(); ++k) {
       Row& row = m_rows[k];
+      if(row.state != PIVOT) continue;
       const Int* pv = find(row, row.pivot_col);
       const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
-      Int p = flip ? Ops::neg(*pv) : *pv;
+      const Int p = flip ? Ops::neg(*pv) : *pv;
       out.pivot_col.push_back(row.pivot_col);
       out.rhs.push_back(flip ? Ops::neg(row.b) : row.b);
       if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
@@ -396,26 +405,23 @@ private:
       }
       out.pivot.push_back(p);
       out.ptr.push_back(out.col.size());
-      std::vector<Entry>().swap(row.own);              // release memory as we go
+      if(!FLAT) std::vector<Entry>().swap(m_own[k]);  // release memory as we go
     }
   }
 
   std::size_t m_n_cols = 0;
   std::vector<Row> m_rows;
+  std::vector<std::vector<Entry> > m_own;              // Gmpz only: the entries of modified rows
+  std::vector<Column> m_cols;
+  std::vector<Occurrence> m_pool;                      // column occurrences beyond r0, r1
   Csr_rows<Int> m_converted;                           // input converted to Int, when the system has the other type
-  std::vector<std::uint32_t> m_count;                  // rows (active or pivot) containing each column
-  std::vector<std::size_t> m_col_ptr;                  // input occurrences per column (may be stale)
-  std::vector<std::uint32_t> m_col_rows;
-  std::vector<std::uint32_t> m_fill_head;              // occurrences created by fill-in: linked lists in a pool (may be stale)
-  std::vector<std::pair<std::uint32_t, std::uint32_t> > m_fill_pool;
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;
-  std::vector<std::uint32_t> m_seen;                   // per row: stamp of the last column scan that took it
   std::uint32_t m_stamp = 0;
-  std::vector<Entry> m_merged;
-  std::vector<std::unique_ptr<Entry[]> > m_arena;      // see store()
-  std::size_t m_arena_used = 0;
+  std::vector<Entry> m_merged;                         // Gmpz only: merge buffer
+  std::vector<std::unique_ptr<Entry[]> > m_arena;      // int64 only: see arena_reserve()
+  std::size_t m_arena_used = 0, m_arena_capacity = 0;
   static constexpr std::size_t m_arena_block = std::size_t(1) << 16;
 };
 
