@@ -145,7 +145,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   // where c0_j is an exact integer (z0 solves the congruences). So every summand is divided by the
   // pivot *before* the safe dot product, as in the paper's Alg. 3, and the range argument of Sec. 4.3
   // holds for b != 0 as well; for b = 0, z0 = 0 and c0 = 0.
-  std::vector<std::pair<Int, double> > terms;
+  std::vector<std::pair<Int, std::int64_t> > terms;       // (coefficient, grid integer) of the summands
   Safe_dot_workspace ws;
   const bool shifted = !B.empty();                         // b != 0: constants c0_j and shifts z0
   CGAL::Gmpz c0;                                           // reused: no allocation per row
@@ -161,7 +161,9 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       auto it = z0.empty() ? z0.end() : z0.find(c);
       std::int64_t t;                                        // (z_c - z0_c) / p_j
       if(it == z0.end()) {
-        if(z[c] == 0) continue;
+        t = z[c];
+        if(t == 0) continue;
+        if(unit) { terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t)); continue; }   // the common case
         if(p64 == 0 || z[c] % p64 != 0) {
           fail(EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c) + " is not divisible by the pivot "
                                        + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Alg. 4)");
@@ -184,7 +186,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
         }
         if(t == 0) continue;
       }
-      terms.push_back(std::make_pair(Ops::neg(ir.val[q]), grid.from_integer(t)));
+      terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t));
     }
     if(shifted && c0 != 0) {
       const CGAL::Gmpz pz = to_gmpz(p);
@@ -199,7 +201,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
                              + " is outside the fixed-point range (Eq. 2', Sec. 7)");
         return;
       }
-      terms.push_back(std::make_pair(Ops::from_int64(1), grid.from_integer(c064)));
+      terms.push_back(std::make_pair(Ops::from_int64(1), c064));
     }
     double r = 0;
     const Safe_dot_result sr = safe_dot(terms, grid, r, ws);

@@ -58,6 +58,8 @@ struct Integer_ops<std::int64_t>
   static std::string to_string(Int a) { return std::to_string(a); }
   static bool less(Int a, Int b) { return a < b; }
   static Int from_int64(std::int64_t v) { return v; }
+  // Results of the elimination must be negatable (IRREF values are negated when evaluated).
+  static const Int& negatable(const Int& a) { if(a == std::numeric_limits<Int>::min()) throw Integer_overflow(); return a; }
 };
 
 // Note on CGAL::Gmpz: copies share one representation and the non-const mpz() does not copy on
@@ -100,6 +102,7 @@ struct Integer_ops<CGAL::Gmpz>
   }
   static bool less(const Int& a, const Int& b) { return a < b; }
   static Int from_int64(std::int64_t v) { Int r; mpz_set_si(r.mpz(), long(v)); return r; }
+  static const Int& negatable(const Int& a) { return a; }
 };
 
 // Converts an integer of the caller's type (built-in integral type or CGAL::Gmpz) to int64.

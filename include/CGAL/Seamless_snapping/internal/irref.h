@@ -33,6 +33,7 @@
 #include <CGAL/Seamless_snapping/internal/integer_system.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <cstddef>
@@ -92,7 +93,8 @@ inline bool narrow_irref(const Irref<CGAL::Gmpz>& z, Irref<std::int64_t>& r)
   typedef Integer_ops<CGAL::Gmpz> Z;
   auto conv = [](const std::vector<CGAL::Gmpz>& in, std::vector<std::int64_t>& out) {
     out.resize(in.size());
-    for(std::size_t i = 0; i < in.size(); ++i) if(!Z::to_int64(in[i], out[i])) return false;
+    for(std::size_t i = 0; i < in.size(); ++i)
+      if(!Z::to_int64(in[i], out[i]) || out[i] == std::numeric_limits<std::int64_t>::min()) return false;   // see Integer_ops::negatable
     return true;
   };
   if(!conv(z.pivot, r.pivot) || !conv(z.rhs, r.rhs) || !conv(z.val, r.val) || !conv(z.divisor, r.divisor)) return false;
@@ -391,7 +393,7 @@ private:
       const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
       const Int p = flip ? Ops::neg(*pv) : *pv;
       out.pivot_col.push_back(row.pivot_col);
-      out.rhs.push_back(flip ? Ops::neg(row.b) : row.b);
+      out.rhs.push_back(Ops::negatable(flip ? Ops::neg(row.b) : row.b));
       if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
       const bool unit = Ops::is_unit(p);
       if(!unit) out.unit_pivots = false;
@@ -400,7 +402,7 @@ private:
         if(x.col == row.pivot_col) continue;
         CGAL_assertion(out.kind[x.col] == FREE_COLUMN);
         out.col.push_back(x.col);
-        out.val.push_back(flip ? Ops::neg(x.val) : x.val);
+        out.val.push_back(Ops::negatable(flip ? Ops::neg(x.val) : x.val));
         if(!unit) out.divisor[x.col] = Ops::lcm(out.divisor[x.col], p);   // Alg. 4
       }
       out.pivot.push_back(p);

@@ -42,7 +42,7 @@ inline Status propagate_along_branches(const Reduced_system& rs, const std::vect
                                        const Fixed_point_grid& grid, std::vector<double>& x, std::string& message)
 {
   Safe_dot_workspace ws;
-  std::vector<std::pair<std::int64_t, double> > terms(3);
+  std::vector<std::pair<std::int64_t, std::int64_t> > terms(3);   // (coefficient, grid integer)
   std::size_t branch = 0;
   for(const Cut_branch_plan& p : rs.cut_branches) {
     const Quarter_turn R(p.k);
@@ -58,9 +58,9 @@ inline Status propagate_along_branches(const Reduced_system& rs, const std::vect
       }
       for(int c = 0; c < 2; ++c) {
         // (u^-)_c = (u_0^-)_c - sign_c (u_0^+)_{col_c} + sign_c (u^+)_{col_c}
-        terms[0] = std::make_pair(std::int64_t(1), x[2 * p.u0_minus + c]);
-        terms[1] = std::make_pair(std::int64_t(-R.sign[c]), x[2 * p.u0_plus + R.col[c]]);
-        terms[2] = std::make_pair(std::int64_t(R.sign[c]), x[2 * plus + R.col[c]]);
+        terms[0] = std::make_pair(std::int64_t(1), grid.to_integer(x[2 * p.u0_minus + c]));
+        terms[1] = std::make_pair(std::int64_t(-R.sign[c]), grid.to_integer(x[2 * p.u0_plus + R.col[c]]));
+        terms[2] = std::make_pair(std::int64_t(R.sign[c]), grid.to_integer(x[2 * plus + R.col[c]]));
         double r = 0;
         const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
         if(sr == SAFE_DOT_STUCK) {

@@ -11,6 +11,7 @@
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SAFE_DOT_H
 
 // The safe dot product, Alg. 5 (Sec. 4.3): r = sum_i c_i x_i with integer c_i and x_i in F_delta,
+// x_i given by their grid integers z_i = x_i / s,
 // evaluated in double arithmetic so that no intermediate value leaves [-delta, delta]; every
 // operation is then exact (see fixed_point_grid.h). Summands c_i x_i are |c_i| copies of +-|x_i|;
 // the accumulator alternates: while r < 0 a positive summand is added, otherwise a negative one
@@ -19,7 +20,7 @@
 // (z = v / s), so no rounded division can overshoot.
 //
 // Because every x_i is a grid multiple, the exact value of the sum is also available as an integer
-// sum_i c_i z_i (128-bit, or Gmpz when that overflows). We compute it first:
+// sum_i c_i z_i (128-bit, or Gmpz when that overflows). We compute it first (Grid_sum):
 //  - if |sum| >= 2^52 the result is outside (-delta, delta): OUT_OF_RANGE (Alg. 5 would get stuck);
 //  - if sum_i |c_i z_i| < 2^52, no partial sum in any order can leave the range, and the result is
 //    the integer sum (fast path; this is the common case on seamless systems);
@@ -50,51 +51,52 @@ struct Safe_dot_summand { std::int64_t count; double value; };
 // Scratch buffers, reused across calls to avoid allocations in the evaluation loop.
 struct Safe_dot_workspace { std::vector<Safe_dot_summand> pos, neg; };
 
-// The exact integer value sum_i c_i (x_i / s), as 128-bit integer or, on overflow, Gmpz.
-template <typename Int>
-bool exact_grid_sum(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid,
-                    __int128& sum, __int128& magnitude, CGAL::Gmpz& big)
+// The exact integer value sum_i c_i z_i and sum_i |c_i z_i| in 128 bits (`overflow` when they do
+// not fit; the caller then redoes the sum in Gmpz).
+struct Grid_sum
 {
-  typedef Integer_ops<Int> Ops;
-  sum = 0; magnitude = 0;
+  __int128 sum = 0, magnitude = 0;
   bool overflow = false;
-  for(const auto& t : terms) {
-    if(Ops::is_zero(t.first) || t.second == 0) continue;
-    const std::int64_t z = std::int64_t(t.second / grid.quantum);              // exact
-    std::int64_t c;
-    __int128 p, ap;
-    if(!overflow && Ops::to_int64(t.first, c) && !__builtin_mul_overflow((__int128)c, (__int128)z, &p)) {
-      ap = p < 0 ? -p : p;
-      if(!__builtin_add_overflow(sum, p, &sum) && !__builtin_add_overflow(magnitude, ap, &magnitude)) continue;
-    }
-    overflow = true;
-    break;
-  }
-  if(!overflow) return true;
-  big = 0;                                                                     // redo in Gmpz
-  for(const auto& t : terms) {
-    if(Ops::is_zero(t.first) || t.second == 0) continue;
-    big += to_gmpz(t.first) * Integer_ops<CGAL::Gmpz>::from_int64(std::int64_t(t.second / grid.quantum));
-  }
-  return false;
-}
+  static constexpr std::int64_t D = std::int64_t(1) << 52;   // delta / s
 
+  void add(std::int64_t c, std::int64_t z)
+  {
+    __int128 p;
+    if(overflow || __builtin_mul_overflow((__int128)c, (__int128)z, &p)) { overflow = true; return; }
+    const __int128 ap = p < 0 ? -p : p;
+    overflow = __builtin_add_overflow(sum, p, &sum) || __builtin_add_overflow(magnitude, ap, &magnitude);
+  }
+  template <typename Int>
+  void add(const Int& c, std::int64_t z)
+  {
+    std::int64_t c64;
+    if(!Integer_ops<Int>::to_int64(c, c64)) overflow = true;
+    else add(c64, z);
+  }
+  // Alg. 5 needs no step here: no partial sum in any order can leave (-delta, delta), and the
+  // result is the integer sum.
+  bool is_safe() const { return !overflow && magnitude < D; }
+};
+
+// Alg. 5 on terms (c_i, z_i): result = s sum_i c_i z_i, computed in doubles without leaving the range.
 template <typename Int>
-Safe_dot_result safe_dot(const std::vector<std::pair<Int, double> >& terms, const Fixed_point_grid& grid,
+Safe_dot_result safe_dot(const std::vector<std::pair<Int, std::int64_t> >& terms, const Fixed_point_grid& grid,
                          double& result, Safe_dot_workspace& ws)
 {
   typedef Integer_ops<Int> Ops;
-  const std::int64_t D = std::int64_t(1) << 52;    // delta / s
-  __int128 sum, magnitude;
-  CGAL::Gmpz big;
-  if(!exact_grid_sum(terms, grid, sum, magnitude, big)) {
+  const std::int64_t D = Grid_sum::D;
+  Grid_sum exact;
+  for(const auto& t : terms) exact.add(t.first, t.second);
+  __int128 sum = exact.sum;
+  if(exact.overflow) {                             // redo in Gmpz
+    CGAL::Gmpz big(0);
+    for(const auto& t : terms) big += to_gmpz(t.first) * Integer_ops<CGAL::Gmpz>::from_int64(t.second);
     std::int64_t v;
     if(!Integer_ops<CGAL::Gmpz>::to_int64(big, v) || v >= D || v <= -D) return SAFE_DOT_OUT_OF_RANGE;
     sum = v;
-    magnitude = (__int128)D;                       // forces the checked path below
   }
   if(sum >= D || sum <= -D) return SAFE_DOT_OUT_OF_RANGE;
-  if(magnitude < D) { result = grid.from_integer(std::int64_t(sum)); return SAFE_DOT_OK; }   // fast path
+  if(exact.is_safe()) { result = grid.from_integer(std::int64_t(sum)); return SAFE_DOT_OK; }   // fast path
 
   // Alg. 5 in doubles.
   ws.pos.clear(); ws.neg.clear();
@@ -107,7 +109,7 @@ Safe_dot_result safe_dot(const std::vector<std::pair<Int, double> >& terms, cons
       return SAFE_DOT_OK;
     }
     const bool positive = (Ops::sign(t.first) > 0) == (t.second > 0);
-    (positive ? ws.pos : ws.neg).push_back(Safe_dot_summand{c, std::fabs(t.second)});
+    (positive ? ws.pos : ws.neg).push_back(Safe_dot_summand{c, std::fabs(grid.from_integer(t.second))});
   }
   const double s = grid.quantum;
   std::size_t ip = 0, in = 0, steps = 0;
