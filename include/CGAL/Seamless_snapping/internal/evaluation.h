@@ -152,6 +152,19 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   for(std::size_t j = 0; j < m; ++j) {
     const Int& p = ir.pivot[j];
     const bool unit = Ops::is_unit(p);
+    if(unit && !shifted && z0.empty()) {
+      // The common case (seamless systems): z_pi(j) = -sum_i Ĉ_ji z_i. When the sum of magnitudes
+      // is below 2^52, this is the safe dot product's own fast path (safe_dot.h): no partial sum
+      // can leave the range, and the value is the exact integer sum.
+      Grid_sum acc;
+      for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) acc.add(ir.val[q], z[ir.col[q]]);
+      if(acc.is_safe()) {
+        const std::int64_t zp = -std::int64_t(acc.sum);
+        z[ir.pivot_col[j]] = zp;
+        out[ir.pivot_col[j]] = grid.from_integer(zp);
+        continue;
+      }                                                    // else: the general path below
+    }
     std::int64_t p64 = 1;
     if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every z_i (resp. z_i - z0_i) must be 0
     if(shifted) c0 = B[j];

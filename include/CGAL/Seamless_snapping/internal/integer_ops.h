@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <string>
 #include <type_traits>
 
@@ -46,7 +47,18 @@ struct Integer_ops<std::int64_t>
   {
     std::uint64_t x = a < 0 ? std::uint64_t(0) - std::uint64_t(a) : std::uint64_t(a);
     std::uint64_t y = b < 0 ? std::uint64_t(0) - std::uint64_t(b) : std::uint64_t(b);
-    while(y != 0) { std::uint64_t t = x % y; x = y; y = t; }
+    if(x == 0 || y == 0) x |= y;
+    else if(x == 1 || y == 1) x = 1;                       // the common case in seamless systems
+    else {                                                 // binary gcd (Stein): no divisions
+      const int shift = __builtin_ctzll(x | y);
+      x >>= __builtin_ctzll(x);
+      do {
+        y >>= __builtin_ctzll(y);
+        if(x > y) std::swap(x, y);
+        y -= x;
+      } while(y != 0);
+      x <<= shift;
+    }
     if(x > std::uint64_t(std::numeric_limits<Int>::max())) throw Integer_overflow();
     return Int(x);
   }

@@ -275,6 +275,10 @@ private:
 
   static const Int* find(const Row& row, std::uint32_t c)
   {
+    if(row.size <= 16) {                                    // short rows: a linear scan beats bisection
+      for(const Entry* e = row.data; e != row.data + row.size; ++e) if(e->col >= c) return e->col == c ? &e->val : nullptr;
+      return nullptr;
+    }
     const Entry* e = std::lower_bound(row.data, row.data + row.size, c,
                                       [](const Entry& x, std::uint32_t cc) { return x.col < cc; });
     return (e != row.data + row.size && e->col == c) ? &e->val : nullptr;

@@ -61,10 +61,9 @@ struct Grid_sum
 
   void add(std::int64_t c, std::int64_t z)
   {
-    __int128 p;
-    if(overflow || __builtin_mul_overflow((__int128)c, (__int128)z, &p)) { overflow = true; return; }
+    const __int128 p = (__int128)c * z;                      // |p| < 2^126: no overflow
     const __int128 ap = p < 0 ? -p : p;
-    overflow = __builtin_add_overflow(sum, p, &sum) || __builtin_add_overflow(magnitude, ap, &magnitude);
+    overflow |= __builtin_add_overflow(sum, p, &sum) | __builtin_add_overflow(magnitude, ap, &magnitude);
   }
   template <typename Int>
   void add(const Int& c, std::int64_t z)
