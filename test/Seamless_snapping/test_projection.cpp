@@ -611,10 +611,37 @@ void test_status_names()
 // crawl through 2^40 alternation steps, nor give up on |c| > 2^53 when the value is 0);
 // (b) the Diophantine solver of the b != 0 congruences on random small systems with a known
 // integer solution (copies of CGAL::Gmpz share their representation: no in-place writes);
-// (c) b != 0 systems whose exact integer solution is given as x̄ come back exact.
+// (c) b != 0 systems whose exact integer solution is given as x̄ come back exact;
+// (d) the division-free 64-bit gcd of the elimination agrees with GMP's, at the extremes too.
 void test_regressions()
 {
   std::cout << "== 7. regressions" << std::endl;
+  {
+    typedef SS::internal::Integer_ops<std::int64_t> I64;
+    typedef SS::internal::Integer_ops<CGAL::Gmpz> Z;
+    const std::int64_t MAX = std::numeric_limits<std::int64_t>::max();
+    std::vector<std::int64_t> special{ 0, 1, -1, 2, -2, 3, 6, -12, 1L << 40, -(1L << 62), MAX, -MAX, MAX - 1, 3L * (1L << 50) };
+    SS_test::Rng grng(7);
+    std::size_t compared = 0;
+    for(int it = 0; it < 200000; ++it) {
+      const bool from_list = it < int(special.size() * special.size());
+      std::int64_t a, b;
+      if(from_list) { a = special[std::size_t(it) % special.size()]; b = special[std::size_t(it) / special.size()]; }
+      else {
+        const int shift = int(grng.index(63));
+        a = std::int64_t(grng.bits() >> (1 + grng.index(63))) << grng.index(4);
+        b = std::int64_t(grng.bits() >> (1 + grng.index(63))) << (shift % 4);
+        if(grng.bits() & 1) a = -a;
+        if(grng.bits() & 1) b = -b;
+      }
+      std::int64_t expected;
+      const bool fits = Z::to_int64(Z::gcd(CGAL::Gmpz(a), CGAL::Gmpz(b)), expected);
+      assert(fits);
+      assert(I64::gcd(a, b) == expected);
+      ++compared;
+    }
+    std::cout << "64-bit gcd: " << compared << " pairs agree with GMP" << std::endl;
+  }
   for(int e : {40, 52, 53, 54, 60}) {
     typedef std::vector<std::vector<std::pair<long, long>>> Rows;
     Linear_system s = small_system(3, Rows{ { { 0, 1 }, { 1, 1L << e }, { 2, -(1L << e) } } }, { 0 });
