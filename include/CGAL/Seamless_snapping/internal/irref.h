@@ -327,26 +327,31 @@ private:
   // the arena (int64) or the row's own vector (Gmpz).
   void combine(Row& row, std::uint32_t i, const Int& fi, const Row& pr, const Int& fk)
   {
-    Entry* const dst = FLAT ? arena_reserve(std::size_t(row.size) + pr.size) : merge_buffer(std::size_t(row.size) + pr.size);
-    Entry* w = dst;
+    // int64: written straight into the arena; Gmpz: appended to the merge buffer (no default-constructed values)
+    Entry* w = nullptr;
+    if(FLAT) w = arena_reserve(std::size_t(row.size) + pr.size);
+    else { m_merged.clear(); m_merged.reserve(std::size_t(row.size) + pr.size); }
+    Entry* const first = w;
+    auto emit = [&](std::uint32_t col, const Int& v) { if(FLAT) *w++ = Entry{col, v}; else m_merged.push_back(Entry{col, v}); };
     const bool fi_one = Ops::is_unit(fi) && Ops::sign(fi) > 0;
     const Entry *a = row.data, *ae = row.data + row.size;
     const Entry *b = pr.data, *be = pr.data + pr.size;
     while(a != ae || b != be) {
       if(b == be || (a != ae && a->col < b->col)) {
-        *w++ = Entry{a->col, fi_one ? a->val : Ops::mul(fi, a->val)}; ++a;
+        emit(a->col, fi_one ? a->val : Ops::mul(fi, a->val)); ++a;
       } else if(a == ae || b->col < a->col) {
-        *w++ = Entry{b->col, Ops::neg(Ops::mul(fk, b->val))};
+        emit(b->col, Ops::neg(Ops::mul(fk, b->val)));
         add_occurrence(b->col, i);
         ++b;
       } else {
         Int v = Ops::sub(fi_one ? a->val : Ops::mul(fi, a->val), Ops::mul(fk, b->val));
         if(Ops::is_zero(v)) --m_cols[a->col].count;
-        else *w++ = Entry{a->col, v};
+        else emit(a->col, v);
         ++a; ++b;
       }
     }
-    const std::size_t size = std::size_t(w - dst);
+    Entry* const dst = FLAT ? first : m_merged.data();
+    const std::size_t size = FLAT ? std::size_t(w - first) : m_merged.size();
     row.b = Ops::sub(fi_one ? row.b : Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
     Int g = Ops::abs(row.b);
     for(std::size_t q = 0; q < size && !Ops::is_unit(g); ++q) g = Ops::gcd(g, dst[q].val);
@@ -355,7 +360,7 @@ private:
       row.b = Ops::exact_div(row.b, g);
     }
     if(FLAT) m_arena_used += size;
-    else { m_merged.resize(size); m_own[i].swap(m_merged); }
+    else m_own[i].swap(m_merged);
     row.data = FLAT ? dst : m_own[i].data();
     row.size = std::uint32_t(size);
   }
@@ -370,12 +375,6 @@ private:
       m_arena_used = 0;
     }
     return m_arena.back().get() + m_arena_used;
-  }
-  Entry* merge_buffer(std::size_t size)
-  {
-    m_merged.clear();
-    m_merged.resize(size);
-    return m_merged.data();
   }
 
   // The pivot rows in row order (the order of IRREF rows does not matter, Eq. 2' uses free variables only).
