@@ -140,6 +140,7 @@ class Irref_eliminator
 
   static constexpr std::uint32_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
   static constexpr std::uint32_t NIL = std::uint32_t(-1);
+  static constexpr std::size_t PREFETCH = 32;          // look-ahead (entries) of the streaming loops over random columns
 
 public:
   Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
@@ -178,12 +179,16 @@ private:
     m_cols.assign(m_n_cols, Column());
     m_pool.clear();
     m_stamp = 0;
+    const std::size_t nnz = in.e.size();
     for(std::size_t i = 0; i < sys.n_rows; ++i) {
       Row& row = m_rows[i];
       row.data = in.e.data() + ptr[i];
       row.size = std::uint32_t(ptr[i + 1] - ptr[i]);
       row.b = in.b[i];
-      for(std::uint32_t q = 0; q < row.size; ++q) add_occurrence(row.data[q].col, std::uint32_t(i));
+      for(std::uint32_t q = 0; q < row.size; ++q) {
+        if(ptr[i] + q + PREFETCH < nnz) __builtin_prefetch(&m_cols[in.e[ptr[i] + q + PREFETCH].col], 1);
+        add_occurrence(row.data[q].col, std::uint32_t(i));
+      }
     }
     // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
@@ -390,6 +395,7 @@ private:
     out.pivot_col.reserve(rank); out.pivot.reserve(rank); out.rhs.reserve(rank);
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
     for(std::size_t k = 0; k < m_rows.size(); ++k) {
+      if(k + PREFETCH / 4 < m_rows.size()) __builtin_prefetch(m_rows[k + PREFETCH / 4].data);
       Row& row = m_rows[k];
       if(row.state != PIVOT) continue;
       const Int* pv = find(row, row.pivot_col);
