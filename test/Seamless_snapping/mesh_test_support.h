@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -93,6 +94,22 @@ static inline bool load_shared_or_skip(const char* relative, const char* what, M
   }
   const bool ok = load_obj(p, m);
   if(!ok) { std::cerr << what << ": cannot read " << p << std::endl; std::abort(); }
+  return true;
+}
+
+// Every .obj file below the shared data directory, sorted; false (after a SKIPPED line naming
+// `what`) when there is no shared data directory.
+static inline bool shared_obj_files_or_skip(const char* what, std::vector<fs::path>& files)
+{
+  const fs::path dir(SS_SHARED_DATA_DIR);
+  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
+    std::cout << what << ": SKIPPED (no shared data directory '" << dir.string() << "')\n";
+    return false;
+  }
+  files.clear();
+  for(const auto& entry : fs::recursive_directory_iterator(dir))
+    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
   return true;
 }
 

@@ -110,20 +110,12 @@ static SS::Snap_report snap_and_check(const Mesh& input, const std::vector<Const
 // ---------------------------------------------------------------------------------------------
 static void test_data_meshes()
 {
-  const fs::path dir(SS_SHARED_DATA_DIR);
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
-    std::cout << "connections: random cone pairs on every data mesh: SKIPPED (no shared data directory '"
-              << dir.string() << "')\n";
-    return;
-  }
   std::vector<fs::path> files;
-  for(const auto& entry : fs::recursive_directory_iterator(dir))
-    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  if(!shared_obj_files_or_skip("connections: random cone pairs on every data mesh", files)) return;
   assert(!files.empty());
   unsigned seed = 2019;
   for(const fs::path& p : files) {
-    const std::string name = fs::relative(p, dir).string();
+    const std::string name = fs::relative(p, fs::path(SS_SHARED_DATA_DIR)).string();
     Mesh input;
     assert(load_obj(p, input));
     UV_map uv_in = uv_of(input);

@@ -84,19 +84,12 @@ struct File_result { std::string name; SS::Snap_report reduced, unreduced; doubl
 
 static void test_data_meshes(std::vector<File_result>& results)
 {
-  const fs::path dir(SS_SHARED_DATA_DIR);
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
-    std::cout << "snap: exact on every data mesh: SKIPPED (no shared data directory '" << dir.string() << "')\n";
-    return;
-  }
   std::vector<fs::path> files;
-  for(const auto& entry : fs::recursive_directory_iterator(dir))
-    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  if(!shared_obj_files_or_skip("snap: exact on every data mesh", files)) return;
   assert(!files.empty());
 
   for(const fs::path& p : files) {
-    const std::string name = fs::relative(p, dir).string();
+    const std::string name = fs::relative(p, fs::path(SS_SHARED_DATA_DIR)).string();
     Mesh input;
     const bool ok = load_obj(p, input);
     assert(ok);
@@ -644,18 +637,11 @@ static void test_flip_repair_synthetic()
 // flipped after snapping move.
 static void test_flip_repair_data()
 {
-  const fs::path dir(SS_SHARED_DATA_DIR);
-  if(std::string(SS_SHARED_DATA_DIR).empty() || !fs::is_directory(dir)) {
-    std::cout << "flip repair: data meshes: SKIPPED (no shared data directory '" << dir.string() << "')\n";
-    return;
-  }
   std::vector<fs::path> files;
-  for(const auto& entry : fs::recursive_directory_iterator(dir))
-    if(entry.is_regular_file() && entry.path().extension() == ".obj") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  if(!shared_obj_files_or_skip("flip repair: data meshes", files)) return;
   std::size_t introduced = 0, unrepaired = 0;
   for(const fs::path& p : files) {
-    const std::string name = fs::relative(p, dir).string();
+    const std::string name = fs::relative(p, fs::path(SS_SHARED_DATA_DIR)).string();
     Mesh input;
     const bool ok = load_obj(p, input);
     assert(ok);
