@@ -288,6 +288,14 @@ static void test_alignment()
               r.align_edges, r.nodes, r.max_input_violation, r.max_change);
 }
 
+// On an n x n grid cut along y = n / 2: whether the face of h lies above the cut (its centroid does).
+static bool above_cut(const Mesh& m, halfedge_descriptor h, int n)
+{
+  double cy = 0;
+  for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) cy += m.point(m.target(g)).y() / 3;
+  return cy > n / 2;
+}
+
 // ---------------------------------------------------------------------------------------------
 // snap: cut branch meeting the boundary (synthetic)
 // ---------------------------------------------------------------------------------------------
@@ -301,10 +309,7 @@ static void test_cut_and_boundary()
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h)) continue;
-    // the face is above the cut iff its centroid is
-    double cy = 0;
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) cy += m.point(m.target(g)).y() / 3;
-    const bool above = cy > n / 2;
+    const bool above = above_cut(m, h, n);
     const Point_3& p = m.point(m.target(h));
     const double x = p.x() / n, y = p.y() / n;
     const double seed = double(m.target(h).idx()) + (above ? 0.5 : 0.);
@@ -592,9 +597,7 @@ static void test_flip_repair_synthetic()
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h)) continue;
-    double cy = 0;
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) cy += m.point(m.target(g)).y() / 3;
-    const bool above = cy > n / 2;
+    const bool above = above_cut(m, h, n);
     const Point_3& p = m.point(m.target(h));
     double x = p.x() / n, y = p.y() / n;
     if(m.target(h) == v_below) y = 0.5 + d - e;
