@@ -179,21 +179,21 @@ private:
     m_cols.assign(m_n_cols, Column());
     m_pool.clear();
     m_stamp = 0;
-    const std::size_t nnz = in.e.size();
-    for(std::size_t i = 0; i < sys.n_rows; ++i) {
+    // Rows are read backwards and pushed at once: the queue's buckets are stacks, so lower indices come out first.
+    m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
+    m_buckets[std::min<std::uint32_t>(4, NNZ_BUCKETS - 1)].reserve(sys.n_rows);   // seamless rows: 4 unit entries
+    m_cursor = 0;
+    for(std::size_t i = sys.n_rows; i-- > 0; ) {
       Row& row = m_rows[i];
       row.data = in.e.data() + ptr[i];
       row.size = std::uint32_t(ptr[i + 1] - ptr[i]);
       row.b = in.b[i];
-      for(std::uint32_t q = 0; q < row.size; ++q) {
-        if(ptr[i] + q + PREFETCH < nnz) __builtin_prefetch(&m_cols[in.e[ptr[i] + q + PREFETCH].col], 1);
+      for(std::uint32_t q = row.size; q-- > 0; ) {
+        if(ptr[i] + q >= PREFETCH) __builtin_prefetch(&m_cols[in.e[ptr[i] + q - PREFETCH].col], 1);
         add_occurrence(row.data[q].col, std::uint32_t(i));
       }
+      push(std::uint32_t(i));
     }
-    // Row queue: buckets by key, rows pushed in reverse so that lower indices come out first.
-    m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
-    m_cursor = 0;
-    for(std::size_t i = sys.n_rows; i-- > 0; ) push(std::uint32_t(i));
   }
 
   // The input in Int: the system's own array when the types agree, else a converted copy.
