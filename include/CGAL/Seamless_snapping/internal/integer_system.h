@@ -79,11 +79,17 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
   out.ptr.assign(n_rows + 1, 0);
   bool bad_index = false;
   std::size_t bad_r = 0, bad_c = 0;
+  bool ordered = true;                                            // entries come by row, then by strictly increasing column
+  std::size_t last_r = 0, last_c = 0;
+  bool seen = false;
   visit([&](std::size_t r, std::size_t c, const auto& v) {      // pass 1: count
     if(r >= n_rows || c >= n_cols) { if(!bad_index) { bad_index = true; bad_r = r; bad_c = c; } return; }
     Int iv;
     if(!convert_integer(v, iv)) throw Integer_overflow();
-    if(!Ops::is_zero(iv)) ++out.ptr[r + 1];                      // explicit zeros are not entries
+    if(Ops::is_zero(iv)) return;                                  // explicit zeros are not entries
+    ++out.ptr[r + 1];
+    ordered = ordered && (!seen || r > last_r || (r == last_r && c > last_c));
+    seen = true; last_r = r; last_c = c;
   });
   if(bad_index) {
     message = "entry (" + std::to_string(std::int64_t(bad_r)) + ", " + std::to_string(std::int64_t(bad_c)) + ") is outside the "
@@ -100,19 +106,21 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
       if(!Ops::is_zero(iv)) out.e[pos[r]++] = Entry{std::uint32_t(c), iv};
     });
   }
-  // Sort each row by column, sum duplicates, drop zeros, divide by the gcd of the row and b_i.
+  // Sort each row by column, sum duplicates, drop zeros (unless the input came canonical: ordered by
+  // row and strictly by column, so no duplicates), divide by the gcd of the row and b_i.
   out.b.resize(n_rows);
   std::size_t w = 0;
   for(std::size_t i = 0; i < n_rows; ++i) {
     const std::size_t first = out.ptr[i], last = out.ptr[i + 1];
-    for(std::size_t q = first + 1; q < last; ++q) {               // insertion sort: rows are short
+    for(std::size_t q = first + 1; q < last && !ordered; ++q) {   // insertion sort: rows are short
       Entry x = out.e[q];
       std::size_t t = q;
       for(; t > first && out.e[t - 1].col > x.col; --t) out.e[t] = out.e[t - 1];
       out.e[t] = x;
     }
     const std::size_t row_begin = w;
-    for(std::size_t q = first; q < last; ) {
+    if(ordered) w = last;                                         // already canonical: nothing to merge (w == first here)
+    else for(std::size_t q = first; q < last; ) {
       const std::uint32_t c = out.e[q].col;
       Int v = out.e[q].val;
       for(++q; q < last && out.e[q].col == c; ++q) v = Ops::add(v, out.e[q].val);
