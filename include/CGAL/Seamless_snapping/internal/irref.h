@@ -324,8 +324,7 @@ private:
       if(row.state == ACTIVE) push(i);
     }
     // Only row k holds column c now (pivot columns never spread again: every later pivot row is free of c).
-    Column& cc = m_cols[c];                                  // combine() may not move m_cols, but be explicit
-    cc.count = 1; cc.r0 = k; cc.r1 = NIL; cc.more = NIL;
+    col.count = 1; col.r0 = k; col.r1 = NIL; col.more = NIL;   // m_cols is never resized: `col` is still valid
   }
 
   // row <- fi * row - fk * pr, then divided by the gcd of its entries and b; written straight into
