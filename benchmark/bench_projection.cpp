@@ -24,8 +24,8 @@
 // One row per system: m, n, nnz, rank, IRREF nnz (fill-in), max|coef| of the IRREF, integer type,
 // initialize ms, project ms and their total for the fastest of the R runs, the median total,
 // max |x - x̄|, and whether every row of C x = b holds exactly (each double converted exactly to
-// Gmpq, zero tolerance). Times on shared virtual machines vary by +-25 % from minute to minute,
-// so compare rows measured in one run.
+// Gmpq, zero tolerance). Times on shared virtual machines vary by up to 1.6x from minute to
+// minute, so compare rows measured in one run.
 //
 // Seamless-like systems come in two variable orders. "chain": sectors and rows numbered along the
 // cut chains, as a mesh traversal numbers them; "shuffled": rows and columns randomly permuted, the
@@ -80,14 +80,13 @@ double bench(const Linear_system& s, const std::vector<double>& xbar, const Sett
   const int runs = set.repeat > 0 ? set.repeat : (s.m < 100000 ? 10 : 3);
   SS::Irref_statistics st;
   SS::Projection_report r;
-  SS::Status init = SS::SUCCESS;
   std::vector<double> x, totals;
   double best = -1, spent = 0;
   for(int run = 0; run < runs; ++run) {
     SS::Exact_constraint_projection p;
     SS::Projection_report rr;
     std::vector<double> xr;
-    init = p.initialize(s.m, s.n, s.triplets, s.b);
+    const SS::Status init = p.initialize(s.m, s.n, s.triplets, s.b);
     if(init == SS::SUCCESS) rr = p.project(xbar, xr);
     else { rr.status = init; rr.message = p.message(); }
     const double t = p.statistics().initialize_ms + (init == SS::SUCCESS ? rr.project_ms : 0.);

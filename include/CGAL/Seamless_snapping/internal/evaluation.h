@@ -74,9 +74,6 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz
   return false;
 }
 
-// Look-ahead (entries) when streaming over rows whose columns are random.
-constexpr std::size_t PREFETCH = 32;
-
 // One attempt on a given grid.
 template <typename Int>
 void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
@@ -161,7 +158,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       // can leave the range, and the value is the exact integer sum.
       Grid_sum acc;
       for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
-        if(q + PREFETCH < ir.col.size()) __builtin_prefetch(&z[ir.col[q + PREFETCH]]);   // random columns: load ahead
+        if(q + prefetch_distance < ir.col.size()) __builtin_prefetch(&z[ir.col[q + prefetch_distance]]);
         acc.add(ir.val[q], z[ir.col[q]]);
       }
       if(acc.is_safe()) {
@@ -258,7 +255,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
         __int128 acc = 0;
         bool overflow = false;
         for(std::size_t q = ptr[i]; q < ptr[i + 1] && !overflow; ++q) {
-          if(q + PREFETCH < sys.rows64.e.size()) __builtin_prefetch(&z[sys.rows64.e[q + PREFETCH].col]);
+          if(q + prefetch_distance < sys.rows64.e.size()) __builtin_prefetch(&z[sys.rows64.e[q + prefetch_distance].col]);
           __int128 t;
           overflow = __builtin_mul_overflow((__int128)sys.rows64.e[q].val, (__int128)z[sys.rows64.e[q].col], &t)
                   || __builtin_add_overflow(acc, t, &acc);

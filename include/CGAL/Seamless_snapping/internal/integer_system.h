@@ -30,6 +30,10 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// Look-ahead, in entries, of the loops that stream over rows whose columns are random: they
+// prefetch what the entry this far ahead will touch (the elimination, evaluation and final check).
+constexpr std::size_t prefetch_distance = 32;
+
 // One nonzero of a sparse integer row.
 template <typename Int>
 struct Sparse_entry

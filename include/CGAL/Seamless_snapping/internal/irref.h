@@ -140,7 +140,6 @@ class Irref_eliminator
 
   static constexpr std::uint32_t NNZ_BUCKETS = 64;   // rows with more nonzeros share the last bucket
   static constexpr std::uint32_t NIL = std::uint32_t(-1);
-  static constexpr std::size_t PREFETCH = 32;          // look-ahead (entries) of the streaming loops over random columns
 
 public:
   Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
@@ -189,7 +188,7 @@ private:
       row.size = std::uint32_t(ptr[i + 1] - ptr[i]);
       row.b = in.b[i];
       for(std::uint32_t q = row.size; q-- > 0; ) {
-        if(ptr[i] + q >= PREFETCH) __builtin_prefetch(&m_cols[in.e[ptr[i] + q - PREFETCH].col], 1);
+        if(ptr[i] + q >= prefetch_distance) __builtin_prefetch(&m_cols[in.e[ptr[i] + q - prefetch_distance].col], 1);
         add_occurrence(row.data[q].col, std::uint32_t(i));
       }
       push(std::uint32_t(i));
@@ -327,11 +326,11 @@ private:
     col.count = 1; col.r0 = k; col.r1 = NIL; col.more = NIL;   // m_cols is never resized: `col` is still valid
   }
 
-  // row <- fi * row - fk * pr, then divided by the gcd of its entries and b; written straight into
-  // the arena (int64) or the row's own vector (Gmpz).
+  // row <- fi * row - fk * pr, then divided by the gcd of its entries and b; int64 entries are
+  // written straight into the arena, Gmpz entries appended to the merge buffer (no default-constructed
+  // values), which then becomes the row's own vector.
   void combine(Row& row, std::uint32_t i, const Int& fi, const Row& pr, const Int& fk)
   {
-    // int64: written straight into the arena; Gmpz: appended to the merge buffer (no default-constructed values)
     Entry* w = nullptr;
     if(FLAT) w = arena_reserve(std::size_t(row.size) + pr.size);
     else { m_merged.clear(); m_merged.reserve(std::size_t(row.size) + pr.size); }
@@ -394,7 +393,7 @@ private:
     out.pivot_col.reserve(rank); out.pivot.reserve(rank); out.rhs.reserve(rank);
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
     for(std::size_t k = 0; k < m_rows.size(); ++k) {
-      if(k + PREFETCH / 4 < m_rows.size()) __builtin_prefetch(m_rows[k + PREFETCH / 4].data);
+      if(k + prefetch_distance / 4 < m_rows.size()) __builtin_prefetch(m_rows[k + prefetch_distance / 4].data);   // rows, not entries
       Row& row = m_rows[k];
       if(row.state != PIVOT) continue;
       const Int* pv = find(row, row.pivot_col);
