@@ -62,6 +62,7 @@ struct Irref
   std::vector<Int> val;
   std::vector<unsigned char> kind;        // Column_kind per column
   std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none
+  Int max_abs = Integer_ops<Int>::from_int64(0);  // largest |entry| of the pivots, rhs and val
   bool unit_pivots = true;                // all pivots are 1: every divisor is 1
   bool homogeneous = true;                // b̂ = 0
   std::size_t dependent_rows = 0;
@@ -78,12 +79,8 @@ struct Irref
     st.dependent_rows = dependent_rows;
     st.irref_nonzeros = rank() + col.size();
     st.eliminations = eliminations;
-    Int m = Ops::from_int64(0);
-    for(const Int& v : pivot) if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
-    for(const Int& v : val)   if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
-    for(const Int& v : rhs)   if(Ops::less(m, Ops::abs(v))) m = Ops::abs(v);
-    st.max_abs_coefficient = Ops::to_string(m);
-    st.max_abs_coefficient_double = Ops::to_double(m);
+    st.max_abs_coefficient = Ops::to_string(max_abs);
+    st.max_abs_coefficient_double = Ops::to_double(max_abs);
   }
 };
 
@@ -98,6 +95,7 @@ inline bool narrow_irref(const Irref<CGAL::Gmpz>& z, Irref<std::int64_t>& r)
     return true;
   };
   if(!conv(z.pivot, r.pivot) || !conv(z.rhs, r.rhs) || !conv(z.val, r.val) || !conv(z.divisor, r.divisor)) return false;
+  Z::to_int64(z.max_abs, r.max_abs);      // fits: it is one of the converted values
   r.n_cols = z.n_cols; r.pivot_col = z.pivot_col; r.ptr = z.ptr; r.col = z.col; r.kind = z.kind;
   r.unit_pivots = z.unit_pivots; r.homogeneous = z.homogeneous;
   r.dependent_rows = z.dependent_rows; r.eliminations = z.eliminations;
@@ -177,6 +175,7 @@ private:
     if(!FLAT) m_own.assign(sys.n_rows, std::vector<Entry>());
     m_cols.assign(m_n_cols, Column());
     m_pool.clear();
+    m_pool.reserve(in.e.size());                       // no reallocation in practice (pages are touched only when used)
     m_stamp = 0;
     // Rows are read backwards and pushed at once: the queue's buckets are stacks, so lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
@@ -309,6 +308,12 @@ private:
       for(std::uint32_t f = col.more; f != NIL && m_targets.size() < wanted; f = m_pool[f].next) consider(m_pool[f].row);
       CGAL_assertion(m_targets.size() == wanted);
       if(m_targets.size() > 1) std::sort(m_targets.begin(), m_targets.end());   // deterministic order
+      // The merged rows are pushed and (the queue's buckets being stacks) usually popped next: their
+      // columns' records, which choose_pivot() reads, are fetched while the rows are combined.
+      for(std::uint32_t i : m_targets) {
+        const Row& t = m_rows[i];
+        for(std::uint32_t q = 0; q < t.size; ++q) __builtin_prefetch(&m_cols[t.data[q].col], 1);
+      }
     }
     const Row& pr = m_rows[k];
     const Int p = *find(pr, c);
@@ -392,6 +397,8 @@ private:
     out.col.reserve(total); out.val.reserve(total);
     out.pivot_col.reserve(rank); out.pivot.reserve(rank); out.rhs.reserve(rank);
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
+    Int lo = Ops::from_int64(0), hi = lo;           // range of the values written: max_abs at the end
+    auto note = [&](const Int& v) { if(Ops::less(hi, v)) hi = v; if(Ops::less(v, lo)) lo = v; return v; };
     for(std::size_t k = 0; k < m_rows.size(); ++k) {
       if(k + prefetch_distance / 4 < m_rows.size()) __builtin_prefetch(m_rows[k + prefetch_distance / 4].data);   // rows, not entries
       Row& row = m_rows[k];
@@ -400,7 +407,7 @@ private:
       const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
       const Int p = flip ? Ops::neg(*pv) : *pv;
       out.pivot_col.push_back(row.pivot_col);
-      out.rhs.push_back(Ops::negatable(flip ? Ops::neg(row.b) : row.b));
+      out.rhs.push_back(note(Ops::negatable(flip ? Ops::neg(row.b) : row.b)));
       if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
       const bool unit = Ops::is_unit(p);
       if(!unit) out.unit_pivots = false;
@@ -409,13 +416,14 @@ private:
         if(x.col == row.pivot_col) continue;
         CGAL_assertion(out.kind[x.col] == FREE_COLUMN);
         out.col.push_back(x.col);
-        out.val.push_back(Ops::negatable(flip ? Ops::neg(x.val) : x.val));
+        out.val.push_back(note(Ops::negatable(flip ? Ops::neg(x.val) : x.val)));
         if(!unit) out.divisor[x.col] = Ops::lcm(out.divisor[x.col], p);   // Alg. 4
       }
-      out.pivot.push_back(p);
+      out.pivot.push_back(note(p));
       out.ptr.push_back(out.col.size());
       if(!FLAT) std::vector<Entry>().swap(m_own[k]);  // release memory as we go
     }
+    out.max_abs = Ops::less(hi, Ops::neg(lo)) ? Ops::neg(lo) : hi;   // every value is negatable
   }
 
   std::size_t m_n_cols = 0;
