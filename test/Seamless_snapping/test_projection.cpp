@@ -612,7 +612,9 @@ void test_status_names()
 // (b) the Diophantine solver of the b != 0 congruences on random small systems with a known
 // integer solution (copies of CGAL::Gmpz share their representation: no in-place writes);
 // (c) b != 0 systems whose exact integer solution is given as x̄ come back exact;
-// (d) the division-free 64-bit gcd of the elimination agrees with GMP's, at the extremes too.
+// (d) the division-free 64-bit gcd of the elimination agrees with GMP's, at the extremes too;
+// (e) the huge-page allocator of the elimination's large arrays keeps values and alignment when a
+// vector grows from small blocks (std::allocator) into large ones (own mappings) and is copied.
 void test_regressions()
 {
   std::cout << "== 7. regressions" << std::endl;
@@ -641,6 +643,21 @@ void test_regressions()
       ++compared;
     }
     std::cout << "64-bit gcd: " << compared << " pairs agree with GMP" << std::endl;
+  }
+  {
+    struct alignas(32) Record { std::int64_t a, b; };
+    typedef SS::internal::Huge_page_allocator<Record> A;
+    std::vector<Record, A> v;
+    const std::size_t n = 3 * A::huge_page_threshold / sizeof(Record) + 17;   // crosses the threshold while growing
+    for(std::size_t i = 0; i < n; ++i) {
+      v.push_back(Record{ std::int64_t(i), -std::int64_t(i) });
+      assert(std::uintptr_t(v.data()) % alignof(Record) == 0);
+    }
+    const std::vector<Record, A> w(v);
+    for(std::size_t i = 0; i < n; ++i) assert(v[i].a == std::int64_t(i) && w[i].b == -std::int64_t(i));
+    v.resize(10); v.shrink_to_fit();                                 // back to a small block
+    assert(v.size() == 10 && v[9].a == 9);
+    std::cout << "huge-page allocator: " << n << " records through small and large blocks, values and alignment kept" << std::endl;
   }
   for(int e : {40, 52, 53, 54, 60}) {
     typedef std::vector<std::vector<std::pair<long, long>>> Rows;

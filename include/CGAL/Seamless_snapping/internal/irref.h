@@ -29,6 +29,7 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
+#include <CGAL/Seamless_snapping/internal/huge_page_allocator.h>
 #include <CGAL/Seamless_snapping/internal/integer_ops.h>
 #include <CGAL/Seamless_snapping/internal/integer_system.h>
 
@@ -176,6 +177,7 @@ private:
     m_cols.assign(m_n_cols, Column());
     m_pool.clear();
     m_pool.reserve(in.e.size());                       // no reallocation in practice (pages are touched only when used)
+    m_arena_block = std::max<std::size_t>(std::size_t(1) << 16, in.e.size() / 4);
     m_stamp = 0;
     // Rows are read backwards and pushed at once: the queue's buckets are stacks, so lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
@@ -379,7 +381,7 @@ private:
   {
     if(m_arena.empty() || m_arena_used + size > m_arena_capacity) {
       m_arena_capacity = std::max(m_arena_block, size);
-      m_arena.emplace_back(new Entry[m_arena_capacity]);
+      m_arena.emplace_back(Huge_page_allocator<Entry>().allocate(m_arena_capacity), Arena_deleter{m_arena_capacity});
       m_arena_used = 0;
     }
     return m_arena.back().get() + m_arena_used;
@@ -426,20 +428,27 @@ private:
     out.max_abs = Ops::less(hi, Ops::neg(lo)) ? Ops::neg(lo) : hi;   // every value is negatable
   }
 
+  template <typename T> using Big_vector = std::vector<T, Huge_page_allocator<T> >;   // large, randomly accessed
+  struct Arena_deleter
+  {
+    std::size_t n;
+    void operator()(Entry* p) const { Huge_page_allocator<Entry>().deallocate(p, n); }   // entries are trivial (int64 only)
+  };
+
   std::size_t m_n_cols = 0;
-  std::vector<Row> m_rows;
+  Big_vector<Row> m_rows;
   std::vector<std::vector<Entry> > m_own;              // Gmpz only: the entries of modified rows
-  std::vector<Column> m_cols;
-  std::vector<Occurrence> m_pool;                      // column occurrences beyond r0, r1
+  Big_vector<Column> m_cols;
+  Big_vector<Occurrence> m_pool;                       // column occurrences beyond r0, r1
   Csr_rows<Int> m_converted;                           // input converted to Int, when the system has the other type
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;
   std::uint32_t m_stamp = 0;
   std::vector<Entry> m_merged;                         // Gmpz only: merge buffer
-  std::vector<std::unique_ptr<Entry[]> > m_arena;      // int64 only: see arena_reserve()
+  std::vector<std::unique_ptr<Entry[], Arena_deleter> > m_arena;   // int64 only: see arena_reserve()
   std::size_t m_arena_used = 0, m_arena_capacity = 0;
-  static constexpr std::size_t m_arena_block = std::size_t(1) << 16;
+  std::size_t m_arena_block = std::size_t(1) << 16;    // entries per block: a quarter of the input, at least 2^16
 };
 
 // Computes the IRREF of the canonical system in Int. With Int = int64 an overflow throws
