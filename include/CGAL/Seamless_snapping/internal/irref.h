@@ -381,7 +381,8 @@ private:
   {
     if(m_arena.empty() || m_arena_used + size > m_arena_capacity) {
       m_arena_capacity = std::max(m_arena_block, size);
-      m_arena.emplace_back(Huge_page_allocator<Entry>().allocate(m_arena_capacity), Arena_deleter{m_arena_capacity});
+      std::unique_ptr<Entry[], Arena_deleter> block(Huge_page_allocator<Entry>().allocate(m_arena_capacity), Arena_deleter{m_arena_capacity});
+      m_arena.push_back(std::move(block));             // owned before the vector may grow (and throw)
       m_arena_used = 0;
     }
     return m_arena.back().get() + m_arena_used;
