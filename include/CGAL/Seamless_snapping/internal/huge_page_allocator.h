@@ -53,7 +53,7 @@ struct Huge_page_allocator
       char* const base = static_cast<char*>(q);
       char* const p = base + (huge_page - std::uintptr_t(base) % huge_page) % huge_page;   // 2 MiB aligned
       if(p != base) ::munmap(base, std::size_t(p - base));                               // unused head
-      if(p + bytes != base + bytes + huge_page) ::munmap(p + bytes, std::size_t(base + huge_page - p));   // and tail
+      ::munmap(p + bytes, std::size_t(base + huge_page - p));                            // and tail (never empty)
       ::madvise(p, bytes, MADV_HUGEPAGE);   // a hint: failure is harmless
       return reinterpret_cast<T*>(p);
     }
