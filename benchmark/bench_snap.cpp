@@ -49,11 +49,16 @@ namespace fs = std::filesystem;
 // per level with the time per 1000 faces: linear growth keeps that column flat.
 
 // Reads a model; files under a "directional" folder are cut meshes (Directional) and get welded.
-static SS::Status read_model(const fs::path& p, Mesh& m, UV_map& uv, std::string& msg)
+// On failure, prints a "cannot read" table row, counts it in `failures` and returns false.
+static bool read_model(const fs::path& p, Mesh& m, UV_map& uv, int& failures)
 {
   uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
   const bool weld = p.string().find("directional") != std::string::npos;
-  return SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld));
+  std::string msg;
+  if(SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld)) == SS::SUCCESS) return true;
+  std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str());
+  ++failures;
+  return false;
 }
 
 // One level of 1-to-4 midpoint subdivision of a triangle mesh with a corner UV map.
@@ -92,10 +97,7 @@ static int scaling_study(const std::vector<fs::path>& files, int levels, int rep
   for(const fs::path& p : files) {
     Mesh m;
     UV_map uv;
-    std::string msg;
-    if(read_model(p, m, uv, msg) != SS::SUCCESS) {
-      std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str()); ++failures; continue;
-    }
+    if(!read_model(p, m, uv, failures)) continue;
     for(int level = 0; level <= levels; ++level) {
       if(level > 0) { Mesh next; UV_map uv_next; subdivide(m, uv, next, uv_next); m = std::move(next); uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first; }
       double best = 0; SS::Snap_report rep;
@@ -124,12 +126,7 @@ static int connection_study(const std::vector<fs::path>& files, int repeat)
   for(const fs::path& p : files) {
     Mesh input;
     UV_map uv_in;
-    std::string msg;
-    if(read_model(p, input, uv_in, msg) != SS::SUCCESS) {
-      std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str());
-      ++failures;
-      continue;
-    }
+    if(!read_model(p, input, uv_in, failures)) continue;
     const std::vector<CT::vertex_descriptor> cones = CT::find_cones(input, uv_in);
     if(cones.size() < 2) {
       std::printf("%-36s %7zu %6zu | fewer than 2 cones, skipped\n", p.filename().string().c_str(),
@@ -209,11 +206,10 @@ int main(int argc, char** argv)
   for(const fs::path& p : files) {
     Mesh input;
     UV_map uv_in;
-    std::string msg;
     auto t0 = std::chrono::steady_clock::now();
-    SS::Status s = read_model(p, input, uv_in, msg);
+    const bool read = read_model(p, input, uv_in, failures);
     const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if(s != SS::SUCCESS) { std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str()); ++failures; continue; }
+    if(!read) continue;
 
     SS::Snap_report best, best_full;
     bool first = true;
