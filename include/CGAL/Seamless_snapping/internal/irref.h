@@ -25,7 +25,9 @@
 // those one with fewest nonzeros (then rows without a unit entry, fewest nonzeros first); in it,
 // the pivot is an entry of smallest |value|, then of the column with fewest nonzeros (counting
 // pivoted rows, which the Jordan step also touches), then the smallest column index. All ties are
-// broken by indices, so the same canonical input gives the same IRREF.
+// broken by indices, so the same canonical input gives the same IRREF. Rows are taken from the
+// queue a few steps before they are eliminated, so that what a step reads can be prefetched
+// (see Window).
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
@@ -125,6 +127,7 @@ class Irref_eliminator
     std::uint32_t stamp = 0;             // stamp of the last column scan that took this row
     std::uint32_t pivot_col = 0;
     Row_state state = ACTIVE;
+    bool in_window = false;              // taken from the queue, step pending (see Window)
     unsigned char key = 0;               // queue key when last pushed
     Int b;
   };
@@ -144,9 +147,20 @@ public:
   Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
   {
     load(sys);
-    std::uint32_t k;
-    while(pop(k)) {
+    Window window;
+    fill(window);
+    while(window.size > 0) {
+      const Pending next = window.take();
+      const std::uint32_t k = next.row;
       Row& row = m_rows[k];
+      row.in_window = false;
+      // Back to the queue if its key changed meanwhile or a row with a smaller key was queued (see Window).
+      const bool changed = row.state == ACTIVE && (row.key != next.key || m_cursor < row.key);
+      if(changed) push(k);
+      fill(window);
+      if(window.size > 1) prefetch_target_records(window.at(1));
+      if(window.size > 0) prefetch_target_entries(window.at(0));
+      if(row.state != ACTIVE || changed) continue;
       if(row.size == 0) {
         if(!Ops::is_zero(row.b)) {
           message = "row " + std::to_string(k) + " is a linear combination of other rows with an inconsistent right-hand side "
@@ -233,6 +247,71 @@ private:
     else { m_pool.push_back(Occurrence{i, col.more}); col.more = std::uint32_t(m_pool.size() - 1); }
   }
 
+  // Look-ahead (a software pipeline over the pivot steps). A row is taken from the queue LOOKAHEAD
+  // steps before it is eliminated; meanwhile what its step will read is prefetched in stages, each
+  // a step after the previous one has been requested: the records of its columns (which
+  // choose_pivot() reads), the records of the other rows holding its likely pivot column, then
+  // those rows' entries. On shuffled systems these are three dependent cache misses per step.
+  // The prefetches are hints only: when the step comes, its row, pivot and targets are read afresh,
+  // and the row goes back to the queue instead if its key changed meanwhile or a row with a smaller
+  // key was queued (the fill-reducing order matters on unstructured systems). So the result is that
+  // of the serial elimination in this deterministic order: the queue's, LOOKAHEAD steps early.
+  // While a row is in the window, its other queue entries are skipped.
+  static constexpr std::size_t LOOKAHEAD = 3;
+  struct Pending
+  {
+    std::uint32_t row;
+    std::uint32_t col;                   // likely pivot column (NIL: not looked at yet)
+    unsigned char key;                   // the row's queue key when it was taken
+  };
+  struct Window                         // a ring buffer of up to LOOKAHEAD rows, in pop order
+  {
+    static constexpr std::size_t MASK = 3;  // 4 slots: indices wrap without a division
+    static_assert(LOOKAHEAD <= MASK + 1, "window too small");
+    Pending slot[MASK + 1];
+    std::size_t head = 0, size = 0;
+    Pending& at(std::size_t j) { return slot[(head + j) & MASK]; }
+    Pending take() { const Pending p = slot[head]; head = (head + 1) & MASK; --size; return p; }
+  };
+  void fill(Window& window)
+  {
+    std::uint32_t i;
+    while(window.size < LOOKAHEAD && pop(i)) {
+      if(m_rows[i].in_window) continue;  // a second queue entry of a row already taken
+      m_rows[i].in_window = true;
+      window.at(window.size++) = Pending{i, NIL, m_rows[i].key};
+      const Row& row = m_rows[i];
+      for(std::uint32_t q = 0; q < row.size; ++q) __builtin_prefetch(&m_cols[row.data[q].col], 1);
+    }
+  }
+  // The pivot its step would choose now (the step chooses again: counts change meanwhile).
+  bool look_ahead_pivot(Pending& p) const
+  {
+    const Row& row = m_rows[p.row];
+    if(row.state != ACTIVE || row.size == 0) return false;
+    if(p.col == NIL) p.col = choose_pivot(row);
+    return true;
+  }
+  void prefetch_target_records(Pending& p) const
+  {
+    if(!look_ahead_pivot(p)) return;
+    const Column& col = m_cols[p.col];
+    if(col.r0 != p.row && col.r0 != NIL) __builtin_prefetch(&m_rows[col.r0], 1);
+    if(col.r1 != p.row && col.r1 != NIL) __builtin_prefetch(&m_rows[col.r1], 1);
+    if(col.more != NIL) __builtin_prefetch(&m_pool[col.more]);
+  }
+  void prefetch_target_entries(Pending& p) const
+  {
+    if(!look_ahead_pivot(p)) return;
+    const Column& col = m_cols[p.col];
+    for(const std::uint32_t r : { col.r0, col.r1 }) {
+      if(r == p.row || r == NIL) continue;
+      const char* entries = reinterpret_cast<const char*>(m_rows[r].data);
+      __builtin_prefetch(entries); __builtin_prefetch(entries + 64);
+    }
+    if(col.more != NIL) __builtin_prefetch(&m_rows[m_pool[col.more].row], 1);
+  }
+
   static unsigned char key(const Row& row)
   {
     bool unit = false;
@@ -262,18 +341,26 @@ private:
 
   std::uint32_t choose_pivot(const Row& row) const
   {
-    std::uint32_t best = 0;
+    auto column_key = [&](std::uint32_t c) { return (std::uint64_t(m_cols[c].count) << 32) | c; };  // fewest nonzeros, then index
+    std::uint64_t best_key = column_key(row.data[0].col);
+    bool units = Ops::is_unit(row.data[0].val);
+    for(std::uint32_t q = 1; q < row.size; ++q) {           // all values +-1 (seamless rows): only the keys count
+      best_key = std::min(best_key, column_key(row.data[q].col));
+      units = units & Ops::is_unit(row.data[q].val);
+    }
+    if(units) return std::uint32_t(best_key);
+    std::uint32_t best = 0;                                  // else smallest |value| first
+    best_key = column_key(row.data[0].col);
     for(std::uint32_t q = 1; q < row.size; ++q) {
       const Int& v = row.data[q].val;
       const Int& vb = row.data[best].val;
+      const std::uint64_t k = column_key(row.data[q].col);
       if(!(Ops::is_unit(v) && Ops::is_unit(vb))) {           // compare |v| only when not both units
         const Int a = Ops::abs(v), ab = Ops::abs(vb);
-        if(Ops::less(a, ab)) { best = q; continue; }
+        if(Ops::less(a, ab)) { best = q; best_key = k; continue; }
         if(Ops::less(ab, a)) continue;
       }
-      const std::uint32_t c = row.data[q].col, cb = row.data[best].col;
-      const std::uint32_t n = m_cols[c].count, nb = m_cols[cb].count;
-      if(n < nb || (n == nb && c < cb)) best = q;
+      if(k < best_key) { best = q; best_key = k; }
     }
     return row.data[best].col;
   }
@@ -310,12 +397,6 @@ private:
       for(std::uint32_t f = col.more; f != NIL && m_targets.size() < wanted; f = m_pool[f].next) consider(m_pool[f].row);
       CGAL_assertion(m_targets.size() == wanted);
       if(m_targets.size() > 1) std::sort(m_targets.begin(), m_targets.end());   // deterministic order
-      // The merged rows are pushed and (the queue's buckets being stacks) usually popped next: their
-      // columns' records, which choose_pivot() reads, are fetched while the rows are combined.
-      for(std::uint32_t i : m_targets) {
-        const Row& t = m_rows[i];
-        for(std::uint32_t q = 0; q < t.size; ++q) __builtin_prefetch(&m_cols[t.data[q].col], 1);
-      }
     }
     const Row& pr = m_rows[k];
     const Int p = *find(pr, c);
