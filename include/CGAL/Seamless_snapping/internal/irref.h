@@ -477,12 +477,13 @@ private:
     for(std::size_t c = 0; c < m_n_cols; ++c) if(sys.column_used[c]) out.kind[c] = FREE_COLUMN;
     std::size_t rank = 0, total = 0;
     for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[row.pivot_col] = IMPLIED_COLUMN; }
-    out.ptr.reserve(rank + 1); out.ptr.assign(1, 0);
-    out.col.reserve(total); out.val.reserve(total);
-    out.pivot_col.reserve(rank); out.pivot.reserve(rank); out.rhs.reserve(rank);
+    out.ptr.resize(rank + 1); out.ptr[0] = 0;
+    out.col.resize(total + 1); out.val.resize(total + 1);   // + 1: see the entry loop
+    out.pivot_col.resize(rank); out.pivot.resize(rank); out.rhs.resize(rank);
     out.divisor.assign(m_n_cols, Ops::from_int64(1));
     Int lo = Ops::from_int64(0), hi = lo;           // range of the values written: max_abs at the end
     auto note = [&](const Int& v) { if(Ops::less(hi, v)) hi = v; if(Ops::less(v, lo)) lo = v; return v; };
+    std::size_t j = 0, t = 0;                       // next IRREF row, next entry
     for(std::size_t k = 0; k < m_rows.size(); ++k) {
       if(k + prefetch_distance / 4 < m_rows.size()) __builtin_prefetch(m_rows[k + prefetch_distance / 4].data);   // rows, not entries
       Row& row = m_rows[k];
@@ -490,23 +491,25 @@ private:
       const Int* pv = find(row, row.pivot_col);
       const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
       const Int p = flip ? Ops::neg(*pv) : *pv;
-      out.pivot_col.push_back(row.pivot_col);
-      out.rhs.push_back(note(Ops::negatable(flip ? Ops::neg(row.b) : row.b)));
-      if(!Ops::is_zero(out.rhs.back())) out.homogeneous = false;
-      const bool unit = Ops::is_unit(p);
-      if(!unit) out.unit_pivots = false;
-      for(std::uint32_t q = 0; q < row.size; ++q) {
-        const Entry& x = row.data[q];
-        if(x.col == row.pivot_col) continue;
-        CGAL_assertion(out.kind[x.col] == FREE_COLUMN);
-        out.col.push_back(x.col);
-        out.val.push_back(note(Ops::negatable(flip ? Ops::neg(x.val) : x.val)));
-        if(!unit) out.divisor[x.col] = Ops::lcm(out.divisor[x.col], p);   // Alg. 4
+      out.pivot_col[j] = row.pivot_col;
+      out.rhs[j] = note(Ops::negatable(flip ? Ops::neg(row.b) : row.b));
+      if(!Ops::is_zero(out.rhs[j])) out.homogeneous = false;
+      const std::size_t first = t;
+      for(std::uint32_t q = 0; q < row.size; ++q) {  // every entry is written; the pivot's is then overwritten
+        const Entry& x = row.data[q];                 // (the last row's lands in the extra slot): no branch on its place
+        out.col[t] = x.col;
+        out.val[t] = note(Ops::negatable(flip ? Ops::neg(x.val) : x.val));
+        t += std::size_t(x.col != row.pivot_col);
       }
-      out.pivot.push_back(note(p));
-      out.ptr.push_back(out.col.size());
+      if(!Ops::is_unit(p)) {
+        out.unit_pivots = false;
+        for(std::size_t q = first; q < t; ++q) out.divisor[out.col[q]] = Ops::lcm(out.divisor[out.col[q]], p);   // Alg. 4
+      }
+      out.pivot[j] = note(p);
+      out.ptr[++j] = t;
       if(!FLAT) std::vector<Entry>().swap(m_own[k]);  // release memory as we go
     }
+    out.col.pop_back(); out.val.pop_back();
     out.max_abs = Ops::less(hi, Ops::neg(lo)) ? Ops::neg(lo) : hi;   // every value is negatable
   }
 
