@@ -501,6 +501,7 @@ private:
         out.val[t] = note(Ops::negatable(flip ? Ops::neg(x.val) : x.val));
         t += std::size_t(x.col != row.pivot_col);
       }
+      for(std::size_t q = first; q < t; ++q) CGAL_assertion(out.kind[out.col[q]] == FREE_COLUMN);
       if(!Ops::is_unit(p)) {
         out.unit_pivots = false;
         for(std::size_t q = first; q < t; ++q) out.divisor[out.col[q]] = Ops::lcm(out.divisor[out.col[q]], p);   // Alg. 4
