@@ -277,10 +277,10 @@ private:
   {
     std::uint32_t i;
     while(window.size < LOOKAHEAD && pop(i)) {
-      if(m_rows[i].in_window) continue;  // a second queue entry of a row already taken
-      m_rows[i].in_window = true;
-      window.at(window.size++) = Pending{i, NIL, m_rows[i].key};
-      const Row& row = m_rows[i];
+      Row& row = m_rows[i];
+      if(row.in_window) continue;        // a second queue entry of a row already taken
+      row.in_window = true;
+      window.at(window.size++) = Pending{i, NIL, row.key};
       for(std::uint32_t q = 0; q < row.size; ++q) __builtin_prefetch(&m_cols[row.data[q].col], 1);
     }
   }
