@@ -5,7 +5,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
-#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <cstdio>

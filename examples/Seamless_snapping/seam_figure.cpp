@@ -16,7 +16,7 @@
 #include <CGAL/Gmpq.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
-#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>   // fit_seam_transitions()
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>   // fit_seam_transitions()
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 

@@ -16,7 +16,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <CGAL/Seamless_snapping/Connection_constraint.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 
 #include <CGAL/Gmpq.h>
 

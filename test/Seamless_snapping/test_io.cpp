@@ -1,4 +1,4 @@
-// Tests of IO/OBJ.h (per-corner UV OBJ reading/writing) and of internal/orbifold_tutte_input.h.
+// Tests of IO/OBJ.h (per-corner UV OBJ reading/writing) and of internal/inputs/orbifold_tutte_input.h.
 //
 //   io: every shared UV file reads, counts match SOURCES.md, write -> read is bit-exact
 //   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
@@ -20,7 +20,7 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
-#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include <algorithm>
 #include <cassert>

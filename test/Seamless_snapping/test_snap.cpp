@@ -25,7 +25,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
-#include <CGAL/Seamless_snapping/internal/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpzf.h>

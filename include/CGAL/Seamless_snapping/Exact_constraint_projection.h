@@ -12,9 +12,9 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
-#include <CGAL/Seamless_snapping/internal/integer_system.h>
-#include <CGAL/Seamless_snapping/internal/irref.h>
-#include <CGAL/Seamless_snapping/internal/evaluation.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
+#include <CGAL/Seamless_snapping/internal/projection/irref.h>
+#include <CGAL/Seamless_snapping/internal/projection/evaluation.h>
 
 #include <Eigen/Sparse>
 

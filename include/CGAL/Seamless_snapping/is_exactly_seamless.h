@@ -10,8 +10,8 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
 #define CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
 
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>

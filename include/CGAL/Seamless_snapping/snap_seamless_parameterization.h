@@ -14,7 +14,7 @@
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
-#include <CGAL/Seamless_snapping/internal/snap_pipeline.h>
+#include <CGAL/Seamless_snapping/internal/surface/snap_pipeline.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_ORBIFOLD_TUTTE_INPUT_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_ORBIFOLD_TUTTE_INPUT_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_INPUTS_ORBIFOLD_TUTTE_INPUT_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_INPUTS_ORBIFOLD_TUTTE_INPUT_H
 
 // Test and example input: an *approximately* seamless corner UV map of a closed genus-0 surface,
 // made with CGAL's Orbifold Tutte embedding (Aigerman & Lipman 2015, CGAL Surface_mesh_parameterization).
@@ -531,4 +531,4 @@ double exact_max_seam_violation(const TriangleMesh& tm, CornerUVMap uv, const Se
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_ORBIFOLD_TUTTE_INPUT_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_INPUTS_ORBIFOLD_TUTTE_INPUT_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRANSITION_CONSTRAINTS_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRANSITION_CONSTRAINTS_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_TRANSITION_CONSTRAINTS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_TRANSITION_CONSTRAINTS_H
 
 // The full (unreduced) constraint system C u = 0 over the sector variables (Sec. 5.1, 5.2):
 // variable 2s is u and 2s+1 is v of sector s.
@@ -26,9 +26,9 @@
 // edge that is not near an axis is refused).
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
 #include <algorithm>
 #include <cmath>
@@ -152,4 +152,4 @@ inline void build_full_system(const Corner_mesh& cm, const Seam_topology& st, co
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRANSITION_CONSTRAINTS_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_TRANSITION_CONSTRAINTS_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_DIVISIBILITY_CONGRUENCES_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_DIVISIBILITY_CONGRUENCES_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_DIVISIBILITY_CONGRUENCES_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_DIVISIBILITY_CONGRUENCES_H
 
 // The inhomogeneous case, addendum Eq. (2'):
 //     x_pi(j) = (b̂_j - sum_i Ĉ_ji x_i) / Ĉ_jpi(j).
@@ -24,8 +24,8 @@
 // multiple of every pivot p_j of a row containing i; evaluation rounds x̄ to that shifted lattice.
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/integer_ops.h>
-#include <CGAL/Seamless_snapping/internal/irref.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/projection/irref.h>
 
 #include <CGAL/Gmpz.h>
 
@@ -201,4 +201,4 @@ Status solve_divisibility_congruences(const Irref<Int>& ir, const std::vector<CG
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_DIVISIBILITY_CONGRUENCES_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_DIVISIBILITY_CONGRUENCES_H

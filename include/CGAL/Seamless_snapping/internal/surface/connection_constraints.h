@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_CONNECTION_CONSTRAINTS_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_CONNECTION_CONSTRAINTS_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONNECTION_CONSTRAINTS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONNECTION_CONSTRAINTS_H
 
 // Connection constraints (Eq. 6) and cycle constraints (Eq. 8), Sec. 5.1, and their reduction to
 // node variables (Sec. 5.3, "Connections and Cycles"). The semantics are documented with the public
@@ -42,11 +42,11 @@
 // cancel), i.e. t = u^-_{t+1} - R^k u^+_{t+1} turns into t = u_0^- - R^k u_0^+.
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/reduced_system.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
-#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -260,4 +260,4 @@ inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topo
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_CONNECTION_CONSTRAINTS_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONNECTION_CONSTRAINTS_H

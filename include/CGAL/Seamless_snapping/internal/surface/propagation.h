@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_PROPAGATION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_PROPAGATION_H
 
 // Steps 2 and 3 of Sec. 5.3.1: values of the non-node sectors along the branches, once the node
 // sectors are exact and on the grid F_delta.
@@ -22,10 +22,10 @@
 // A result outside (-delta, delta) is RANGE_EXCEEDED, a stuck safe dot SAFE_DOT_FAILED.
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
-#include <CGAL/Seamless_snapping/internal/reduced_system.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/safe_dot.h>
+#include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/projection/safe_dot.h>
 
 #include <cstdint>
 #include <string>
@@ -87,4 +87,4 @@ inline Status propagate_along_branches(const Reduced_system& rs, const std::vect
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROPAGATION_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_PROPAGATION_H

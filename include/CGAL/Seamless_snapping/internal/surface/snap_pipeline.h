@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SNAP_PIPELINE_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SNAP_PIPELINE_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SNAP_PIPELINE_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SNAP_PIPELINE_H
 
 // The surface pipeline behind snap_seamless_parameterization() (Sec. 5):
 //   1. extract   corner mesh, cut edges, sectors, cones, rotations k, align edges   (Sec. 5, 5.1)
@@ -30,16 +30,16 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/connection_constraints.h>
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/exact_uv_check.h>
-#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
-#include <CGAL/Seamless_snapping/internal/flip_repair.h>
-#include <CGAL/Seamless_snapping/internal/propagation.h>
-#include <CGAL/Seamless_snapping/internal/reduced_system.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
-#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/connection_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/surface/flip_repair.h>
+#include <CGAL/Seamless_snapping/internal/surface/propagation.h>
+#include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -356,4 +356,4 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SNAP_PIPELINE_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SNAP_PIPELINE_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SEAM_TOPOLOGY_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SEAM_TOPOLOGY_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SEAM_TOPOLOGY_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SEAM_TOPOLOGY_H
 
 // Cut edges, sectors and cones of a corner UV map (Sec. 5 and 5.3).
 //
@@ -22,7 +22,7 @@
 //   (fold-overs can give any count, also 0 or negative ones; such vertices are cones too).
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -172,4 +172,4 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SEAM_TOPOLOGY_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SEAM_TOPOLOGY_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_FIXED_POINT_GRID_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_FIXED_POINT_GRID_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_FIXED_POINT_GRID_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_FIXED_POINT_GRID_H
 
 // The fixed-point subset F_delta of the doubles (Sec. 4.3, after [EBCK13]).
 //
@@ -90,4 +90,4 @@ struct Fixed_point_grid
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_FIXED_POINT_GRID_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_FIXED_POINT_GRID_H

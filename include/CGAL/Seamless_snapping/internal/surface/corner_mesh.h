@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CORNER_MESH_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CORNER_MESH_H
 
 // An index-based copy of the halfedge structure of a triangle mesh together with its corner UVs.
 //
@@ -155,4 +155,4 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_CORNER_MESH_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CORNER_MESH_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_ROTATION_FIT_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_ROTATION_FIT_H
 
 // Rotation k of the transition across each cut edge (Eq. 3/4), and the check that the input is
 // seamless up to rotations by multiples of 90 degrees.
@@ -31,9 +31,9 @@
 // Degenerate: the UV length on one side is below 1e-6 times the UV bounding-box diagonal.
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/edge_chains.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/edge_chains.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
 #include <algorithm>
 #include <cmath>
@@ -182,4 +182,4 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_ROTATION_FIT_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_ROTATION_FIT_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_OPS_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_OPS_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_OPS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_OPS_H
 
 // Integer arithmetic used by the fraction-free elimination (Sec. 4.1), in two flavours with one
 // interface: `std::int64_t` with overflow detection (an overflow throws `Integer_overflow`, and the
@@ -143,4 +143,4 @@ inline CGAL::Gmpz to_gmpz(const CGAL::Gmpz& v) { return v; }
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_OPS_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_OPS_H

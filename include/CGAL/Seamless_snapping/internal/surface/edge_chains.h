@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_EDGE_CHAINS_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_EDGE_CHAINS_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EDGE_CHAINS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EDGE_CHAINS_H
 
 // Decomposition of a set of edges into chains between "stop" vertices. Used twice:
 // - seam arcs (one fitted rotation per arc): the cut edges between cones, border vertices and
@@ -21,7 +21,7 @@
 // a chain. A closed loop without any stop vertex starts and ends at its smallest vertex index,
 // which is reported in `loop_starts` (for branches it becomes a node).
 
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
 #include <vector>
 
@@ -82,4 +82,4 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_EDGE_CHAINS_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EDGE_CHAINS_H

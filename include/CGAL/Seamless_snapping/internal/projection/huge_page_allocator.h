@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_HUGE_PAGE_ALLOCATOR_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_HUGE_PAGE_ALLOCATOR_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_HUGE_PAGE_ALLOCATOR_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_HUGE_PAGE_ALLOCATOR_H
 
 // A standard allocator for the elimination's large arrays (row and column records, occurrence
 // pool, arena). On large seamless systems the elimination reads these at random places, and with
@@ -80,4 +80,4 @@ private:
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_HUGE_PAGE_ALLOCATOR_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_HUGE_PAGE_ALLOCATOR_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_REDUCED_SYSTEM_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_REDUCED_SYSTEM_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_REDUCED_SYSTEM_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_REDUCED_SYSTEM_H
 
 // The reduced constraint system of Sec. 5.3: nodes, branches, cumulative equations.
 //
@@ -32,11 +32,11 @@
 // Align branch with component c: node row u_0|c - u_m|c = 0 (1 row per align branch); the rows
 // t < m-1 give u_{t+1}|c = u_0|c.
 
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/edge_chains.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
-#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/edge_chains.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <cstddef>
 #include <vector>
@@ -162,4 +162,4 @@ inline void build_reduced_system(const Corner_mesh& cm, const Seam_topology& st,
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_REDUCED_SYSTEM_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_REDUCED_SYSTEM_H

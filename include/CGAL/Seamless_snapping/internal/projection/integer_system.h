@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_SYSTEM_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_SYSTEM_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_SYSTEM_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_SYSTEM_H
 
 // The caller's integer system [C | b] in a canonical sparse form: rows in compressed storage,
 // entries of a row sorted by column, duplicates summed, zeros (explicit or cancelled) removed, and
@@ -17,7 +17,7 @@
 // the whole projection deterministic. Entries are int64 when all fit, CGAL::Gmpz otherwise.
 
 #include <CGAL/Seamless_snapping/Status.h>
-#include <CGAL/Seamless_snapping/internal/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -184,4 +184,4 @@ Status build_integer_system(std::size_t n_rows, std::size_t n_cols, const BRange
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_INTEGER_SYSTEM_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_INTEGER_SYSTEM_H

@@ -7,18 +7,18 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EXACT_UV_CHECK_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EXACT_UV_CHECK_H
 
 // Exact evaluation of constraint rows on double values, and the exact seamlessness test of a
 // corner UV map. Doubles are dyadic rationals: each one converts to CGAL::Mpzf (a multiprecision
 // binary float whose +, -, * are exact) or CGAL::Gmpq without error, and every row is evaluated
 // exactly, with zero tolerance.
 
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
-#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Mpzf.h>
@@ -140,4 +140,4 @@ bool is_exactly_seamless_impl(const TriangleMesh& tm, HalfedgeUVMap uvmap, const
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_EXACT_UV_CHECK_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_EXACT_UV_CHECK_H

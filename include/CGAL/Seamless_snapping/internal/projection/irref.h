@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_IRREF_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_IRREF_H
 
 // Fraction-free transformation of [C | b] into integer reduced row echelon form (IRREF), Sec. 4.1.
 //
@@ -31,9 +31,9 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
-#include <CGAL/Seamless_snapping/internal/huge_page_allocator.h>
-#include <CGAL/Seamless_snapping/internal/integer_ops.h>
-#include <CGAL/Seamless_snapping/internal/integer_system.h>
+#include <CGAL/Seamless_snapping/internal/projection/huge_page_allocator.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
 
 #include <algorithm>
 #include <limits>
@@ -551,4 +551,4 @@ Status compute_irref(const Integer_system& sys, Irref<Int>& out, std::string& me
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_IRREF_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_IRREF_H

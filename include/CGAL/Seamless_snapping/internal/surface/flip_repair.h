@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_FLIP_REPAIR_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_FLIP_REPAIR_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FLIP_REPAIR_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FLIP_REPAIR_H
 
 // Flip repair after snapping (Sec. 5.4, Sec. 6): a UV triangle whose orientation became negative
 // is fixed "by parametrically moving one of the vertices of the inverted triangle into the kernel
@@ -44,13 +44,13 @@
 // up to 1% of the UV diagonal in regions that are folded in the input; 16 times the bound repairs
 // nothing more there than the bound itself.)
 
-#include <CGAL/Seamless_snapping/internal/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/exact_uv_check.h>
-#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
-#include <CGAL/Seamless_snapping/internal/reduced_system.h>
-#include <CGAL/Seamless_snapping/internal/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/seam_topology.h>
-#include <CGAL/Seamless_snapping/internal/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
@@ -492,4 +492,4 @@ inline Flip_repair_result repair_flips(const Corner_mesh& cm, const Seam_topolog
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_FLIP_REPAIR_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FLIP_REPAIR_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SAFE_DOT_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SAFE_DOT_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_SAFE_DOT_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_SAFE_DOT_H
 
 // The safe dot product, Alg. 5 (Sec. 4.3): r = sum_i c_i x_i with integer c_i and x_i in F_delta,
 // x_i given by their grid integers z_i = x_i / s,
@@ -29,8 +29,8 @@
 //    -2^40); after a fixed number of steps the remaining summands are taken from the exact integer
 //    sum instead. A completed Alg. 5 must agree with the integer sum (else STUCK: an internal error).
 
-#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
-#include <CGAL/Seamless_snapping/internal/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
 
 #include <CGAL/Gmpz.h>
 
@@ -140,4 +140,4 @@ Safe_dot_result safe_dot(const std::vector<std::pair<Int, std::int64_t> >& terms
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SAFE_DOT_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_SAFE_DOT_H

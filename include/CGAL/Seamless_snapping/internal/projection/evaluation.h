@@ -7,8 +7,8 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_EVALUATION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_EVALUATION_H
 
 // Evaluation of the implied values, Sec. 4.3, Alg. 3 (with Alg. 4 makeDIV and Alg. 5 safeDot),
 // corrected for b != 0 by the addendum's Eq. (2'); followed by an exact check of every row of the
@@ -24,12 +24,12 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
-#include <CGAL/Seamless_snapping/internal/divisibility_congruences.h>
-#include <CGAL/Seamless_snapping/internal/fixed_point_grid.h>
-#include <CGAL/Seamless_snapping/internal/integer_ops.h>
-#include <CGAL/Seamless_snapping/internal/integer_system.h>
-#include <CGAL/Seamless_snapping/internal/irref.h>
-#include <CGAL/Seamless_snapping/internal/safe_dot.h>
+#include <CGAL/Seamless_snapping/internal/projection/divisibility_congruences.h>
+#include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
+#include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
+#include <CGAL/Seamless_snapping/internal/projection/irref.h>
+#include <CGAL/Seamless_snapping/internal/projection/safe_dot.h>
 
 #include <CGAL/Gmpz.h>
 
@@ -326,4 +326,4 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_EVALUATION_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PROJECTION_EVALUATION_H
