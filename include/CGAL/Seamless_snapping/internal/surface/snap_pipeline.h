@@ -11,14 +11,15 @@
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_SNAP_PIPELINE_H
 
 // The surface pipeline behind snap_seamless_parameterization() (Sec. 5):
-//   1. extract   corner mesh, cut edges, sectors, cones, rotations k, align edges   (Sec. 5, 5.1)
-//   2. reduce    nodes, branches, node system C                                    (Sec. 5.3)
-//   3. project   C through Exact_constraint_projection on the common grid F_delta  (Sec. 4)
-//   4. propagate non-node sectors along the branches                               (Sec. 5.3.1)
-//  4b. repair    flips by moving one sector group into its 1-ring kernel, exactly  (Sec. 5.4)
-//   5. verify    every row of the full system, exactly (Gmpq), before anything is written
-//   6. write     the corners of the changed sectors into the caller's map
-// With use_reduced_system = false, steps 2 and 4 are skipped and the full system goes to step 3.
+//   1. extract   corner mesh, cut edges, sectors, cones, rotations k, align edges,
+//                the full system of rows                        (Sec. 5, 5.1)   extract_seams, build_constraints
+//   2. reduce    nodes, branches, node system C                  (Sec. 5.3)      reduce_stage
+//   3. project   C through Exact_constraint_projection on F_delta (Sec. 4)       project_stage
+//   4. propagate non-node sectors along the branches              (Sec. 5.3.1)   project_node_system
+//   5. repair    flips, moving sector groups, exactly             (Sec. 5.4)     repair_stage
+//   6. verify    every row of the full system, exactly (Gmpq), before anything is written   verify_stage
+//   7. write     the corners of the changed sectors into the caller's map                   write_stage
+// With use_reduced_system = false, step 4 is skipped and the full system goes to step 3.
 //
 // One grid for everything: K = e(max |ubar|) + 1 over all constrained sector coordinates
 // (Fixed_point_grid::from_max_abs(max, 1)), passed to the projection via
@@ -133,6 +134,255 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
   return SUCCESS;
 }
 
+// What the stages hand down, in data-flow order (each stage reads what the ones before it wrote).
+template <class TriangleMesh>
+struct Snap_state
+{
+  // 1. extract
+  Corner_mesh cm;
+  Corner_mesh_descriptors<TriangleMesh> desc;
+  Seam_topology st;
+  Cut_rotations rot;
+  Align_edges al;
+  Constraint_rows full;                  // every row (Eq. 4, 5, 6-8) over sector variables (2s + c)
+  std::size_t first_connection_row = 0;
+  std::vector<char> path_endpoints;      // vertices that end a connection/cycle path (become nodes)
+  std::vector<int> constrained_vars;     // variables used by `full`, increasing
+  Fixed_point_grid grid;                 // common F_delta of node and propagated values
+  // 2. reduce
+  Reduced_system rs;
+  // 3.-5. project, propagate, repair
+  std::vector<double> x;                 // the result, one value per sector variable
+  bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
+  std::string flip_note;
+  std::size_t written = 0;
+};
+
+typedef std::chrono::steady_clock Snap_clock;
+inline double ms_since(Snap_clock::time_point t)
+{
+  return std::chrono::duration<double, std::milli>(Snap_clock::now() - t).count();
+}
+
+// 1a. corner mesh, cut edges, sectors, cones, rotations k, align edges (Sec. 5, 5.1)
+template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
+Status extract_seams(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
+                     const RotationOf& rotation_of, bool has_rotations,
+                     const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt,
+                     Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  Status s = build_corner_mesh(tm, uvmap, S.cm, S.desc, message);
+  if(s != SUCCESS) return s;
+  const Corner_mesh& cm = S.cm;
+  report.faces = std::size_t(cm.n_faces);
+
+  std::vector<signed char> seam_override;
+  std::vector<int> given_k;
+  std::vector<char> constrained;
+  if(has_seams) {
+    seam_override.assign(cm.n_edges, -1);
+    for(int e = 0; e < cm.n_edges; ++e) seam_override[e] = seam_of(S.desc.edges[e]) ? 1 : 0;
+  }
+  if(has_constrained) {
+    constrained.assign(cm.n_edges, 0);
+    for(int e = 0; e < cm.n_edges; ++e) constrained[e] = constrained_of(S.desc.edges[e]) ? 1 : 0;
+  }
+  s = compute_seam_topology(cm, seam_override, S.st, message);
+  if(s != SUCCESS) return s;
+  report.cut_edges = S.st.cut_edges.size();
+  report.sectors = std::size_t(S.st.n_sectors);
+  report.uv_diagonal = S.st.uv_diagonal;
+  for(char c : S.st.is_cone) report.cones += c ? 1 : 0;
+
+  if(has_rotations) {
+    given_k.assign(cm.n_edges, 0);
+    for(int e : S.st.cut_edges) given_k[e] = int(rotation_of(S.desc.halfedges[cm.edge_halfedge[e]]));
+  }
+  s = fit_rotations(cm, S.st, given_k, opt.rotation_tolerance, S.rot, message);
+  if(s != SUCCESS) return s;
+  s = find_align_edges(cm, S.st, opt.align_boundary, opt.alignment_tolerance, constrained, S.al, message);
+  if(s != SUCCESS) return s;
+  report.align_edges = S.al.edges.size();
+  return SUCCESS;
+}
+
+// 1b. the full system (transitions, alignment, connections and cycles), input statistics, the grid
+template <class TriangleMesh>
+Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  build_full_system(S.cm, S.st, S.rot, S.al, S.full);
+  S.first_connection_row = S.full.size();
+  Status s = add_connection_rows(S.cm, S.st, S.rot, opt.connections, S.full, S.path_endpoints, message);
+  if(s != SUCCESS) return s;
+  report.constraints = S.full.size();
+  std::vector<int> column_of;
+  used_variables(S.full, 2 * std::size_t(S.st.n_sectors), S.constrained_vars, column_of);
+  std::vector<char> sector_used(S.st.n_sectors, 0);
+  for(int v : S.constrained_vars) sector_used[v / 2] = 1;
+  for(char c : sector_used) report.constrained_sectors += c ? 1 : 0;
+
+  const std::vector<double>& ubar = S.st.ubar;
+  const double diagonal = S.st.uv_diagonal;
+  const double violation = max_abs_residual(S.full, ubar);
+  report.max_input_violation = diagonal > 0 ? violation / diagonal : violation;
+  double max_abs = 0;
+  for(int v : S.constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
+  S.grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (project_stage)
+  report.flips_before = count_flips(S.cm, S.st, ubar);
+  return SUCCESS;
+}
+
+// 2. nodes, branches and the node system (Sec. 5.3), connection rows reduced to node variables
+template <class TriangleMesh>
+Status reduce_stage(Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  build_reduced_system(S.cm, S.st, S.rot, S.al, S.rs, S.path_endpoints);
+  Status s = add_reduced_connection_rows(S.cm, S.st, S.full, S.first_connection_row, S.rs, message);
+  if(s != SUCCESS) { message = "node system: " + message; return s; }
+  report.nodes = S.rs.n_nodes;
+  report.cut_branches = S.rs.cut_branches.size();
+  report.align_branches = S.rs.align_branches.size();
+  return SUCCESS;
+}
+
+// 3.+4. the node system through the core on `S.grid`, then the non-node sectors along the branches
+// (Sec. 5.3.1). Node sectors used by the propagation but absent from C (e.g. the node of a closed
+// loop, whose node rows cancel) are free: rounded to the grid.
+template <class TriangleMesh>
+Status project_node_system(Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  const Reduced_system& rs = S.rs;
+  const std::vector<double>& ubar = S.st.ubar;
+  Status s = project_rows(rs.node_rows, S.grid, S.x, report, message);
+  if(s != SUCCESS) { message = "node system: " + message; return s; }
+  std::vector<int> node_vars, node_column_of;
+  used_variables(rs.node_rows, S.x.size(), node_vars, node_column_of);
+  auto fix_free_node_var = [&](int var) {
+    if(node_column_of[var] < 0) { S.x[var] = S.grid.round(ubar[var]); node_column_of[var] = -2; }
+  };
+  for(const Cut_branch_plan& p : rs.cut_branches)
+    for(int c = 0; c < 2; ++c) { fix_free_node_var(2 * p.u0_plus + c); fix_free_node_var(2 * p.u0_minus + c); }
+  for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
+  const Snap_clock::time_point t = Snap_clock::now();
+  s = propagate_along_branches(rs, ubar, S.grid, S.x, message);
+  report.propagate_ms = ms_since(t);
+  if(s != SUCCESS) message = "propagation: " + message;
+  return s;
+}
+
+// 3.-4. with retries: RANGE_EXCEEDED is retried on a grid with 4 more bits of range (up to 5 times):
+// constraints that the input violates by a lot (connection and cycle constraints added after the
+// fact) move implied values further than the margin of Sec. 4.3 allows.
+template <class TriangleMesh>
+Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  const std::size_t n_vars = 2 * std::size_t(S.st.n_sectors);
+  S.x = S.st.ubar;
+  S.already_exact = first_violated_row(S.full, S.st.ubar) < 0;
+  if(S.already_exact) {     // nothing to project, nothing to write
+    const Constraint_rows& system = opt.use_reduced_system ? S.rs.node_rows : S.full;
+    std::vector<int> system_vars, system_column_of;
+    used_variables(system, n_vars, system_vars, system_column_of);
+    report.system_rows = system.size();
+    report.system_columns = system_vars.size();
+    return SUCCESS;
+  }
+  for(int retry = 0;; ++retry) {
+    S.x = S.st.ubar;
+    Status s = opt.use_reduced_system ? project_node_system(S, report, message)
+                                      : project_rows(S.full, S.grid, S.x, report, message);
+    if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
+    if(s != RANGE_EXCEEDED || retry == 5) return s;
+    S.grid = Fixed_point_grid(S.grid.K + 4);
+  }
+}
+
+// 5. flip repair (Sec. 5.4): moves that keep every row exact, each checked exactly
+template <class TriangleMesh>
+void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
+{
+  report.flips_after = count_flips(S.cm, S.st, S.x);
+  report.flips_after_repair = report.flips_after;
+  if(!opt.repair_flips || S.already_exact) {
+    report.flips_unrepaired = count_introduced_flips(S.cm, S.st, S.st.ubar, S.x);
+    return;
+  }
+  const Snap_clock::time_point t = Snap_clock::now();
+  const Flip_repair_result fr = repair_flips(S.cm, S.st, S.rs, S.full, S.grid, S.st.ubar, S.x);
+  report.repair_ms = ms_since(t);
+  report.flips_after_repair = fr.flips_after;
+  report.flips_unrepaired = fr.unrepaired;
+  report.repair_moves = fr.moves;
+  if(fr.unrepaired > 0) {
+    S.flip_note = "; " + std::to_string(fr.unrepaired) + " flip(s) introduced by snapping could not be repaired locally (faces";
+    for(std::size_t i = 0; i < fr.unrepaired_faces.size() && i < 10; ++i) S.flip_note += " " + std::to_string(fr.unrepaired_faces[i]);
+    S.flip_note += fr.unrepaired_faces.size() > 10 ? " ...)" : ")";
+  }
+}
+
+// 6. every row of the full system, exactly (Gmpq), before anything is written; change statistics
+template <class TriangleMesh>
+Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  const long bad = first_violated_row(S.full, S.x);
+  if(bad >= 0) {
+    const int e = S.full.edge[std::size_t(bad)];
+    message = "row " + std::to_string(bad) + " of the full system (" +
+              (e >= 0 ? "edge " + vertex_pair_name(S.cm, S.cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e))) +
+              ") does not hold exactly after snapping; nothing was written";
+    return EXACTNESS_CHECK_FAILED;
+  }
+  const std::vector<double>& ubar = S.st.ubar;
+  const double diagonal = S.st.uv_diagonal;
+  auto relative = [diagonal](double a) { return diagonal > 0 ? a / diagonal : a; };
+  double max_change = 0, sum_change = 0;
+  for(std::size_t i = 0; i < S.x.size(); ++i) max_change = (std::max)(max_change, std::fabs(S.x[i] - ubar[i]));
+  for(int v : S.constrained_vars) sum_change += std::fabs(S.x[v] - ubar[v]);
+  report.max_change = relative(max_change);
+  report.mean_change = S.constrained_vars.empty() ? 0. : relative(sum_change / double(S.constrained_vars.size()));
+  return SUCCESS;
+}
+
+// 7. the corners of the changed sectors (and border halfedges that mirror them) into the caller's map
+template <class TriangleMesh, class HalfedgeUVMap>
+void write_stage(HalfedgeUVMap uvmap, Snap_state<TriangleMesh>& S)
+{
+  typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
+  const Corner_mesh& cm = S.cm;
+  const std::vector<double>& ubar = S.st.ubar;
+  std::vector<char> changed(S.st.n_sectors, 0);
+  for(int i = 0; i < S.st.n_sectors; ++i)
+    changed[i] = !(S.x[2 * i] == ubar[2 * i] && S.x[2 * i + 1] == ubar[2 * i + 1]);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    int corner = h;
+    if(cm.is_border_halfedge(h)) {
+      // a border halfedge that holds the UV of the corner (target(h), face(prev(opposite(h))))
+      // (the Seam_mesh convention) is kept in sync with it
+      corner = cm.prev[cm.opp[h]];
+      const auto p = get(uvmap, S.desc.halfedges[h]);
+      if(!(CGAL::to_double(p.x()) == cm.u[corner] && CGAL::to_double(p.y()) == cm.v[corner])) continue;
+    }
+    const int sec = S.st.sector_of[corner];
+    if(!changed[sec]) continue;
+    put(uvmap, S.desc.halfedges[h], Point_2(FT(S.x[2 * sec]), FT(S.x[2 * sec + 1])));
+    ++S.written;
+  }
+}
+
+template <class TriangleMesh>
+std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMesh>& S, const Snap_report& report)
+{
+  std::string summary = S.already_exact ? "the input is already exactly seamless; nothing was changed"
+                                        : "exactly seamless; " + std::to_string(S.written) + " corner UVs written";
+  summary += " (" + std::to_string(report.cut_edges) + " cut edges, " + std::to_string(report.align_edges) +
+             " align edges, " + std::to_string(report.constraints) + " constraints, " +
+             (opt.use_reduced_system ? std::to_string(report.nodes) + " nodes, " : std::string()) +
+             "system " + std::to_string(report.system_rows) + " x " + std::to_string(report.system_columns) + ")";
+  return summary + S.flip_note;
+}
+
+// The pipeline: the stages above in order; the caller's map is written only after step 6 passed.
 // The overrides are given per edge/halfedge descriptor through callables, evaluated after the
 // corner mesh is built (they need its numbering).
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
@@ -140,9 +390,7 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
                           const RotationOf& rotation_of, bool has_rotations,
                           const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt)
 {
-  typedef std::chrono::steady_clock Clock;
-  auto ms_since = [](Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); };
-  const Clock::time_point t_start = Clock::now();
+  const Snap_clock::time_point t_start = Snap_clock::now();
   Snap_report report;
   report.reduced = opt.use_reduced_system;
   auto finish = [&](Status s, const std::string& message) {
@@ -153,203 +401,32 @@ Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& s
       std::cout << "snap_seamless_parameterization: " << status_name(s) << ": " << message << std::endl;
     return report;
   };
-
-  // 1. extraction ------------------------------------------------------------------------------
-  Clock::time_point t = Clock::now();
+  Snap_state<TriangleMesh> S;
   std::string message;
-  Corner_mesh cm;
-  Corner_mesh_descriptors<TriangleMesh> desc;
-  Status s = build_corner_mesh(tm, uvmap, cm, desc, message);
-  if(s != SUCCESS) return finish(s, message);
-  report.faces = std::size_t(cm.n_faces);
 
-  std::vector<signed char> seam_override;
-  std::vector<int> given_k;
-  std::vector<char> constrained;
-  if(has_seams) {
-    seam_override.assign(cm.n_edges, -1);
-    for(int e = 0; e < cm.n_edges; ++e) seam_override[e] = seam_of(desc.edges[e]) ? 1 : 0;
-  }
-  if(has_constrained) {
-    constrained.assign(cm.n_edges, 0);
-    for(int e = 0; e < cm.n_edges; ++e) constrained[e] = constrained_of(desc.edges[e]) ? 1 : 0;
-  }
-
-  Seam_topology st;
-  s = compute_seam_topology(cm, seam_override, st, message);
+  Snap_clock::time_point t = Snap_clock::now();
+  Status s = extract_seams(tm, uvmap, seam_of, has_seams, rotation_of, has_rotations, constrained_of, has_constrained,
+                           opt, S, report, message);
+  if(s == SUCCESS) s = build_constraints(opt, S, report, message);
   if(s != SUCCESS) return finish(s, message);
-  report.cut_edges = st.cut_edges.size();
-  report.sectors = std::size_t(st.n_sectors);
-  report.uv_diagonal = st.uv_diagonal;
-  for(char c : st.is_cone) report.cones += c ? 1 : 0;
-
-  if(has_rotations) {
-    given_k.assign(cm.n_edges, 0);
-    for(int e : st.cut_edges) given_k[e] = int(rotation_of(desc.halfedges[cm.edge_halfedge[e]]));
-  }
-  Cut_rotations rot;
-  s = fit_rotations(cm, st, given_k, opt.rotation_tolerance, rot, message);
-  if(s != SUCCESS) return finish(s, message);
-
-  Align_edges al;
-  s = find_align_edges(cm, st, opt.align_boundary, opt.alignment_tolerance, constrained, al, message);
-  if(s != SUCCESS) return finish(s, message);
-  report.align_edges = al.edges.size();
-
-  Constraint_rows full;
-  build_full_system(cm, st, rot, al, full);
-  // connection and cycle constraints (Eq. 6-8): one row each, appended to the full system
-  const std::size_t first_connection_row = full.size();
-  std::vector<char> path_endpoints;
-  s = add_connection_rows(cm, st, rot, opt.connections, full, path_endpoints, message);
-  if(s != SUCCESS) return finish(s, message);
-  report.constraints = full.size();
-  const std::size_t n_vars = 2 * std::size_t(st.n_sectors);
-  std::vector<int> constrained_vars, column_of;
-  used_variables(full, n_vars, constrained_vars, column_of);
-  {
-    std::vector<char> sector_used(st.n_sectors, 0);
-    for(int v : constrained_vars) sector_used[v / 2] = 1;
-    for(char c : sector_used) report.constrained_sectors += c ? 1 : 0;
-  }
-  const double diagonal = st.uv_diagonal;
-  auto relative = [diagonal](double a) { return diagonal > 0 ? a / diagonal : a; };
-  const std::vector<double>& ubar = st.ubar;
-  report.max_input_violation = relative(max_abs_residual(full, ubar));
-  double max_abs = 0;
-  for(int v : constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
-  Fixed_point_grid grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (below)
-  report.flips_before = count_flips(cm, st, ubar);
   report.extract_ms = ms_since(t);
 
-  // 2. reduction ---------------------------------------------------------------------------------
-  t = Clock::now();
-  Reduced_system rs;
-  build_reduced_system(cm, st, rot, al, rs, path_endpoints);
-  s = add_reduced_connection_rows(cm, st, full, first_connection_row, rs, message);
-  if(s != SUCCESS) return finish(s, "node system: " + message);
-  report.nodes = rs.n_nodes;
-  report.cut_branches = rs.cut_branches.size();
-  report.align_branches = rs.align_branches.size();
-  report.reduce_ms = ms_since(t);
-  if(!opt.use_reduced_system) report.reduce_ms = 0;
+  t = Snap_clock::now();
+  s = reduce_stage(S, report, message);
+  if(s != SUCCESS) return finish(s, message);
+  report.reduce_ms = opt.use_reduced_system ? ms_since(t) : 0.;
 
-  std::vector<double> x = ubar;
-  const bool already_exact = first_violated_row(full, ubar) < 0;
-  if(already_exact) {     // x = ubar satisfies every row: nothing to project, nothing to write
-    const Constraint_rows& system = opt.use_reduced_system ? rs.node_rows : full;
-    std::vector<int> system_vars, system_column_of;
-    used_variables(system, n_vars, system_vars, system_column_of);
-    report.system_rows = system.size();
-    report.system_columns = system_vars.size();
-  } else {
-    // Steps 3 and 4 on the grid; RANGE_EXCEEDED is retried on a grid with 4 more bits of range (up to
-    // 5 times): constraints that the input violates by a lot (connection and cycle constraints added
-    // after the fact) move implied values further than the margin of Sec. 4.3 allows.
-    std::string prefix;
-    for(int retry = 0;; ++retry) {
-      x = ubar;
-      if(opt.use_reduced_system) {
-        // 3. node system ---------------------------------------------------------------------------
-        prefix = "node system: ";
-        s = project_rows(rs.node_rows, grid, x, report, message);
-        if(s == SUCCESS) {
-          // node sectors used by the propagation but absent from C (e.g. the node of a closed loop,
-          // whose node rows cancel): free, rounded to the grid
-          std::vector<int> node_vars, node_column_of;
-          used_variables(rs.node_rows, n_vars, node_vars, node_column_of);
-          auto fix_free_node_var = [&](int var) {
-            if(node_column_of[var] < 0) { x[var] = grid.round(ubar[var]); node_column_of[var] = -2; }
-          };
-          for(const Cut_branch_plan& p : rs.cut_branches)
-            for(int c = 0; c < 2; ++c) { fix_free_node_var(2 * p.u0_plus + c); fix_free_node_var(2 * p.u0_minus + c); }
-          for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
-          // 4. propagation -------------------------------------------------------------------------
-          prefix = "propagation: ";
-          t = Clock::now();
-          s = propagate_along_branches(rs, ubar, grid, x, message);
-          report.propagate_ms = ms_since(t);
-        }
-      } else {
-        prefix = "full system: ";
-        s = project_rows(full, grid, x, report, message);
-      }
-      if(s != RANGE_EXCEEDED || retry == 5) break;
-      grid = Fixed_point_grid(grid.K + 4);
-    }
-    if(s != SUCCESS) return finish(s, prefix + message);
-  }
+  s = project_stage(opt, S, report, message);
+  if(s != SUCCESS) return finish(s, message);
+  repair_stage(opt, S, report);
 
-  // 4b. flip repair (Sec. 5.4): moves that keep every row exact, each checked exactly -----------
-  report.flips_after = count_flips(cm, st, x);
-  report.flips_after_repair = report.flips_after;
-  std::string flip_note;
-  if(opt.repair_flips && !already_exact) {
-    t = Clock::now();
-    const Flip_repair_result fr = repair_flips(cm, st, rs, full, grid, ubar, x);
-    report.repair_ms = ms_since(t);
-    report.flips_after_repair = fr.flips_after;
-    report.flips_unrepaired = fr.unrepaired;
-    report.repair_moves = fr.moves;
-    if(fr.unrepaired > 0) {
-      flip_note = "; " + std::to_string(fr.unrepaired) + " flip(s) introduced by snapping could not be repaired locally (faces";
-      for(std::size_t i = 0; i < fr.unrepaired_faces.size() && i < 10; ++i) flip_note += " " + std::to_string(fr.unrepaired_faces[i]);
-      flip_note += fr.unrepaired_faces.size() > 10 ? " ...)" : ")";
-    }
-  } else {
-    report.flips_unrepaired = count_introduced_flips(cm, st, ubar, x);
-  }
-
-  // 5. exact verification of every row of the full system ------------------------------------
-  t = Clock::now();
-  const long bad = first_violated_row(full, x);
+  t = Snap_clock::now();
+  s = verify_stage(S, report, message);
   report.verify_ms = ms_since(t);
-  if(bad >= 0) {
-    const int e = full.edge[std::size_t(bad)];
-    return finish(EXACTNESS_CHECK_FAILED,
-                  "row " + std::to_string(bad) + " of the full system (" +
-                  (e >= 0 ? "edge " + vertex_pair_name(cm, cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e))) +
-                  ") does not hold exactly after snapping; nothing was written");
-  }
+  if(s != SUCCESS) return finish(s, message);
 
-  // statistics ---------------------------------------------------------------------------------
-  double max_change = 0, sum_change = 0;
-  for(std::size_t i = 0; i < n_vars; ++i) max_change = (std::max)(max_change, std::fabs(x[i] - ubar[i]));
-  for(int v : constrained_vars) sum_change += std::fabs(x[v] - ubar[v]);
-  report.max_change = relative(max_change);
-  report.mean_change = constrained_vars.empty() ? 0. : relative(sum_change / double(constrained_vars.size()));
-
-  // 6. write the corners of the changed sectors (and border halfedges that mirror them) --------
-  typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
-  typedef typename CGAL::Kernel_traits<Point_2>::Kernel::FT FT;
-  std::vector<char> changed(st.n_sectors, 0);
-  for(int i = 0; i < st.n_sectors; ++i)
-    changed[i] = !(x[2 * i] == ubar[2 * i] && x[2 * i + 1] == ubar[2 * i + 1]);
-  std::size_t written = 0;
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    int corner = h;
-    if(cm.is_border_halfedge(h)) {
-      // a border halfedge that holds the UV of the corner (target(h), face(prev(opposite(h))))
-      // (the Seam_mesh convention) is kept in sync with it
-      corner = cm.prev[cm.opp[h]];
-      const auto p = get(uvmap, desc.halfedges[h]);
-      if(!(CGAL::to_double(p.x()) == cm.u[corner] && CGAL::to_double(p.y()) == cm.v[corner])) continue;
-    }
-    const int sec = st.sector_of[corner];
-    if(!changed[sec]) continue;
-    put(uvmap, desc.halfedges[h], Point_2(FT(x[2 * sec]), FT(x[2 * sec + 1])));
-    ++written;
-  }
-
-  report.total_ms = ms_since(t_start);
-  std::string summary = already_exact ? "the input is already exactly seamless; nothing was changed"
-                                      : "exactly seamless; " + std::to_string(written) + " corner UVs written";
-  summary += " (" + std::to_string(report.cut_edges) + " cut edges, " + std::to_string(report.align_edges) +
-             " align edges, " + std::to_string(report.constraints) + " constraints, " +
-             (opt.use_reduced_system ? std::to_string(report.nodes) + " nodes, " : std::string()) +
-             "system " + std::to_string(report.system_rows) + " x " + std::to_string(report.system_columns) + ")";
-  summary += flip_note;
-  return finish(SUCCESS, summary);
+  write_stage(uvmap, S);
+  return finish(SUCCESS, success_summary(opt, S, report));
 }
 
 } // namespace internal
