@@ -611,7 +611,10 @@ static void test_flip_repair_synthetic()
 
   Mesh m0 = m, m1 = m;
   UV_map uv0 = uv_of(m0), uv1 = uv_of(m1);
-  SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::repair_flips(false));
+  // a const mesh and one chain of CGAL's and the package's parameters (the mesh is only read)
+  const Mesh& const_m0 = m0;
+  SS::Snap_report r0 = SS::snap_seamless_parameterization(
+      const_m0, uv0, SS::parameters::verbose(false).repair_flips(false).use_reduced_system(true));
   SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv1);
   assert(r0.status == SS::SUCCESS && r1.status == SS::SUCCESS);
   assert(r0.cut_branches == 1);

@@ -191,7 +191,7 @@ namespace Seamless_snapping {
  */
 template <class TriangleMesh, class HalfedgeUVMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
-Snap_report snap_seamless_parameterization(TriangleMesh& tm, HalfedgeUVMap uv,
+Snap_report snap_seamless_parameterization(const TriangleMesh& tm, HalfedgeUVMap uv,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;

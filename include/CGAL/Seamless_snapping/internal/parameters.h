@@ -29,36 +29,81 @@ enum connection_constraints_t{ connection_constraints };// range of Connection_c
 enum repair_flips_t      { repair_flips };      // bool: repair UV flips introduced by snapping (Sec. 5.4, default true)
 } // namespace snap_np
 
+// The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
+// SS_NP(tag type, function name). Every use below expands this one list.
+#define CGAL_SEAMLESS_SNAPPING_NAMED_PARAMETERS(SS_NP)       \
+  SS_NP(seam_edge_map_t,           seam_edge_map)            \
+  SS_NP(rotation_map_t,            rotation_map)             \
+  SS_NP(align_boundary_t,          align_boundary)           \
+  SS_NP(use_reduced_system_t,      use_reduced_system)       \
+  SS_NP(alignment_tolerance_t,     alignment_tolerance)      \
+  SS_NP(rotation_tolerance_t,      rotation_tolerance)       \
+  SS_NP(weld_vertices_t,           weld_vertices)            \
+  SS_NP(connection_constraints_t,  connection_constraints)   \
+  SS_NP(repair_flips_t,            repair_flips)
+
 namespace parameters {
 
-// Everything from CGAL::parameters (verbose(), geom_traits(), default_values(), ...) is
-// reachable as CGAL::Seamless_snapping::parameters::xxx as well.
+// A pack of named parameters that chains both CGAL's and the package's parameters in one
+// expression, in any order: `SS::parameters::verbose(true).repair_flips(false).geom_traits(k)`.
+// It *is* a CGAL::Named_function_parameters (public base, no data of its own), so CGAL's
+// get_parameter()/choose_parameter() and every CGAL function taking named parameters accept it.
+// (CGAL 5.5 cannot get new member functions on Named_function_parameters; CGAL >= 6 has the
+// same idea for its packages.)
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  typedef CGAL::Named_function_parameters<T, Tag, Base> cgal_parameters;
+  typedef Named_function_parameters<T, Tag, Base> self;
+
+  Named_function_parameters() : cgal_parameters() {}
+  explicit Named_function_parameters(const T& v) : cgal_parameters(v) {}
+  Named_function_parameters(const T& v, const Base& b) : cgal_parameters(v, b) {}
+
+#define CGAL_add_named_parameter(X, Y, Z)                                                 \
+  template <typename K>                                                                   \
+  Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const            \
+  { return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this); }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+#define CGAL_SEAMLESS_SNAPPING_MEMBER(TAG, NAME)                                          \
+  template <typename K>                                                                   \
+  Named_function_parameters<K, snap_np::TAG, self> NAME(const K& k) const                 \
+  { return Named_function_parameters<K, snap_np::TAG, self>(k, *this); }
+  CGAL_SEAMLESS_SNAPPING_NAMED_PARAMETERS(CGAL_SEAMLESS_SNAPPING_MEMBER)
+#undef CGAL_SEAMLESS_SNAPPING_MEMBER
+};
+
+// Everything else of CGAL::parameters (default_values(), choose_parameter(), ...) is reachable as
+// CGAL::Seamless_snapping::parameters::xxx as well. The functions declared below hide CGAL's
+// functions of the same name in qualified calls, so that SS::parameters::NAME(v) always starts a
+// chainable pack.
 using namespace CGAL::parameters;
 
-// NAME(v)     : starts a new pack, like CGAL::parameters::NAME(v).
-// NAME(v, np) : appends to an existing pack `np` (CGAL 5.5 packs cannot get new member functions).
-#define CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(TAG, NAME)                          \
-  template <typename K>                                                                \
-  CGAL::Named_function_parameters<K, snap_np::TAG>                                     \
-  NAME(const K& k)                                                                     \
-  { return CGAL::Named_function_parameters<K, snap_np::TAG>(k); }                      \
-  template <typename K, typename T, typename Tag, typename Base>                       \
-  CGAL::Named_function_parameters<K, snap_np::TAG,                                     \
-                                  CGAL::Named_function_parameters<T, Tag, Base> >      \
-  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)            \
-  { return CGAL::Named_function_parameters<K, snap_np::TAG,                            \
-                 CGAL::Named_function_parameters<T, Tag, Base> >(k, np); }
+// CGAL's parameters as free functions that start a chainable pack
+#define CGAL_add_named_parameter(X, Y, Z)                                                 \
+  template <typename K>                                                                   \
+  Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k)                        \
+  { return Named_function_parameters<K, CGAL::internal_np::X>(k); }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
 
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(seam_edge_map_t,       seam_edge_map)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(rotation_map_t,        rotation_map)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(align_boundary_t,      align_boundary)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(use_reduced_system_t,  use_reduced_system)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(alignment_tolerance_t, alignment_tolerance)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(rotation_tolerance_t,  rotation_tolerance)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(weld_vertices_t,       weld_vertices)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(connection_constraints_t, connection_constraints)
-CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER(repair_flips_t,        repair_flips)
-#undef CGAL_SEAMLESS_SNAPPING_ADD_NAMED_PARAMETER
+// The package's parameters as free functions.
+// NAME(v)     : starts a new pack.
+// NAME(v, np) : appends to an existing pack `np` (older spelling, kept for compatibility;
+//               prefer np.NAME(v)).
+#define CGAL_SEAMLESS_SNAPPING_FREE_FUNCTION(TAG, NAME)                                   \
+  template <typename K>                                                                   \
+  Named_function_parameters<K, snap_np::TAG> NAME(const K& k)                             \
+  { return Named_function_parameters<K, snap_np::TAG>(k); }                               \
+  template <typename K, typename T, typename Tag, typename Base>                           \
+  Named_function_parameters<K, snap_np::TAG, CGAL::Named_function_parameters<T, Tag, Base> > \
+  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)               \
+  { return Named_function_parameters<K, snap_np::TAG,                                     \
+                                     CGAL::Named_function_parameters<T, Tag, Base> >(k, np); }
+CGAL_SEAMLESS_SNAPPING_NAMED_PARAMETERS(CGAL_SEAMLESS_SNAPPING_FREE_FUNCTION)
+#undef CGAL_SEAMLESS_SNAPPING_FREE_FUNCTION
 
 // combine(np1, np2): every entry of np2 stacked on top of np1 (CGAL >= 5.6 offers the member
 // np1.combine(np2); CGAL 5.5.1 does not).
@@ -77,5 +122,7 @@ auto combine(const A& a, const CGAL::Named_function_parameters<T, Tag, Base>& b)
 } // namespace parameters
 } // namespace Seamless_snapping
 } // namespace CGAL
+
+#undef CGAL_SEAMLESS_SNAPPING_NAMED_PARAMETERS
 
 #endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_PARAMETERS_H

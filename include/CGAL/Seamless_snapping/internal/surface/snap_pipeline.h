@@ -166,7 +166,7 @@ inline double ms_since(Snap_clock::time_point t)
 
 // 1a. corner mesh, cut edges, sectors, cones, rotations k, align edges (Sec. 5, 5.1)
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
-Status extract_seams(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
+Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
                      const RotationOf& rotation_of, bool has_rotations,
                      const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt,
                      Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
@@ -386,7 +386,7 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
 // The overrides are given per edge/halfedge descriptor through callables, evaluated after the
 // corner mesh is built (they need its numbering).
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
-Snap_report snap_pipeline(TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
+Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
                           const RotationOf& rotation_of, bool has_rotations,
                           const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt)
 {
