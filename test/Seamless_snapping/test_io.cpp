@@ -20,6 +20,7 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
+#include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include <algorithm>
@@ -33,6 +34,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -613,6 +615,83 @@ static void test_seam_mesh()
   corner[inner] = old;
 }
 
+// ------------------------------------------------------------------------------------------
+// libigl-style matrices (V, F, UV, FUV): an n x n grid whose upper half is rotated by 90 degrees
+// and translated (one cut line from border to border), the rotated UVs perturbed by ~1e-13. UV
+// rows are shared by the corners of one sector, as MIQ/libigl files do.
+static void test_matrices()
+{
+  const int n = 6, half = n / 2;
+  auto vid = [&](int i, int j) { return j * (n + 1) + i; };
+  Eigen::MatrixXd V((n + 1) * (n + 1), 3);
+  for(int j = 0; j <= n; ++j) for(int i = 0; i <= n; ++i) V.row(vid(i, j)) << double(i) / n, double(j) / n, 0.;
+  std::vector<std::array<double, 2> > uvs;
+  std::map<std::pair<int, bool>, int> row_of;            // (vertex, above the cut) -> UV row
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> noise(-1e-13, 1e-13);
+  auto uv_row = [&](int v, bool above) {
+    auto ins = row_of.emplace(std::make_pair(v, above), int(uvs.size()));
+    if(ins.second) {
+      const double x = V(v, 0), y = V(v, 1);
+      uvs.push_back(above ? std::array<double, 2>{-y + 3.25 + noise(rng), x + 0.5 + noise(rng)} : std::array<double, 2>{x, y});
+    }
+    return ins.first->second;
+  };
+  std::vector<std::array<int, 3> > faces, fuvs;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      for(const std::array<int, 3>& t : {std::array<int, 3>{vid(i, j), vid(i + 1, j), vid(i + 1, j + 1)},
+                                         std::array<int, 3>{vid(i, j), vid(i + 1, j + 1), vid(i, j + 1)}}) {
+        faces.push_back(t);
+        fuvs.push_back({uv_row(t[0], j >= half), uv_row(t[1], j >= half), uv_row(t[2], j >= half)});
+      }
+  Eigen::MatrixXi F(faces.size(), 3), FUV(faces.size(), 3);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) { F(f, k) = faces[f][k]; FUV(f, k) = fuvs[f][k]; }
+  Eigen::MatrixXd UV(uvs.size(), 2);
+  for(std::size_t r = 0; r < uvs.size(); ++r) UV.row(r) << uvs[r][0], uvs[r][1];
+
+  CHECK(!SS::is_exactly_seamless(V, F, UV, FUV), "matrices: the perturbed grid is not exactly seamless");
+  Eigen::MatrixXd UV_out;
+  Eigen::MatrixXi FUV_out;
+  const SS::Snap_report r = SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out);
+  CHECK(r.status == SS::SUCCESS, "matrices: snap: " << r.message);
+  CHECK(r.cut_edges == std::size_t(n), "matrices: " << r.cut_edges << " cut edges, expected " << n);
+  CHECK(FUV_out == FUV && UV_out.rows() == UV.rows(), "matrices: the (UV, FUV) layout is kept");
+  CHECK(SS::is_exactly_seamless(V, F, UV_out, FUV_out), "matrices: the result is exactly seamless");
+  CHECK((UV_out - UV).cwiseAbs().maxCoeff() < 1e-11, "matrices: the change is of the size of the noise");
+  // an exact input comes back bit-identical
+  Eigen::MatrixXd UV2;
+  Eigen::MatrixXi FUV2;
+  CHECK(SS::snap_seamless_parameterization(V, F, UV_out, FUV_out, UV2, FUV2).status == SS::SUCCESS &&
+        UV2 == UV_out && FUV2 == FUV_out, "matrices: exact input unchanged");
+
+  // bad input: refused with a message naming the matrix, outputs untouched
+  const Eigen::MatrixXd keep = Eigen::MatrixXd::Constant(1, 2, 42.);
+  const Eigen::MatrixXi keep_i = Eigen::MatrixXi::Constant(1, 3, 42);
+  auto refused = [&](const Eigen::MatrixXd& v, const Eigen::MatrixXi& f, const Eigen::MatrixXd& uv, const Eigen::MatrixXi& fuv,
+                     const std::string& needle) {
+    Eigen::MatrixXd uo = keep;
+    Eigen::MatrixXi fo = keep_i;
+    const SS::Snap_report b = SS::snap_seamless_parameterization(v, f, uv, fuv, uo, fo);
+    CHECK(b.status == SS::INVALID_INPUT && b.message.find(needle) != std::string::npos && uo == keep && fo == keep_i,
+          "matrices: expected INVALID_INPUT with '" << needle << "', got " << SS::status_name(b.status) << ": " << b.message);
+  };
+  Eigen::MatrixXi F_bad = F;
+  F_bad(3, 1) = int(V.rows());
+  refused(V, F_bad, UV, FUV, "F(3, 1)");
+  Eigen::MatrixXi FUV_bad = FUV;
+  FUV_bad(5, 2) = -1;
+  refused(V, F, UV, FUV_bad, "FUV(5, 2)");
+  refused(V, F, UV, Eigen::MatrixXi(FUV.leftCols(2)), "FUV must be");
+  Eigen::MatrixXd UV_nan = UV;
+  UV_nan(0, 1) = std::nan("");
+  refused(V, F, UV_nan, FUV, "UV(0, 1)");
+  Eigen::MatrixXi F_twice = F;
+  F_twice.row(1) = F.row(0);                                 // the same face twice: a non-manifold edge
+  refused(V, F_twice, UV, FUV, "F row");
+}
+
 int main()
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -623,6 +702,7 @@ int main()
   test_shared_data(tmp);
   test_orbifold(tmp);
   test_seam_mesh();
+  test_matrices();
   fs::remove_all(tmp);
   std::printf("test_io: %s (%d failures, %.1f s)\n", failures == 0 ? "OK" : "FAILED", failures, ms_since(t0) / 1000);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

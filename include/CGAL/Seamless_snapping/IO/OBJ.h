@@ -296,9 +296,11 @@ struct Bits3_hash
 
 // Soup -> mesh. Validates the connectivity on a scratch mesh first, then replays the same
 // operations on `tm` (which cannot fail then), so that a failure leaves `tm` and `uv` untouched.
+// With `corners`, (*corners)[f][k] is the halfedge whose target is corner k of soup face f.
 template <class TriangleMesh, class VPM, class HalfedgeUVMap>
 Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv,
-                  const std::string& where, std::string& message)
+                  const std::string& where, std::string& message,
+                  std::vector<std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3> >* corners = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh>                  GT;
   typedef typename GT::vertex_descriptor                     vertex_descriptor;
@@ -387,6 +389,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   }
 
   // 4. replay on tm; every operation succeeded on the scratch mesh, so it succeeds here too
+  if(corners != nullptr) corners->assign(soup.face_v.size(), {});
   std::vector<vertex_descriptor> vs(n_used);
   for(std::size_t i = 0; i < nv; ++i)
     if(rep[i] == i && id[i] != none) {
@@ -404,6 +407,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
         if(fv[k] == target(h, tm)) {
           const std::array<double, 2>& t = soup.uvs[soup.face_vt[f][k]];
           put(uv, h, Point_2(t[0], t[1]));
+          if(corners != nullptr) (*corners)[f][std::size_t(k)] = h;
         }
   }
 

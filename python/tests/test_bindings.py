@@ -1,0 +1,197 @@
+"""Tests of the Python bindings. Exactness is checked here, independently of the C++ checker, in
+rational arithmetic (fractions.Fraction holds every double exactly)."""
+import os
+import random
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import seamless_snapping as ss
+
+SHARED = os.environ.get("SS_SHARED_DATA_DIR", "")
+
+
+def read_obj(path):
+    """V, F, UV, FUV of an OBJ with per-corner vt (triangles; 'f v/vt', 'f v/vt/vn', negative indices)."""
+    V, UV, F, FUV = [], [], [], []
+    with open(path) as fh:
+        for line in fh:
+            t = line.split()
+            if not t:
+                continue
+            if t[0] == "v":
+                V.append([float(x) for x in t[1:4]])
+            elif t[0] == "vt":
+                UV.append([float(x) for x in t[1:3]])
+            elif t[0] == "f":
+                vs, ts = [], []
+                for c in t[1:]:
+                    p = c.split("/")
+                    v, vt = int(p[0]), int(p[1])
+                    vs.append(v - 1 if v > 0 else len(V) + v)
+                    ts.append(vt - 1 if vt > 0 else len(UV) + vt)
+                assert len(vs) == 3
+                F.append(vs)
+                FUV.append(ts)
+    return np.array(V), np.array(F), np.array(UV), np.array(FUV)
+
+
+def rot(k, p):
+    x, y = p
+    for _ in range(k % 4):
+        x, y = -y, x
+    return (x, y)
+
+
+def seam_violations(V, F, UV, FUV, weld):
+    """Cut edges whose two sides are not related by an exact rotation k*90 + translation (Eq. 4), in
+    Fractions. Vertices with bit-identical positions are one vertex when `weld`."""
+    key = {}
+    vid = []
+    for p in V:
+        k = tuple(p.tolist()) if weld else len(vid)
+        vid.append(key.setdefault(k, len(key)))
+    corner = {}   # directed edge (a, b) -> (uv of a, uv of b) in the face that holds it
+    for f in range(len(F)):
+        for k in range(3):
+            a, b = vid[F[f][k]], vid[F[f][(k + 1) % 3]]
+            ua = tuple(Fraction(x) for x in UV[FUV[f][k]])
+            ub = tuple(Fraction(x) for x in UV[FUV[f][(k + 1) % 3]])
+            corner[(a, b)] = (ua, ub)
+    bad, cut = 0, 0
+    for (a, b), (pa, pb) in corner.items():
+        if (b, a) not in corner or a > b:
+            continue
+        qb, qa = corner[(b, a)]
+        if pa == qa and pb == qb:
+            continue
+        cut += 1
+        ok = False
+        for k in range(4):
+            ra, rb = rot(k, pa), rot(k, pb)
+            ta = (qa[0] - ra[0], qa[1] - ra[1])
+            tb = (qb[0] - rb[0], qb[1] - rb[1])
+            if ta == tb:
+                ok = True
+                break
+        bad += 0 if ok else 1
+    return bad, cut
+
+
+def cut_grid(n=8, noise=1e-12, seed=1):
+    """A planar n x n grid whose upper half is rotated by 90 degrees and translated (one cut line
+    from border to border, no cone), with the upper corners perturbed by `noise`: seamless up to noise."""
+    rng = random.Random(seed)
+    V = [[i / n, j / n, 0.0] for j in range(n + 1) for i in range(n + 1)]
+    F, FUV, UV = [], [], []
+    idx = lambda i, j: j * (n + 1) + i
+    half = n // 2
+    for j in range(n):
+        for i in range(n):
+            for tri in ((idx(i, j), idx(i + 1, j), idx(i + 1, j + 1)), (idx(i, j), idx(i + 1, j + 1), idx(i, j + 1))):
+                above = j >= half
+                ts = []
+                for v in tri:
+                    x, y = V[v][0], V[v][1]
+                    if above:
+                        x, y = -y + 3.25 + rng.uniform(-noise, noise), x + 0.5 + rng.uniform(-noise, noise)
+                    UV.append([x, y])
+                    ts.append(len(UV) - 1)
+                F.append(list(tri))
+                FUV.append(ts)
+    return np.array(V), np.array(F), np.array(UV), np.array(FUV)
+
+
+def test_snap_generated_cut_grid():
+    V, F, UV, FUV = cut_grid()
+    bad, cut = seam_violations(V, F, UV, FUV, weld=False)
+    assert cut > 0 and bad > 0, "the generated input must be inexact"
+    assert not ss.is_exactly_seamless(V, F, UV, FUV)
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV)
+    assert report["status"] == "SUCCESS"
+    assert FUV2.shape == FUV.shape
+    bad2, cut2 = seam_violations(V, F, UV2, FUV2, weld=False)
+    assert bad2 == 0 and cut2 == cut
+    assert ss.is_exactly_seamless(V, F, UV2, FUV2)
+    assert np.max(np.abs(UV2[FUV2] - UV[FUV])) < 1e-9        # a small change
+    # an exact input comes back unchanged
+    UV3, FUV3, report3 = ss.snap(V, F, UV2, FUV2)
+    assert np.array_equal(UV3, UV2) and np.array_equal(FUV3, FUV2)
+
+
+def test_snap_failure_is_reported_and_raises():
+    V, F, UV, FUV = cut_grid()
+    UV = UV.copy()
+    UV[0, 0] = np.nan
+    with pytest.raises(ss.SnapError) as e:
+        ss.snap(V, F, UV, FUV)
+    assert e.value.report["status"] == "INVALID_INPUT"
+    uv, fuv, report = ss.snap(V, F, UV, FUV, raise_on_failure=False)
+    assert uv is None and fuv is None and report["status"] == "INVALID_INPUT"
+    with pytest.raises(ss.SnapError):
+        ss.snap(V, F[:, :2], UV, FUV)
+
+
+def exact_rows(C, b, x):
+    C = C.tocsr()
+    for i in range(C.shape[0]):
+        s = sum(Fraction(int(v)) * Fraction(x[j]) for j, v in zip(C.indices[C.indptr[i]:C.indptr[i + 1]],
+                                                                   C.data[C.indptr[i]:C.indptr[i + 1]]))
+        if s != b[i]:
+            return False
+    return True
+
+
+def test_project_scipy_sparse():
+    sp = pytest.importorskip("scipy.sparse")
+    rng = np.random.default_rng(3)
+    n, m = 60, 25
+    rows, cols, vals = [], [], []
+    for i in range(m):                       # seamless-like rows: x_a - x_b + x_c - x_d = 0
+        a, b_, c, d = rng.choice(n, 4, replace=False)
+        rows += [i] * 4
+        cols += [a, b_, c, d]
+        vals += [1, -1, 1, -1]
+    C = sp.coo_matrix((vals, (rows, cols)), shape=(m, n))
+    b = np.zeros(m, dtype=np.int64)
+    xbar = rng.uniform(-1, 1, n)
+    assert not exact_rows(C, b, xbar)
+    x, report = ss.project(C.tocsc(), b, xbar)
+    assert report["status"] == "SUCCESS"
+    assert exact_rows(C, b, x)
+    assert np.max(np.abs(x - xbar)) < 10   # bounded; the exact check above is the point
+    # the same system as a dense integer array
+    x2, _ = ss.project(C.toarray(), b, xbar)
+    assert exact_rows(C, b, x2)
+
+
+def test_project_infeasible_and_bad_input():
+    sp = pytest.importorskip("scipy.sparse")
+    C = sp.csr_matrix(np.array([[3]]))
+    with pytest.raises(ss.SnapError) as e:
+        ss.project(C, [1], [0.3])                 # 3 x = 1 has no double solution
+    assert e.value.report["status"] != "SUCCESS"
+    with pytest.raises(ValueError):
+        ss.project(np.array([[0.5]]), [0], [0.0])  # non-integer C
+    with pytest.raises(ValueError):
+        ss.project(C, [1, 2], [0.0])               # b of the wrong size
+
+
+SHARED_FILES = [("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", False),
+                ("directional/torus-hex-param.obj", True),
+                ("libqex/fandisk_param.obj", False)]
+
+
+@pytest.mark.parametrize("name,weld", SHARED_FILES)
+def test_snap_shared_data(name, weld):
+    path = os.path.join(SHARED, name)
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = read_obj(path)
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld)
+    assert report["status"] == "SUCCESS", report["message"]
+    bad, cut = seam_violations(V, F, UV2, FUV2, weld=weld)
+    assert cut > 0 and bad == 0
+    assert ss.is_exactly_seamless(V, F, UV2, FUV2, weld=weld)
+    assert report["max_change"] < 1e-5
