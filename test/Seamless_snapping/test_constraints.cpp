@@ -15,6 +15,9 @@
 //                                                        of a cone (holonomy), reduced and unreduced
 //   connections: invalid paths                           empty, disconnected, foreign halfedge, bad component:
 //                                                        INVALID_INPUT naming the constraint, map bit-identical
+//   right-hand sides                                     Constraint_rows with b != 0: the exact residual is
+//                                                        C x - b, 0 = b != 0 is recorded as a contradiction,
+//                                                        project_rows() solves C x = b exactly (scale 2^j too)
 //
 // The independent exact check (Gmpq unfolding along the face strip) is in connection_test_utils.h.
 //
@@ -389,8 +392,36 @@ static void test_invalid()
   std::cout << "connections: invalid paths: OK\n";
 }
 
+// Constraint_rows with integer right-hand sides, through the exact check and project_rows()
+static void test_right_hand_sides()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  for(int j : {0, 10, 30}) {             // the same system scaled by 2^j (b stays integer)
+    const double scale = std::ldexp(1., j);
+    SI::Constraint_rows rows;
+    const long b0 = 3L << j, b1 = 2L << j;
+    assert(rows.add({{0, 1}, {2, -1}}, 0, b0));   // x0 - x2 = 3 s
+    assert(rows.add({{2, 1}}, 1, b1));            // x2 = 2 s
+    assert(!rows.add({{1, 1}, {1, -1}}, 7, 4));   // 0 = 4: not stored, recorded
+    assert(!rows.add({{1, 1}, {1, -1}}, 8));      // 0 = 0: not stored, not recorded
+    assert(rows.size() == 2 && rows.contradictions == std::vector<int>(1, 7));
+    std::vector<double> x = {5 * scale, 0.25, 2 * scale};
+    assert(SI::first_violated_row(rows, x) == -1 && SI::max_abs_residual(rows, x) == 0);
+    x[2] = 2.5 * scale;
+    assert(SI::first_violated_row(rows, x) == 0);
+    std::vector<double> y = {4.9 * scale, 0.25, 2.1 * scale};
+    SS::Snap_report report;
+    std::string message;
+    const SI::Fixed_point_grid grid = SI::Fixed_point_grid::from_max_abs(5 * scale, 1);
+    assert(SI::project_rows(rows, grid, y, report, message) == SS::SUCCESS);
+    assert(y[0] == 5 * scale && y[2] == 2 * scale && y[1] == 0.25);   // C y = b exactly; x1 is in no row
+  }
+  std::cout << "right-hand sides: OK\n";
+}
+
 int main()
 {
+  test_right_hand_sides();
   test_invalid();
   test_cycles();
   test_data_meshes();

@@ -251,7 +251,11 @@ inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topo
       }
       terms.emplace_back(t.first, int(t.second));
     }
-    rs.node_rows.add(terms, rows.edge[i]);
+    if(!rs.node_rows.add(terms, rows.edge[i], rows.rhs[i]) && rows.rhs[i] != 0) {
+      message = connection_name(std::size_t(-1 - rows.edge[i])) + ": after the substitution of Eq. (9) the row reads 0 = " +
+                std::to_string(rows.rhs[i]) + ": the constraints contradict each other";
+      return INFEASIBLE;
+    }
   }
   return SUCCESS;
 }

@@ -32,10 +32,12 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// residual sum_j C_ij x_j of row i, exactly (CGAL::Mpzf: exact sums and products of doubles)
+// residual sum_j C_ij x_j - b_i of row i, exactly (CGAL::Mpzf: exact sums and products of doubles;
+// |b_i| < 2^53 is exact as a double)
 inline CGAL::Mpzf exact_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
 {
-  CGAL::Mpzf r(0);
+  CGAL_precondition(rows.rhs[i] < (long(1) << 53) && rows.rhs[i] > -(long(1) << 53));
+  CGAL::Mpzf r = -CGAL::Mpzf(double(rows.rhs[i]));
   for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k)
     r = r + CGAL::Mpzf(x[rows.col[k]]) * CGAL::Mpzf(double(rows.coef[k]));
   return r;
@@ -49,7 +51,7 @@ inline long first_violated_row(const Constraint_rows& rows, const std::vector<do
   return -1;
 }
 
-// max_i |sum_j C_ij x_j|, computed exactly, then rounded to double.
+// max_i |sum_j C_ij x_j - b_i|, computed exactly, then rounded to double.
 inline double max_abs_residual(const Constraint_rows& rows, const std::vector<double>& x)
 {
   CGAL::Mpzf m(0);

@@ -19,6 +19,8 @@
 //   a sum of three grid values with coefficients +-1, evaluated by the safe dot product (Alg. 5),
 //   hence exactly (step 3).
 // Align branch with component c: u_{t+1}|c <- u_0|c (exact copy); the other component is untouched.
+// The branch rows are homogeneous (reduced_system.h): rows with b != 0 are node rows, solved by the
+// projection, so no constant enters here.
 // A result outside (-delta, delta) is RANGE_EXCEEDED, a stuck safe dot SAFE_DOT_FAILED.
 
 #include <CGAL/Seamless_snapping/Status.h>

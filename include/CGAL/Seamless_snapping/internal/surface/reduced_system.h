@@ -31,6 +31,9 @@
 // the rows t < m-1 are solved for u_{t+1}^- after choosing u_{t+1}^+ freely (propagation).
 // Align branch with component c: node row u_0|c - u_m|c = 0 (1 row per align branch); the rows
 // t < m-1 give u_{t+1}|c = u_0|c.
+// Right-hand sides: the rows of Eq. (4) and (5) are homogeneous, so the cumulative rows (Eq. 9)
+// and the branch rows have b = 0; rows with b != 0 (connection/cycle constraints, integer-grid rows)
+// enter the node system by substitution (connection_constraints.h) and keep their b there.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/edge_chains.h>
@@ -65,7 +68,7 @@ struct Reduced_system
   std::size_t n_nodes = 0;                    // node vertices with a cut or align edge
   std::vector<Cut_branch_plan> cut_branches;
   std::vector<Align_branch_plan> align_branches;
-  Constraint_rows node_rows;                  // the node system C over sector variables (b = 0)
+  Constraint_rows node_rows;                  // the node system C x = b over sector variables
 };
 
 // `forced_nodes[v]` (optional): further node vertices, the endpoints of connection and cycle

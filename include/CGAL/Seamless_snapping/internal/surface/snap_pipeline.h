@@ -95,7 +95,8 @@ inline void used_variables(const Constraint_rows& rows, std::size_t n_vars, std:
     if(column_of[i] >= 0) { column_of[i] = int(vars.size()); vars.push_back(int(i)); }
 }
 
-// Projects x onto {C x = 0} for the rows `rows` (over sector variables) with the core, on `grid`.
+// Projects x onto {C x = b} for the rows `rows` (over sector variables, b = rows.rhs) with the core,
+// on `grid` (the addendum's Eq. 2' when b != 0).
 // Writes the constrained variables of x (others untouched).
 inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& grid, std::vector<double>& x,
                            Snap_report& report, std::string& message)
@@ -115,8 +116,7 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
   Projection_options options;
   options.delta_exponent = grid.K;
   Exact_constraint_projection projection(options);
-  const std::vector<long> b(rows.size(), 0);
-  Status s = projection.initialize(rows.size(), vars.size(), triplets, b);
+  Status s = projection.initialize(rows.size(), vars.size(), triplets, rows.rhs);
   const Irref_statistics& stats = projection.statistics();
   report.irref_ms = stats.initialize_ms;
   if(s != SUCCESS) { message = "IRREF of the constraint system: " + projection.message(); return s; }

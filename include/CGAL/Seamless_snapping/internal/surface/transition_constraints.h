@@ -10,8 +10,10 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_TRANSITION_CONSTRAINTS_H
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_TRANSITION_CONSTRAINTS_H
 
-// The full (unreduced) constraint system C u = 0 over the sector variables (Sec. 5.1, 5.2):
-// variable 2s is u and 2s+1 is v of sector s.
+// The full (unreduced) constraint system C u = b over the sector variables (Sec. 5.1, 5.2):
+// variable 2s is u and 2s+1 is v of sector s. The transition and alignment rows below are
+// homogeneous (b = 0); inhomogeneous rows (integer b in UV units, e.g. the integer translations of
+// an integer-grid map) are stated over node sectors and carried by Constraint_rows::rhs.
 //
 // - Transition constraint, Eq. (4), two rows per cut edge e, with h = halfedge(e), o = opposite(h),
 //   i = face(h), j = face(o), a = source(h), b = target(h), k = k(h):
@@ -41,17 +43,20 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// Integer rows with small coefficients over the sector variables, b = 0, compressed row storage.
-// Duplicate columns of a row are summed and zero entries dropped; rows that cancel completely
-// (0 = 0) are not stored.
+// Integer rows with small coefficients over the sector variables, with an integer right-hand side
+// per row (sum_k coef_k x_{col_k} = rhs, rhs in UV units, default 0), compressed row storage.
+// Duplicate columns of a row are summed and zero entries dropped; rows that cancel completely are
+// not stored: 0 = 0 holds for every x, and 0 = b != 0 for none (its edge goes to `contradictions`).
 struct Constraint_rows
 {
   std::vector<std::size_t> start = std::vector<std::size_t>(1, 0);
   std::vector<int> col, coef;
+  std::vector<long> rhs;   // per row: b_i
   std::vector<int> edge;   // per row: the mesh edge it comes from (for messages)
+  std::vector<int> contradictions;   // `from_edge` of rows that cancelled to 0 = b != 0
 
   std::size_t size() const { return start.size() - 1; }
-  bool add(std::vector<std::pair<int, int> > terms, int from_edge)
+  bool add(std::vector<std::pair<int, int> > terms, int from_edge, long b = 0)
   {
     std::sort(terms.begin(), terms.end());
     const std::size_t before = col.size();
@@ -60,8 +65,12 @@ struct Constraint_rows
       for(; i < terms.size() && terms[i].first == c; ++i) sum += terms[i].second;
       if(sum != 0) { col.push_back(c); coef.push_back(sum); }
     }
-    if(col.size() == before) return false;
+    if(col.size() == before) {
+      if(b != 0) contradictions.push_back(from_edge);
+      return false;
+    }
     start.push_back(col.size());
+    rhs.push_back(b);
     edge.push_back(from_edge);
     return true;
   }
