@@ -20,6 +20,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -311,6 +312,7 @@ inline Linear_system random_system(const Random_options& o)
 /// unchanged anyway).
 inline std::vector<double> noisy_input(const Linear_system& s, double relative_noise, std::uint64_t seed)
 {
+  assert(s.solution.size() == s.n);                               // a system grown by hand must resize it
   Rng rng(seed);
   double scale = 0;
   for(double v : s.solution) scale = std::max(scale, std::abs(v));

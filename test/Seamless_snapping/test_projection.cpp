@@ -270,6 +270,7 @@ void test_coefficient_growth()
     const long m0 = long(s.m), n0 = long(s.n);
     for(const Triplet& t : d.triplets) s.triplets.emplace_back(m0 + t.row(), n0 + t.col(), t.value());
     s.m += d.m; s.n += d.n; s.b.resize(s.m, 0);
+    s.solution.resize(s.n, 0.);                                      // the chain's inputs are set below
     SS_test::canonicalize(s);
     std::vector<double> xbar = SS_test::noisy_input(s, 1e-9, 5);
     for(int i = 0; i <= 80; ++i) xbar[std::size_t(n0 + i)] = std::ldexp(1., -i);
@@ -630,9 +631,9 @@ void test_regressions()
       std::int64_t a, b;
       if(from_list) { a = special[std::size_t(it) % special.size()]; b = special[std::size_t(it) / special.size()]; }
       else {
-        const int shift = int(grng.index(63));
-        a = std::int64_t(grng.bits() >> (1 + grng.index(63))) << grng.index(4);
-        b = std::int64_t(grng.bits() >> (1 + grng.index(63))) << (shift % 4);
+        const int shift = int(grng.index(63));                  // magnitudes below 2^63, up to 3 trailing zeros:
+        a = std::int64_t((grng.bits() >> (1 + grng.index(63))) >> 3 << grng.index(4));   // shifted unsigned (no overflow)
+        b = std::int64_t((grng.bits() >> (1 + grng.index(63))) >> 3 << (shift % 4));
         if(grng.bits() & 1) a = -a;
         if(grng.bits() & 1) b = -b;
       }
