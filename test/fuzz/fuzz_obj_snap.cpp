@@ -1,0 +1,56 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+// libFuzzer target: the bytes are an OBJ file (a first line starting with "#weld" turns on
+// weld_vertices), read by read_OBJ_with_corner_uvs() and, when it reads, snapped by
+// snap_seamless_parameterization() with the default parameters. It checks
+//  - a failed read leaves the (empty) mesh empty;
+//  - a successful read gives a mesh with faces;
+//  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
+//  - on any other status, every halfedge UV is bit-identical to what was read.
+// Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
+
+#include "../Seamless_snapping/mesh_test_support.h"
+
+#include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#define FUZZ_REQUIRE(cond, what) \
+  do { if(!(cond)) { std::fprintf(stderr, "fuzz_obj_snap: violated: %s (%s)\n", what, #cond); std::abort(); } } while(0)
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const bool weld = text.compare(0, 5, "#weld") == 0;
+  Mesh m;
+  UV_map uv = uv_of(m);
+  std::istringstream is(text);
+  std::string message;
+  const SS::Status read = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, message, SS::parameters::weld_vertices(weld));
+  if(read != SS::SUCCESS) {
+    FUZZ_REQUIRE(m.number_of_vertices() == 0 && m.number_of_faces() == 0 && m.number_of_halfedges() == 0,
+                 "a failed read leaves the mesh as it was");
+    return 0;
+  }
+  FUZZ_REQUIRE(m.number_of_faces() > 0, "a mesh that reads has faces");
+
+  const std::vector<std::uint64_t> before = uv_bits(m, uv);
+  const SS::Snap_report report = SS::snap_seamless_parameterization(m, uv);
+  if(report.status == SS::SUCCESS)
+    FUZZ_REQUIRE(SS::is_exactly_seamless(m, uv), "SUCCESS means exactly seamless");
+  else
+    FUZZ_REQUIRE(uv_bits(m, uv) == before, "the UV map is untouched on failure");
+  return 0;
+}
