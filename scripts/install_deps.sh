@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what the package needs on Debian 12 (idempotent; does nothing slow when all is present).
 set -euo pipefail
-pkgs=(g++ cmake make libcgal-dev libcgal-demo libeigen3-dev libgmp-dev libmpfr-dev libboost-dev
-      python3-dev pybind11-dev python3-pybind11 python3-numpy python3-scipy python3-pytest)   # Python bindings
+# clang + libclang-rt-14-dev: libFuzzer for the fuzz tests of scripts/test.sh; python3-*: the Python bindings
+pkgs=(g++ cmake make libcgal-dev libcgal-demo libeigen3-dev libgmp-dev libmpfr-dev libboost-dev clang libclang-rt-14-dev
+      python3-dev pybind11-dev python3-pybind11 python3-numpy python3-scipy python3-pytest)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

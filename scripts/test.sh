@@ -1,7 +1,45 @@
 #!/usr/bin/env bash
-# The test command: install dependencies, configure, build, run every test with CTest.
+# The test command (CI runs it via .ci/run): installs the dependencies, builds, and runs every test
+# with one CTest run over three build directories, so that CTest's closing summary covers them all:
+#   $build        Release build (scripts/build.sh): tests compilation_of__*, execution___of__*, package_consumer
+#   $build/asan   the test executables with AddressSanitizer + UndefinedBehaviorSanitizer
+#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g; surface tests in their --sanitizer-subset): sanitized__*
+#   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
+#                 60 s with a fixed seed on generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
+# Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves
+# out the sanitizer and fuzz builds (a quick local run). Any failure makes the script exit non-zero.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/build.sh"
 build="${SEAMLESS_SNAPPING_BUILD_DIR:-$root/build}"
-ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+build="$(cd "$build" && pwd)"
+jobs="$(nproc)"
+dirs=("$build")
+
+if [ "${SEAMLESS_SNAPPING_CHECKS:-1}" != 0 ]; then
+  echo "test: sanitizer build in $build/asan"
+  cmake -S "$root" -B "$build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEAMLESS_SNAPPING_SANITIZE=ON >/dev/null
+  cmake --build "$build/asan" -j "$jobs"
+  dirs+=("$build/asan")
+
+  probe="$build/libfuzzer_probe"
+  mkdir -p "$probe"
+  echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' > "$probe/probe.cpp"
+  if command -v clang++ >/dev/null 2>&1 &&
+     clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" >/dev/null 2>&1; then
+    echo "test: fuzz build in $build/fuzz"
+    cmake -S "$root" -B "$build/fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+          -DSEAMLESS_SNAPPING_FUZZ=ON >/dev/null
+    cmake --build "$build/fuzz" -j "$jobs"
+    dirs+=("$build/fuzz")
+  else
+    echo "test: NOTICE: no clang++ with libFuzzer (Debian: clang libclang-rt-14-dev): the fuzz tests are not run"
+  fi
+fi
+
+# One CTest run over all build directories (CTest's subdirs() takes absolute paths).
+all="$build/all_tests"
+mkdir -p "$all"
+: > "$all/CTestTestfile.cmake"
+for d in "${dirs[@]}"; do echo "subdirs(\"$d\")" >> "$all/CTestTestfile.cmake"; done
+ctest --test-dir "$all" --output-on-failure -j "$jobs"
