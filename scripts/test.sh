@@ -3,7 +3,7 @@
 # with one CTest run over three build directories, so that CTest's closing summary covers them all:
 #   $build        Release build (scripts/build.sh): tests compilation_of__*, execution___of__*, package_consumer
 #   $build/asan   the test executables with AddressSanitizer + UndefinedBehaviorSanitizer
-#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g; surface tests in their --sanitizer-subset): sanitized__*
+#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g1; surface tests in their --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
 #                 60 s with a fixed seed on generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
 # Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves
@@ -18,7 +18,7 @@ dirs=("$build")
 
 if [ "${SEAMLESS_SNAPPING_CHECKS:-1}" != 0 ]; then
   echo "test: sanitizer build in $build/asan"
-  cmake -S "$root" -B "$build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEAMLESS_SNAPPING_SANITIZE=ON >/dev/null
+  cmake -S "$root" -B "$build/asan" -DCMAKE_BUILD_TYPE=Release -DSEAMLESS_SNAPPING_SANITIZE=ON >/dev/null
   cmake --build "$build/asan" -j "$jobs"
   dirs+=("$build/asan")
 
@@ -28,7 +28,7 @@ if [ "${SEAMLESS_SNAPPING_CHECKS:-1}" != 0 ]; then
   if command -v clang++ >/dev/null 2>&1 &&
      clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" >/dev/null 2>&1; then
     echo "test: fuzz build in $build/fuzz"
-    cmake -S "$root" -B "$build/fuzz" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+    cmake -S "$root" -B "$build/fuzz" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
           -DSEAMLESS_SNAPPING_FUZZ=ON >/dev/null
     cmake --build "$build/fuzz" -j "$jobs"
     dirs+=("$build/fuzz")
