@@ -705,6 +705,29 @@ void test_regressions()
 
 } // namespace
 
+// Eigen vectors in and out: the same result as with std::vector, bit for bit; on failure the output
+// vector is untouched.
+void test_eigen_vectors()
+{
+  std::cout << "== Eigen::VectorXd in and out" << std::endl;
+  std::vector<Eigen::Triplet<long> > t = {{0, 0, 1}, {0, 1, -1}, {0, 2, 1}, {0, 3, -1}, {1, 1, 2}, {1, 2, -3}};
+  SS::Exact_constraint_projection p;
+  assert(p.initialize(2, 4, t, std::vector<long>{0, 1}) == SS::SUCCESS);
+  Eigen::VectorXd xbar(4);
+  xbar << 0.3, 0.71, 0.13, -0.2;
+  std::vector<double> xs;
+  Eigen::VectorXd xe;
+  assert(p.project(xbar, xs).status == SS::SUCCESS && p.project(xbar, xe).status == SS::SUCCESS);
+  assert(xe.size() == 4);
+  for(int i = 0; i < 4; ++i) assert(std::memcmp(&xs[std::size_t(i)], &xe[i], sizeof(double)) == 0);
+  assert(CGAL::Gmpq(xe[0]) - CGAL::Gmpq(xe[1]) + CGAL::Gmpq(xe[2]) - CGAL::Gmpq(xe[3]) == 0);
+  assert(2 * CGAL::Gmpq(xe[1]) - 3 * CGAL::Gmpq(xe[2]) == 1);
+  Eigen::VectorXd kept = Eigen::VectorXd::Constant(2, 7.);
+  assert(p.project(Eigen::VectorXd::Constant(3, 0.), kept).status == SS::INVALID_INPUT);   // wrong size
+  assert(kept.size() == 2 && kept[0] == 7. && kept[1] == 7.);
+  std::cout << "same bits as std::vector; failure leaves the output untouched" << std::endl;
+}
+
 int main()
 {
   const Clock::time_point t0 = Clock::now();
@@ -715,6 +738,7 @@ int main()
   test_generated_systems();
   test_qp_reference();
   test_regressions();
+  test_eigen_vectors();
   std::cout << "test_projection: all tests passed in " << ms_since(t0) / 1000. << " s" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -149,6 +149,16 @@ public:
     if(report.status == SUCCESS) x.swap(result);
     return report;
   }
+
+  /// the same, with the output in an `Eigen::VectorXd` (resized to n and written only on `SUCCESS`).
+  template <typename XRange>
+  Projection_report project(const XRange& xbar, Eigen::VectorXd& x) const
+  {
+    std::vector<double> result;
+    const Projection_report report = project(xbar, result);
+    if(report.status == SUCCESS) x = Eigen::Map<const Eigen::VectorXd>(result.data(), Eigen::Index(result.size()));
+    return report;
+  }
   /// @}
 
   /// \name Access (valid after `initialize()`)
