@@ -53,6 +53,7 @@
 #include <vector>
 
 #include "mesh_test_support.h"
+#include <CGAL/Seamless_snapping/diagnose_seamlessness.h>
 typedef SS::Connection_constraint<halfedge_descriptor>         Constraint;
 using namespace connection_test;
 
@@ -94,6 +95,24 @@ static SS::Snap_report snap_and_check(const Mesh& input, const std::vector<Const
     if(cut && get(uv, h) == get(uv, m.prev(h)) && get(uv, o) == get(uv, m.prev(o))) ++zero_length_cuts;
   }
   if(zero_length_cuts == 0) {
+    // the public checks see the same constraints as the snap: every row holds on the result; on the
+    // input, the diagnosis finds the violated rows and agrees with is_exactly_seamless()
+    const auto np = SS::parameters::connection_constraints(std::cref(cc));
+    assert(SS::is_exactly_seamless(m, uv, np));
+    // (the rows are those extracted from the result: a cut edge whose two sides the snap made equal is
+    // no longer a cut edge there, so their number may differ from the input's)
+    const SS::Seamless_diagnosis<Mesh> d = SS::diagnose_seamlessness(m, uv, np);
+    assert(d.status == SS::SUCCESS && d.exact && d.violated_rows == 0 && d.rows > 0);
+    const SS::Seamless_diagnosis<Mesh> din = SS::diagnose_seamlessness(m_in, uv_in, np);
+    if(din.status == SS::SUCCESS) {
+      assert(din.rows == r.constraints);
+      assert(din.exact == (r.max_input_violation == 0));
+      assert(SS::is_exactly_seamless(m_in, uv_in, np) == (SS::is_exactly_seamless(m_in, uv_in) && din.violated_connections == 0));
+      if(!din.exact)
+        assert(din.row >= 0 && !din.corners.empty() && din.residual_double != 0 && din.residual != "0" &&
+               std::fabs(din.residual_double) <= r.max_input_violation * r.uv_diagonal * (1 + 1e-15) + 1e-300 &&
+               (din.kind == "connection") == (din.violated_connections > 0 && din.edge == edge_descriptor()));
+    }
     Mesh m2 = m;
     UV_map uv2 = uv_of(m2);
     SS::Snap_report r2 = SS::snap_seamless_parameterization(

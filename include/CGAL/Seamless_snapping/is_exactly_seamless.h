@@ -10,6 +10,7 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
 #define CGAL_SEAMLESS_SNAPPING_IS_EXACTLY_SEAMLESS_H
 
+#include <CGAL/Seamless_snapping/diagnose_seamlessness.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
@@ -70,6 +71,14 @@ namespace Seamless_snapping {
  *                    as key type and `bool` as value type}
  *     \cgalParamDefault{no such edges}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{connection_constraints}
+ *     \cgalParamDescription{connection and cycle constraints (Eq. 6-8) that must hold exactly, stated as for
+ *                           `snap_seamless_parameterization()` (rotations fitted or from `rotation_map`)}
+ *     \cgalParamType{a range of `Connection_constraint<boost::graph_traits<TriangleMesh>::%halfedge_descriptor>`}
+ *     \cgalParamDefault{none}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::connection_constraints()`; with it, a map whose
+ *                     rotations cannot be fitted gives `false`. `diagnose_seamlessness()` says which row fails and by how much}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \return `true` iff all the above holds exactly. An empty mesh, a non-triangle face or a non-finite UV
@@ -106,10 +115,15 @@ bool is_exactly_seamless(const TriangleMesh& tm, HalfedgeUVMap uv,
                                                                         Default_constrained_map(false));
   const bool has_constrained = !is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
 
-  return internal::is_exactly_seamless_impl(tm, uv,
+  if(!internal::is_exactly_seamless_impl(tm, uv,
                                             [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,
                                             [&](halfedge_descriptor h) { return int(get(rotations, h)); }, has_rotations,
-                                            [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained);
+                                            [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained))
+    return false;
+  if(is_default_parameter<NamedParameters, snap_np::connection_constraints_t>::value) return true;
+  // connection and cycle constraints (Eq. 6-8): their rows as the snap states them, exactly
+  const Seamless_diagnosis<TriangleMesh> d = diagnose_seamlessness(tm, uv, np);
+  return d.status == SUCCESS && d.violated_connections == 0;
 }
 
 } // namespace Seamless_snapping

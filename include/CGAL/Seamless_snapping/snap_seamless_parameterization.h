@@ -14,6 +14,7 @@
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
+#include <CGAL/Seamless_snapping/internal/surface/snap_inputs.h>
 #include <CGAL/Seamless_snapping/internal/surface/snap_pipeline.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -194,51 +195,13 @@ template <class TriangleMesh, class HalfedgeUVMap,
 Snap_report snap_seamless_parameterization(const TriangleMesh& tm, HalfedgeUVMap uv,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::get_parameter_reference;
-  using CGAL::parameters::is_default_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-
-  // seams
-  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_seam_map;
-  typedef typename internal_np::Lookup_named_param_def<snap_np::seam_edge_map_t, NamedParameters,
-                                                       Default_seam_map>::type Seam_map;
-  const Seam_map seams = choose_parameter<Seam_map>(get_parameter(np, snap_np::seam_edge_map), Default_seam_map(false));
-  const bool has_seams = !is_default_parameter<NamedParameters, snap_np::seam_edge_map_t>::value;
-  // rotations
-  typedef CGAL::Constant_property_map<halfedge_descriptor, int> Default_rotation_map;
-  typedef typename internal_np::Lookup_named_param_def<snap_np::rotation_map_t, NamedParameters,
-                                                       Default_rotation_map>::type Rotation_map;
-  const Rotation_map rotations = choose_parameter<Rotation_map>(get_parameter(np, snap_np::rotation_map), Default_rotation_map(0));
-  const bool has_rotations = !is_default_parameter<NamedParameters, snap_np::rotation_map_t>::value;
-  // align edges
-  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_constrained_map;
-  typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
-                                                       Default_constrained_map>::type Constrained_map;
-  const Constrained_map constrained = choose_parameter<Constrained_map>(get_parameter(np, internal_np::edge_is_constrained),
-                                                                        Default_constrained_map(false));
-  const bool has_constrained = !is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
-  // options
-  const internal::Snap_options defaults;
-  internal::Snap_options options;
-  options.align_boundary = choose_parameter(get_parameter(np, snap_np::align_boundary), defaults.align_boundary);
-  options.use_reduced_system = choose_parameter(get_parameter(np, snap_np::use_reduced_system), defaults.use_reduced_system);
-  options.alignment_tolerance = choose_parameter(get_parameter(np, snap_np::alignment_tolerance), defaults.alignment_tolerance);
-  options.rotation_tolerance = choose_parameter(get_parameter(np, snap_np::rotation_tolerance), defaults.rotation_tolerance);
-  options.repair_flips = choose_parameter(get_parameter(np, snap_np::repair_flips), defaults.repair_flips);
-  options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
-  // connection and cycle constraints, in the halfedge numbering of the pipeline
-  internal::connection_paths_from_parameter(tm, get_parameter_reference(np, snap_np::connection_constraints),
-                                            options.connections);
-
+  const internal::Snap_inputs<TriangleMesh, NamedParameters> in(tm, np);
   return internal::snap_pipeline(tm, uv,
-                                 [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,
-                                 [&](halfedge_descriptor h) { return int(get(rotations, h)); }, has_rotations,
-                                 [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained,
-                                 options);
+                                 [&](typename GT::edge_descriptor e) { return in.seam_of(e); }, in.has_seams,
+                                 [&](typename GT::halfedge_descriptor h) { return in.rotation_of(h); }, in.has_rotations,
+                                 [&](typename GT::edge_descriptor e) { return in.constrained_of(e); }, in.has_constrained,
+                                 in.options);
 }
 
 } // namespace Seamless_snapping
