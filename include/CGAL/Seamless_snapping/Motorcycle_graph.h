@@ -1,0 +1,84 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_MOTORCYCLE_GRAPH_H
+#define CGAL_SEAMLESS_SNAPPING_MOTORCYCLE_GRAPH_H
+
+#include <CGAL/Seamless_snapping/trace_isoline.h>
+#include <CGAL/Seamless_snapping/internal/tracing/motorcycle_graph.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * The separatrices of a motorcycle graph and how they ended (the study of Sec. 6.2 of Mandad & Campen 2019).
+ */
+template <class TriangleMesh>
+struct Motorcycle_graph
+{
+  Status status = INVALID_INPUT;                          ///< `SUCCESS` iff the map could be read (see `Isoline_tracer::status()`)
+  std::string message;
+  std::vector<Isoline_trace<TriangleMesh> > separatrices; ///< index = the trace index used by `Isoline_trace::hit_trace`
+  std::vector<int> source_kind;                           ///< per separatrix: 0 cone, 1 border corner, 2 seed (no cones nor corners)
+  std::array<std::size_t, number_of_trace_ends> ends{};   ///< number of separatrices per `Trace_end`
+  std::size_t failed = 0;                                 ///< separatrices that ended in an inconsistency (`is_failure()`)
+  std::size_t cones = 0;                                  ///< cones (interior vertices whose angle sum is not 4 quarter turns)
+  std::size_t border_corners = 0;                         ///< border vertices whose fan is not a half turn
+  std::size_t cones_with_wrong_ray_count = 0;             ///< cones of n quarter turns that do not emit n rays (inexact maps)
+  bool seeded = false;                                    ///< no cones and no border corners: two seeded traces (+u, +v) instead
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ *
+ * traces the separatrices of the motorcycle graph of the map read by `tracer` ([CBK15]; Sec. 6.2 of Mandad & Campen
+ * 2019): from every cone of `n` quarter turns its `n` axis rays, from every border corner the axis rays strictly inside
+ * its fan. The traces advance together, one face at a time, the one with the smallest parametric length first (ties:
+ * smaller index); each stops at a cone, the border, or the trail of any trace laid so far (a T-junction). A ray that
+ * starts along an existing trail stops at once (`EARLIER_TRACE` without segments: the arc exists already).
+ * Without cones and border corners (a torus), two traces (+u and +v) are seeded at the first corner of the mesh,
+ * and `seeded` is set.
+ *
+ * \param max_faces step limit per trace (0: 20 times the number of faces, plus 100)
+ */
+template <class TriangleMesh, class HalfedgeUVMap>
+Motorcycle_graph<TriangleMesh> build_motorcycle_graph(const Isoline_tracer<TriangleMesh, HalfedgeUVMap>& tracer,
+                                                      std::size_t max_faces = 0)
+{
+  Motorcycle_graph<TriangleMesh> g;
+  g.status = tracer.status();
+  g.message = tracer.message();
+  if(g.status != SUCCESS) return g;
+  const internal::tracing::Tracing_map& map = tracer.tracing_map();
+  const internal::tracing::Separatrix_seeds seeds = internal::tracing::separatrix_seeds(map);
+  std::vector<internal::tracing::Trace_run> runs;
+  internal::tracing::Trail_registry trails;
+  internal::tracing::trace_separatrices(map, seeds, max_faces, runs, trails);
+  g.cones = seeds.cones;
+  g.border_corners = seeds.border_corners;
+  g.cones_with_wrong_ray_count = seeds.cones_with_wrong_ray_count;
+  g.seeded = seeds.seeded;
+  g.source_kind = seeds.source_kind;
+  for(const internal::tracing::Trace_run& r : runs) {
+    g.separatrices.push_back(tracer.convert(r));
+    ++g.ends[int(r.end)];
+    if(is_failure(r.end)) ++g.failed;
+  }
+  return g;
+}
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_MOTORCYCLE_GRAPH_H

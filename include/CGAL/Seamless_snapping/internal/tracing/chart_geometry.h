@@ -1,0 +1,115 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_CHART_GEOMETRY_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_CHART_GEOMETRY_H
+
+// Exact geometry in the chart of one face (the UV coordinates of its three corners), for isoline
+// tracing (Sec. 6.2). Doubles are dyadic rationals and convert to CGAL::Gmpq without error; every
+// predicate below is exact (zero tolerance).
+//
+// Trace directions are the four axis directions d_m = R^m (1, 0), m in {0, 1, 2, 3}:
+// +u, +v, -u, -v, with R(x, y) = (-y, x) the counter-clockwise quarter turn (as in rotation_fit.h).
+// Relative to a point P and a direction m, a point x has the coordinates
+//   along(x) = <d_m, x - P>   and   side(x) = cross(d_m, x - P)   (positive: left of the ray).
+// The direction code of a nonzero vector x relative to m lists the 8 classes counter-clockwise:
+//   0 on d_m, 1 strictly between d_m and R d_m, 2 on R d_m, ..., 7 strictly between R^3 d_m and d_m.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+
+#include <CGAL/Gmpq.h>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace tracing {
+
+typedef CGAL::Gmpq FT;
+
+struct Exact_uv
+{
+  FT u, v;
+  bool operator==(const Exact_uv& o) const { return u == o.u && v == o.v; }
+  bool operator!=(const Exact_uv& o) const { return !(*this == o); }
+};
+
+// UV of the corner (target(h), face(h)), exactly
+inline Exact_uv corner_uv(const Corner_mesh& cm, int h) { return Exact_uv{FT(cm.u[h]), FT(cm.v[h])}; }
+
+inline int direction_mod4(int m) { return ((m % 4) + 4) % 4; }
+
+// (along, side) of the vector x relative to direction m
+inline void frame_coordinates(int m, const FT& xu, const FT& xv, FT& along, FT& side)
+{
+  switch(direction_mod4(m)) {
+    case 0: along = xu;  side = xv;  break;
+    case 1: along = xv;  side = -xu; break;
+    case 2: along = -xu; side = -xv; break;
+    default: along = -xv; side = xu; break;
+  }
+}
+
+// P + a * d_m
+inline Exact_uv advance(const Exact_uv& p, int m, const FT& a)
+{
+  switch(direction_mod4(m)) {
+    case 0: return Exact_uv{p.u + a, p.v};
+    case 1: return Exact_uv{p.u, p.v + a};
+    case 2: return Exact_uv{p.u - a, p.v};
+    default: return Exact_uv{p.u, p.v - a};
+  }
+}
+
+// direction code (0..7) of the vector (xu, xv) relative to m; -1 for the zero vector
+inline int direction_code(int m, const FT& xu, const FT& xv)
+{
+  FT a, s;
+  frame_coordinates(m, xu, xv, a, s);
+  const int sa = CGAL::sign(a), ss = CGAL::sign(s);
+  if(sa == 0 && ss == 0) return -1;
+  if(ss == 0) return sa > 0 ? 0 : 4;
+  if(sa == 0) return ss > 0 ? 2 : 6;
+  if(ss > 0) return sa > 0 ? 1 : 3;
+  return sa < 0 ? 5 : 7;
+}
+
+// twice the signed area of the UV triangle (a, b, c)
+inline FT orientation_determinant(const Exact_uv& a, const Exact_uv& b, const Exact_uv& c)
+{
+  return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+}
+
+// sign of the UV orientation of face(h) (corners prev(h), h, next(h)): +1 counter-clockwise
+inline int face_orientation(const Corner_mesh& cm, int h)
+{
+  return CGAL::sign(orientation_determinant(corner_uv(cm, cm.prev[h]), corner_uv(cm, h), corner_uv(cm, cm.next[h])));
+}
+
+// barycentric coordinates of p with respect to the corners (c[0], c[1], c[2]) of a non-degenerate
+// UV triangle: the exact ratios of signed areas
+inline void barycentric(const Exact_uv c[3], const Exact_uv& p, FT b[3])
+{
+  const FT total = orientation_determinant(c[0], c[1], c[2]);
+  b[0] = orientation_determinant(p, c[1], c[2]) / total;
+  b[1] = orientation_determinant(c[0], p, c[2]) / total;
+  b[2] = FT(1) - b[0] - b[1];
+}
+
+// The point at parameter lambda from a to b.
+inline Exact_uv lerp(const Exact_uv& a, const Exact_uv& b, const FT& lambda)
+{
+  return Exact_uv{a.u + lambda * (b.u - a.u), a.v + lambda * (b.v - a.v)};
+}
+
+} // namespace tracing
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_CHART_GEOMETRY_H

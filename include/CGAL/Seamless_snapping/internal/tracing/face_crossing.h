@@ -1,0 +1,155 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_CROSSING_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_CROSSING_H
+
+// Crossing one face along an axis direction, and moving a crossing point through a cut edge
+// (Sec. 6.2), exactly.
+//
+// Face crossing: P is a point of the closed UV triangle of the face, d_m the direction. The points
+// P + a d_m of the triangle form an interval [a0, a1] (the triangle is convex); the trace advances in
+// this face iff a1 > 0, and leaves it at P + a1 d_m: through a vertex or through the interior of an edge.
+//
+// Edge transition: the exit point X on the edge of halfedge h (face i) continues in face j =
+// face(opposite(h)) as X' = R^k X + t, k = k(h) (rotation_fit.h), t = UV_j(w) - R^k UV_i(w) computed
+// exactly from the corner UVs of an endpoint w of the edge. On an exactly seamless map X' lies on the
+// edge in face j and does not depend on w. On an inexact map it may not: the coordinate that is
+// constant along the isoline is kept, X' is placed on the edge in face j at that coordinate, and an
+// isoline that misses the edge on the other side is reported (never guessed). Keeping that coordinate
+// (a dyadic translation of the start's) keeps the rationals small on long traces.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/tracing/chart_geometry.h>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace tracing {
+
+enum Exit_kind { NO_PROGRESS, EXIT_EDGE, EXIT_VERTEX };
+
+struct Face_exit
+{
+  Exit_kind kind = NO_PROGRESS;
+  int h = -1;          // EXIT_EDGE: halfedge of the face whose edge (source(h) -> target(h)) is crossed;
+                       // EXIT_VERTEX: the corner halfedge of the face whose target is the vertex
+  FT lambda;           // EXIT_EDGE: parameter of the exit point from source(h) to target(h)
+  FT along;            // a1 > 0: parametric length of the crossing
+  Exact_uv point;      // P + a1 d_m, in the chart of the face
+};
+
+// `h0`: any halfedge of the face; `p` in its chart, in the closed triangle.
+inline Face_exit cross_face(const Corner_mesh& cm, int h0, const Exact_uv& p, int m)
+{
+  const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
+  Exact_uv uv[3];
+  FT a[3], s[3];
+  int ss[3];
+  for(int i = 0; i < 3; ++i) {
+    uv[i] = corner_uv(cm, c[i]);
+    frame_coordinates(m, uv[i].u - p.u, uv[i].v - p.v, a[i], s[i]);
+    ss[i] = CGAL::sign(s[i]);
+  }
+  Face_exit best;
+  for(int j = 0; j < 3; ++j) {
+    if(ss[j] == 0 && CGAL::is_positive(a[j]) && (best.kind == NO_PROGRESS || a[j] > best.along)) {
+      best.kind = EXIT_VERTEX; best.h = c[j]; best.along = a[j];
+    }
+    const int i = (j + 2) % 3;                 // the edge of c[j] runs from corner c[i] to corner c[j]
+    if(ss[i] * ss[j] < 0) {
+      const FT lambda = s[i] / (s[i] - s[j]);
+      const FT along = a[i] + lambda * (a[j] - a[i]);
+      if(CGAL::is_positive(along) && (best.kind == NO_PROGRESS || along > best.along)) {
+        best.kind = EXIT_EDGE; best.h = c[j]; best.along = along; best.lambda = lambda;
+      }
+    }
+  }
+  if(best.kind == EXIT_VERTEX) best.point = uv[best.h == c[0] ? 0 : (best.h == c[1] ? 1 : 2)];
+  else if(best.kind == EXIT_EDGE) best.point = advance(p, m, best.along);
+  return best;
+}
+
+inline Exact_uv rotate(int k, const Exact_uv& x)
+{
+  switch(direction_mod4(k)) {
+    case 0: return x;
+    case 1: return Exact_uv{-x.v, x.u};
+    case 2: return Exact_uv{-x.u, -x.v};
+    default: return Exact_uv{x.v, -x.u};
+  }
+}
+
+// The transition R^k x + t of the edge of h from face(h) to face(opposite(h)), anchored at the
+// endpoint target(h) (anchor_target) or source(h): t = UV_j(w) - R^k UV_i(w).
+struct Edge_transition
+{
+  int k = 0;
+  Exact_uv t;
+  Exact_uv apply(const Exact_uv& x) const { Exact_uv r = rotate(k, x); return Exact_uv{r.u + t.u, r.v + t.v}; }
+};
+
+inline Edge_transition edge_transition(const Corner_mesh& cm, const Cut_rotations& rot, int h, bool anchor_target)
+{
+  const int o = cm.opp[h];
+  Edge_transition T;
+  T.k = rot.k[h];
+  // corner of the anchor in face(h) and in face(o)
+  const int wi = anchor_target ? h : cm.prev[h];
+  const int wj = anchor_target ? cm.prev[o] : o;
+  const Exact_uv r = rotate(T.k, corner_uv(cm, wi)), q = corner_uv(cm, wj);
+  T.t = Exact_uv{q.u - r.u, q.v - r.v};
+  return T;
+}
+
+enum Transfer_kind { TRANSFER_EDGE, TRANSFER_VERTEX, TRANSFER_MISSED };
+
+struct Edge_transfer
+{
+  Transfer_kind kind = TRANSFER_MISSED;
+  int m = 0;           // direction in face(opposite(h))
+  Exact_uv point;      // in the chart of face(opposite(h))
+  int corner = -1;     // TRANSFER_VERTEX: the corner of face(opposite(h)) hit exactly
+  bool exact = false;  // X' = R^k X + t lies on the edge (always on an exactly seamless map)
+};
+
+// Moves the exit point `x` (on the edge of h, at parameter lambda from source(h)) with direction m
+// into face(opposite(h)), which must exist.
+inline Edge_transfer transfer_through_edge(const Corner_mesh& cm, const Cut_rotations& rot, int h,
+                                           const Exact_uv& x, const FT& lambda, int m)
+{
+  const int o = cm.opp[h];
+  Edge_transfer out;
+  out.m = direction_mod4(m + rot.k[h]);
+  const Exact_uv q = edge_transition(cm, rot, h, lambda > FT(1, 2)).apply(x);
+  // the edge in face(o), from source(h) (corner o) to target(h) (corner prev(o))
+  const Exact_uv A = corner_uv(cm, o), B = corner_uv(cm, cm.prev[o]);
+  FT aA, sA, aB, sB;
+  frame_coordinates(out.m, A.u - q.u, A.v - q.v, aA, sA);
+  frame_coordinates(out.m, B.u - q.u, B.v - q.v, aB, sB);
+  const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
+  if(gA * gB < 0) {
+    out.kind = TRANSFER_EDGE;
+    out.point = lerp(A, B, sA / (sA - sB));
+    out.exact = out.point == q;
+  } else if(gA == 0 && gB != 0) {
+    out.kind = TRANSFER_VERTEX; out.corner = o; out.point = A; out.exact = A == q;
+  } else if(gB == 0 && gA != 0) {
+    out.kind = TRANSFER_VERTEX; out.corner = cm.prev[o]; out.point = B; out.exact = B == q;
+  }
+  return out;
+}
+
+} // namespace tracing
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_CROSSING_H

@@ -1,0 +1,120 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_VERTEX_PASSAGE_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_VERTEX_PASSAGE_H
+
+// The rays leaving a vertex along the axis directions, found by exact direction classification
+// around the vertex (Sec. 6.2, Fig. 3b).
+//
+// Fan: the corners of vertex v in counter-clockwise order. The corner h (target(h) = v) spans the
+// wedge from e_a = UV(target(next(h))) - UV(v) to e_b = UV(source(h)) - UV(v); its ccw successor is
+// prev(opposite(h)) (across the edge of h), its cw predecessor opposite(next(h)).
+// A reference direction m0, given in the chart of a start corner, is carried around the fan through the
+// transitions (m += k across each crossed edge). The direction code (chart_geometry.h) of e_a and e_b
+// relative to the carried direction is lifted to integers along the fan: within a wedge (a
+// non-folded triangle corner, angle < 180 degrees) by ((code_b - code_a) mod 8), across an edge by
+// the jump of the code of the shared edge between the two charts (0 on an exactly seamless map).
+// Lifted values count eighths of the codes' circle: 2 = one quarter turn, 8 = a full turn.
+// A ray at lifted value T lies in the wedge with L_a < T <= L_b (half-open: a ray along an edge is
+// counted once). Passing a regular vertex, the trace arrives with the back ray at 4 and leaves at
+// 8 = straight on: exactly one wedge on an exactly seamless map, none or several on an inexact one.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/tracing/chart_geometry.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace tracing {
+
+struct Fan_wedge
+{
+  int corner;     // halfedge with target v
+  int m;          // the reference direction, carried into the chart of face(corner)
+  int La, Lb;     // lifted codes of e_a and e_b
+};
+
+struct Vertex_fan
+{
+  std::vector<Fan_wedge> wedges;   // ccw; the first one is the start corner unless the fan is open
+  bool closed = true;              // false: v is on the border (the fan runs from border to border)
+  int start = 0;                   // index of the start corner in `wedges`
+  bool degenerate = false;         // an edge of zero UV length at v (no direction)
+};
+
+inline int code_of_edge(const Corner_mesh& cm, int m, int corner, int other)
+{
+  return direction_code(m, FT(cm.u[other]) - FT(cm.u[corner]), FT(cm.v[other]) - FT(cm.v[corner]));
+}
+
+// The fan of target(h0) with the reference direction m0 in the chart of face(h0); lifted so that
+// L_a of the start corner equals its code in [0, 8).
+inline Vertex_fan vertex_fan(const Corner_mesh& cm, const Cut_rotations& rot, int h0, int m0)
+{
+  Vertex_fan fan;
+  // walk cw to the first corner of an open fan (m carried backwards: the edge of next(h) maps the
+  // frame of face(h) to face(opposite(next(h))) by k(next(h)))
+  int first = h0, m_first = direction_mod4(m0);
+  int guard = 0;
+  for(;;) {
+    const int o = cm.opp[cm.next[first]];
+    if(cm.face[o] < 0) { fan.closed = false; break; }
+    m_first = direction_mod4(m_first + rot.k[cm.next[first]]);
+    first = o;
+    if(first == h0 || ++guard > cm.n_halfedges) break;
+  }
+  if(fan.closed) { first = h0; m_first = direction_mod4(m0); }
+
+  int h = first, m = m_first, L = 0, prev_code_b = 0;
+  for(bool at_first = true;; at_first = false) {
+    const int ca = code_of_edge(cm, m, h, cm.next[h]), cb = code_of_edge(cm, m, h, cm.prev[h]);
+    if(ca < 0 || cb < 0) { fan.degenerate = true; return fan; }
+    const int La = at_first ? ca : L + (((ca - prev_code_b) % 8 + 12) % 8 - 4);
+    const int Lb = La + ((cb - ca) % 8 + 8) % 8;
+    if(h == h0) fan.start = int(fan.wedges.size());
+    fan.wedges.push_back(Fan_wedge{h, m, La, Lb});
+    L = Lb; prev_code_b = cb;
+    const int o = cm.opp[h];
+    if(cm.face[o] < 0) break;                         // reached the border
+    m = direction_mod4(m + rot.k[h]);
+    h = cm.prev[o];
+    if(h == first || int(fan.wedges.size()) > cm.n_halfedges) break;
+  }
+  // shift so that L_a(start) is its code in [0, 8)
+  const Fan_wedge& s = fan.wedges[fan.start];
+  const int shift = code_of_edge(cm, s.m, s.corner, cm.next[s.corner]) - s.La;
+  for(Fan_wedge& w : fan.wedges) { w.La += shift; w.Lb += shift; }
+  return fan;
+}
+
+// the wedges containing the ray at lifted value T (L_a < T <= L_b, or L_a <= T for the first
+// wedge of an open fan)
+inline void wedges_containing(const Vertex_fan& fan, int T, std::vector<int>& out)
+{
+  for(std::size_t i = 0; i < fan.wedges.size(); ++i) {
+    const Fan_wedge& w = fan.wedges[i];
+    const bool lower = (!fan.closed && i == 0) ? w.La <= T : w.La < T;
+    if(lower && T <= w.Lb) out.push_back(int(i));
+  }
+}
+
+// The direction, in the chart of wedge w, of the ray at lifted value T (T even, inside w):
+// the carried reference direction turned by (T mod 8) / 2 quarter turns.
+inline int ray_direction(const Fan_wedge& w, int T) { return direction_mod4(w.m + (((T % 8) + 8) % 8) / 2); }
+
+} // namespace tracing
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_VERTEX_PASSAGE_H

@@ -1,0 +1,249 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+// Tests of the tracing layer (Sec. 6.2): trace_isoline / Isoline_tracer and the motorcycle graph.
+//   trace: grid                   exact stops (border vertex, target vertex, rational start point), trace back
+//   trace: bear orbifold, snapped every separatrix ends regularly (cone, border, T-junction), n rays per cone,
+//                                 every trace traced back from its end returns to its cone exactly
+//   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
+//   trace: shared data, snapped   the same properties on every snapped shared map without fold-overs
+//                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset)
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+
+#include "mesh_test_support.h"
+
+#include <CGAL/Seamless_snapping/Motorcycle_graph.h>
+#include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <CGAL/Seamless_snapping/trace_isoline.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cassert>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+typedef Mesh::Face_index face_descriptor;
+typedef SS::Isoline_tracer<Mesh, UV_map> Tracer;
+typedef SS::Isoline_trace<Mesh> Trace;
+typedef SS::Trace_point<Mesh> Point;
+
+static SS::Trace_direction reverse(SS::Trace_direction d) { return SS::Trace_direction((int(d) + 2) % 4); }
+
+// traces back from the end of t (reverse direction, in the chart of the last segment's face), with
+// t's start as the target
+static Trace trace_back(const Mesh& m, const Tracer& tracer, const Trace& t)
+{
+  const SS::Trace_segment<Mesh>& last = t.segments.back();
+  const Point& a = t.segments.front().source;
+  const Point& b = last.target;
+  SS::Trace_options<Mesh> o;
+  if(a.location == Point::VERTEX) { o.has_target_vertex = true; o.target_vertex = target(a.halfedge, m); }
+  else { o.has_target_point = true; o.target_face = a.face; o.target_u = a.u; o.target_v = a.v; }
+  if(b.location == Point::VERTEX) return tracer.trace_from_vertex(b.halfedge, reverse(last.direction), o);
+  return tracer.trace_from_point(last.face, b.u, b.v, reverse(last.direction), o);
+}
+
+static bool same_surface_point(const Mesh& m, const Point& a, const Point& b)
+{
+  if(a.location == Point::VERTEX || b.location == Point::VERTEX)
+    return a.location == b.location && target(a.halfedge, m) == target(b.halfedge, m);
+  return a.face == b.face && a.u == b.u && a.v == b.v;
+}
+
+// ---------------------------------------------------------------------------------------------
+static void test_grid()
+{
+  const int n = 5;
+  Mesh m;
+  std::vector<vertex_descriptor> vs = make_grid(m, n, true);
+  UV_map uv = uv_of(m);
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h)) { const Point_3& p = m.point(target(h, m)); put(uv, h, Point_2(p.x(), p.y())); }
+  Tracer tracer(m, uv);
+  assert(tracer.status() == SS::SUCCESS);
+  auto corner_of = [&](vertex_descriptor v) {
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(v, m)) if(!m.is_border(h)) return h;
+    return halfedge_descriptor();
+  };
+  // from (1, 1) along +u: border vertex (n, 1), exactly
+  Trace t = tracer.trace_from_vertex(corner_of(vs[(n + 1) + 1]), SS::Trace_direction::PLUS_U);
+  assert(t.end == SS::Trace_end::BORDER);
+  const Point& e = t.segments.back().target;
+  assert(e.location == Point::VERTEX && target(e.halfedge, m) == vs[(n + 1) + n]);
+  assert(e.u == CGAL::Gmpq(n) && e.v == CGAL::Gmpq(1));
+  // with a target vertex on the way
+  SS::Trace_options<Mesh> o;
+  o.has_target_vertex = true; o.target_vertex = vs[(n + 1) + 3];
+  t = tracer.trace_from_vertex(corner_of(vs[(n + 1) + 1]), SS::Trace_direction::PLUS_U, o);
+  assert(t.end == SS::Trace_end::TARGET && target(t.segments.back().target.halfedge, m) == vs[(n + 1) + 3]);
+  // from a rational point inside a face along +v: the border at v = n, u kept exactly
+  const CGAL::Gmpq u0(1, 3), v0(1, 7);
+  face_descriptor f0;
+  for(face_descriptor f : m.faces()) {
+    Trace probe = tracer.trace_from_point(f, u0, v0, SS::Trace_direction::PLUS_V);
+    if(probe.end != SS::Trace_end::INVALID_START) { f0 = f; t = probe; break; }
+  }
+  assert(t.end == SS::Trace_end::BORDER);
+  assert(t.segments.back().target.u == u0 && t.segments.back().target.v == CGAL::Gmpq(n));
+  for(const auto& s : t.segments) {
+    assert(s.source.u == u0 && s.target.u == u0);               // an isoline: u constant, exactly
+    CGAL::Gmpq sum = s.target.barycentric[0] + s.target.barycentric[1] + s.target.barycentric[2];
+    assert(sum == 1);
+  }
+  // trace back: returns to the start point exactly
+  Trace back = trace_back(m, tracer, t);
+  assert(back.end == SS::Trace_end::TARGET);
+  assert(back.segments.back().target.u == u0 && back.segments.back().target.v == v0);
+  // a start point outside the face is refused
+  Trace bad = tracer.trace_from_point(f0, CGAL::Gmpq(-1), CGAL::Gmpq(-1), SS::Trace_direction::PLUS_U);
+  assert(bad.end == SS::Trace_end::INVALID_START);
+  // the motorcycle graph of a square: 4 convex corners, no rays, nothing seeded
+  SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);
+  std::cout << "trace: grid: OK\n";
+}
+
+// Checks the properties of the motorcycle graph of an exactly seamless map without fold-overs and
+// returns the graph. `what` names the map in the output.
+static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, const std::string& what)
+{
+  auto t0 = std::chrono::steady_clock::now();
+  Tracer tracer(m, uv);
+  assert(tracer.status() == SS::SUCCESS);
+  SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  const double graph_ms = ms_since(t0);
+  assert(g.status == SS::SUCCESS);
+  // every separatrix ends regularly: cone, border or T-junction (no inconsistency, no length limit)
+  for(const Trace& t : g.separatrices) {
+    if(t.end != SS::Trace_end::CONE && t.end != SS::Trace_end::BORDER && t.end != SS::Trace_end::EARLIER_TRACE &&
+       !(g.seeded && t.end == SS::Trace_end::CLOSED_LOOP))
+      std::cerr << what << ": separatrix ended with " << SS::trace_end_name(t.end) << " " << t.message << std::endl;
+    assert(t.end == SS::Trace_end::CONE || t.end == SS::Trace_end::BORDER || t.end == SS::Trace_end::EARLIER_TRACE ||
+           (g.seeded && t.end == SS::Trace_end::CLOSED_LOOP));
+    assert(t.inexact_transfers == 0);
+  }
+  assert(g.failed == 0 && g.cones_with_wrong_ray_count == 0);
+  // arcs meet only at their ends: no piece of an isoline is traced twice (compared exactly)
+  std::set<std::string> pieces;
+  for(const Trace& t : g.separatrices)
+    for(const auto& s : t.segments) {
+      std::ostringstream a, b;
+      std::string key;
+      if(s.source.location == Point::VERTEX && s.target.location == Point::VERTEX) {   // along an edge: by its vertices
+        const std::size_t i = std::size_t(target(s.source.halfedge, m)), j = std::size_t(target(s.target.halfedge, m));
+        key = "edge " + std::to_string((std::min)(i, j)) + " " + std::to_string((std::max)(i, j));
+      } else {
+        a << s.source.u << " " << s.source.v;
+        b << s.target.u << " " << s.target.v;
+        key = "face " + std::to_string(std::size_t(s.face)) + ": " + (std::min)(a.str(), b.str()) + " - " + (std::max)(a.str(), b.str());
+      }
+      const bool fresh = pieces.insert(key).second;
+      if(!fresh) std::cerr << what << ": traced twice: " << key << std::endl;
+      assert(fresh);
+    }
+  // traced back from its end, every separatrix returns exactly to its start
+  std::size_t traced_back = 0;
+  t0 = std::chrono::steady_clock::now();
+  for(const Trace& t : g.separatrices) {
+    if(t.segments.empty()) continue;
+    const Trace back = trace_back(m, tracer, t);
+    assert(back.end == SS::Trace_end::TARGET && !back.segments.empty());
+    const Point& start = t.segments.front().source;
+    const Point& end = back.segments.back().target;
+    if(!same_surface_point(m, start, end))
+      std::cerr << what << ": trace back ended " << SS::trace_end_name(back.end) << " " << back.message << std::endl;
+    assert(same_surface_point(m, start, end));
+    if(back.segments.size() != t.segments.size())
+      std::cerr << what << ": " << t.segments.size() << " segments, back " << back.segments.size() << " ("
+                << SS::trace_end_name(t.end) << ", back " << SS::trace_end_name(back.end) << ")" << std::endl;
+    assert(back.segments.size() == t.segments.size());
+    ++traced_back;
+  }
+  std::printf("trace: %-40s cones %zu corners %zu separatrices %zu (cone %zu, border %zu, T %zu) traced back %zu;"
+              " graph %.0f ms, back %.0f ms\n", what.c_str(), g.cones, g.border_corners, g.separatrices.size(),
+              g.ends[int(SS::Trace_end::CONE)], g.ends[int(SS::Trace_end::BORDER)],
+              g.ends[int(SS::Trace_end::EARLIER_TRACE)], traced_back, graph_ms, ms_since(t0));
+  return g;
+}
+
+static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& what, std::size_t& failures)
+{
+  Tracer tracer(m, uv);
+  if(tracer.status() != SS::SUCCESS) { std::cout << "trace: " << what << ": " << tracer.message() << "\n"; return; }
+  auto t0 = std::chrono::steady_clock::now();
+  SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  std::printf("trace: %-40s (input) separatrices %zu failed %zu:", what.c_str(), g.separatrices.size(), g.failed);
+  for(int e = 0; e < SS::number_of_trace_ends; ++e)
+    if(g.ends[e]) std::printf(" %s %zu", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);
+  std::printf("  %.0f ms\n", ms_since(t0));
+  for(const Trace& t : g.separatrices) assert(!t.message.empty() || !SS::is_failure(t.end));
+  failures += g.failed;
+}
+
+static void test_bear_orbifold()
+{
+  const fs::path p = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
+  Mesh m;
+  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), m)) {
+    std::cout << "trace: bear orbifold: SKIPPED (no " << p.string() << ")\n";
+    return;
+  }
+  UV_map uv = uv_of(m);
+  std::string msg;
+  const auto cones = SS::internal::farthest_point_cones(m, 3);
+  assert(SS::internal::make_orbifold_tutte_uv(m, uv, cones, SMP::Square, msg) == SS::SUCCESS);
+  std::size_t failures = 0;
+  print_inexact_graph(m, uv, "bear orbifold Square", failures);
+  SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+  assert(r.status == SS::SUCCESS && r.flips_after == 0);
+  SS::Motorcycle_graph<Mesh> g = check_exact_graph(m, uv, "bear orbifold Square, snapped");
+  assert(g.cones == 3 && g.separatrices.size() == 4);     // cones of 1, 1 and 2 quarter turns
+}
+
+static void test_shared_data()
+{
+  std::vector<fs::path> files;
+  if(!shared_obj_files_or_skip("trace: shared data", files)) return;
+  std::size_t exact_maps = 0, input_failures = 0;
+  for(const fs::path& p : files) {
+    if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_trace
+    Mesh m;
+    if(!load_obj(p, m)) continue;
+    UV_map uv = uv_of(m);
+    print_inexact_graph(m, uv, p.filename().string(), input_failures);
+    SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+    if(r.status != SS::SUCCESS || r.flips_before > 0) {
+      std::cout << "trace: " << p.filename().string() << ": snapped map not checked (" << SS::status_name(r.status)
+                << ", " << r.flips_before << " fold-overs in the input)\n";
+      continue;
+    }
+    check_exact_graph(m, uv, p.filename().string() + ", snapped");
+    ++exact_maps;
+  }
+  std::cout << "trace: shared data: " << exact_maps << " snapped maps checked; inexact inputs: " << input_failures
+            << " failed separatrices\n";
+  assert(exact_maps >= 3);
+}
+
+int main(int argc, char** argv)
+{
+  std::setvbuf(stdout, nullptr, _IONBF, 0);
+  parse_test_arguments(argc, argv);
+  test_grid();
+  if(!sanitizer_subset()) test_bear_orbifold();
+  test_shared_data();
+  std::cout << "test_trace: all passed\n";
+  return 0;
+}
