@@ -1,0 +1,80 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_IO_TRACE_SVG_H
+#define CGAL_SEAMLESS_SNAPPING_IO_TRACE_SVG_H
+
+#include <CGAL/Seamless_snapping/Motorcycle_graph.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace IO {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * draws the UV triangles of `tm` (grey; flipped ones red) and the separatrices of `g` in the charts of their
+ * faces (blue; a trace that ended in an inconsistency orange, with a red circle at its end) as an SVG image,
+ * `width` pixels wide. UV coordinates are rounded to double for drawing only.
+ */
+template <class TriangleMesh, class HalfedgeUVMap>
+void write_motorcycle_graph_svg(std::ostream& os, const TriangleMesh& tm, HalfedgeUVMap uv,
+                                const Motorcycle_graph<TriangleMesh>& g, double width = 1000)
+{
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for(auto h : halfedges(tm)) {
+    if(is_border(h, tm)) continue;
+    const auto p = get(uv, h);
+    lo[0] = (std::min)(lo[0], double(p.x())); hi[0] = (std::max)(hi[0], double(p.x()));
+    lo[1] = (std::min)(lo[1], double(p.y())); hi[1] = (std::max)(hi[1], double(p.y()));
+  }
+  const double span = (std::max)((std::max)(hi[0] - lo[0], hi[1] - lo[1]), 1e-300);
+  const double s = width / span, height = (hi[1] - lo[1]) * s;
+  auto X = [&](double u) { return (u - lo[0]) * s + 5; };
+  auto Y = [&](double v) { return height - (v - lo[1]) * s + 5; };
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n",
+                width + 10, height + 10);
+  os << buf << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for(auto f : faces(tm)) {
+    auto h = halfedge(f, tm);
+    const auto a = get(uv, h), b = get(uv, next(h, tm)), c = get(uv, next(next(h, tm), tm));
+    const double det = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    std::snprintf(buf, sizeof buf, "<polygon points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\" fill=\"%s\" stroke=\"#ccc\" stroke-width=\"0.3\"/>\n",
+                  X(a.x()), Y(a.y()), X(b.x()), Y(b.y()), X(c.x()), Y(c.y()), det > 0 ? "none" : "#f88");
+    os << buf;
+  }
+  for(const Isoline_trace<TriangleMesh>& t : g.separatrices) {
+    const bool bad = is_failure(t.end);
+    for(const auto& seg : t.segments) {
+      std::snprintf(buf, sizeof buf, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" stroke-width=\"%s\"/>\n",
+                    X(CGAL::to_double(seg.source.u)), Y(CGAL::to_double(seg.source.v)),
+                    X(CGAL::to_double(seg.target.u)), Y(CGAL::to_double(seg.target.v)),
+                    bad ? "#f80" : "#1f4fd0", bad ? "2" : "1");
+      os << buf;
+    }
+    if(bad && !t.segments.empty()) {
+      const auto& e = t.segments.back().target;
+      std::snprintf(buf, sizeof buf, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"8\" fill=\"none\" stroke=\"red\" stroke-width=\"2\"/>\n",
+                    X(CGAL::to_double(e.u)), Y(CGAL::to_double(e.v)));
+      os << buf;
+    }
+  }
+  os << "</svg>\n";
+}
+
+} // namespace IO
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_IO_TRACE_SVG_H
