@@ -178,7 +178,10 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
   return g;
 }
 
-static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& what, std::size_t& failures)
+// the motorcycle graph of a map as it is (inexact in general): it must terminate, and report
+// failures with a message; adds its failures and its inexact cut crossings to the counters
+static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& what, std::size_t& failures,
+                                std::size_t& inexact_crossings)
 {
   Tracer tracer(m, uv);
   if(tracer.status() != SS::SUCCESS) { std::cout << "trace: " << what << ": " << tracer.message() << "\n"; return; }
@@ -188,7 +191,10 @@ static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& wha
   for(int e = 0; e < SS::number_of_trace_ends; ++e)
     if(g.ends[e]) std::printf(" %s %zu", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);
   std::printf("  %.0f ms\n", ms_since(t0));
-  for(const Trace& t : g.separatrices) assert(!t.message.empty() || !SS::is_failure(t.end));
+  for(const Trace& t : g.separatrices) {
+    assert(!t.message.empty() || !SS::is_failure(t.end));
+    inexact_crossings += t.inexact_transfers;
+  }
   failures += g.failed;
 }
 
@@ -204,8 +210,9 @@ static void test_bear_orbifold()
   std::string msg;
   const auto cones = SS::internal::farthest_point_cones(m, 3);
   assert(SS::internal::make_orbifold_tutte_uv(m, uv, cones, SMP::Square, msg) == SS::SUCCESS);
-  std::size_t failures = 0;
-  print_inexact_graph(m, uv, "bear orbifold Square", failures);
+  std::size_t failures = 0, inexact = 0;
+  print_inexact_graph(m, uv, "bear orbifold Square", failures, inexact);
+  assert(!SS::is_exactly_seamless(m, uv) && inexact > 0);   // the tracer sees the solver error at the cuts
   SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
   assert(r.status == SS::SUCCESS && r.flips_after == 0);
   SS::Motorcycle_graph<Mesh> g = check_exact_graph(m, uv, "bear orbifold Square, snapped");
@@ -216,13 +223,15 @@ static void test_shared_data()
 {
   std::vector<fs::path> files;
   if(!shared_obj_files_or_skip("trace: shared data", files)) return;
-  std::size_t exact_maps = 0, input_failures = 0;
+  std::size_t exact_maps = 0, input_failures = 0, inexact_inputs = 0, inputs_seen_inexact = 0;
   for(const fs::path& p : files) {
     if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_trace
     Mesh m;
     if(!load_obj(p, m)) continue;
     UV_map uv = uv_of(m);
-    print_inexact_graph(m, uv, p.filename().string(), input_failures);
+    std::size_t crossings = 0;
+    print_inexact_graph(m, uv, p.filename().string(), input_failures, crossings);
+    if(!SS::is_exactly_seamless(m, uv)) { ++inexact_inputs; inputs_seen_inexact += crossings > 0 ? 1 : 0; }
     SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
     if(r.status != SS::SUCCESS || r.flips_before > 0) {
       std::cout << "trace: " << p.filename().string() << ": snapped map not checked (" << SS::status_name(r.status)
@@ -233,8 +242,10 @@ static void test_shared_data()
     ++exact_maps;
   }
   std::cout << "trace: shared data: " << exact_maps << " snapped maps checked; inexact inputs: " << input_failures
-            << " failed separatrices\n";
+            << " failed separatrices; " << inputs_seen_inexact << " of " << inexact_inputs
+            << " inexact inputs show inexact cut crossings\n";
   assert(exact_maps >= 3);
+  assert(inexact_inputs == 0 || inputs_seen_inexact > 0);
 }
 
 int main(int argc, char** argv)
