@@ -9,6 +9,7 @@
 
 // Tests of the tracing layer (Sec. 6.2): trace_isoline / Isoline_tracer and the motorcycle graph.
 //   trace: grid                   exact stops (border vertex, target vertex, rational start point), trace back
+//   trace: torus                  isolines close exactly (CLOSED_LOOP), from a vertex and from a rational point
 //   trace: bear orbifold, snapped every separatrix ends regularly (cone, border, T-junction), n rays per cone,
 //                                 every trace traced back from its end returns to its cone exactly
 //   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
@@ -29,6 +30,7 @@
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <array>
 #include <cassert>
 #include <cstdio>
 #include <set>
@@ -113,6 +115,48 @@ static void test_grid()
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);
   std::cout << "trace: grid: OK\n";
+}
+
+// A flat n x n torus (each vertex (i, j) once, seams where the grid wraps, transitions: translations by
+// n): isolines close. From a vertex along +u the trace runs along n edges and closes at its start
+// corner; from the rational point (1/3, 1/7) along +v it closes after crossing 2n faces; both exactly.
+static void test_torus_closed_loops()
+{
+  const int n = 4;
+  Mesh m;
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
+  UV_map uv = uv_of(m);
+  face_descriptor f_start;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int I[4] = {i, i + 1, i + 1, i}, J[4] = {j, j, j + 1, j + 1};   // unwrapped corners a, b, c, d
+      for(const std::array<int, 3>& t : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
+        const face_descriptor f = m.add_face(vs[(J[t[0]] % n) * n + I[t[0]] % n], vs[(J[t[1]] % n) * n + I[t[1]] % n],
+                                             vs[(J[t[2]] % n) * n + I[t[2]] % n]);
+        assert(f != Mesh::null_face());
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+          for(int c : t)
+            if(target(h, m) == vs[(J[c] % n) * n + I[c] % n]) put(uv, h, Point_2(I[c], J[c]));
+        if(i == 0 && j == 0 && t[2] == 2) f_start = f;     // the triangle (0,0), (1,0), (1,1)
+      }
+    }
+  Tracer tracer(m, uv);
+  assert(tracer.status() == SS::SUCCESS && SS::is_exactly_seamless(m, uv));
+  halfedge_descriptor corner;
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f_start), m)) if(target(h, m) == vs[0]) corner = h;
+  Trace t = tracer.trace_from_vertex(corner, SS::Trace_direction::PLUS_U);
+  assert(t.end == SS::Trace_end::CLOSED_LOOP && t.segments.size() == std::size_t(n));
+  assert(target(t.segments.back().target.halfedge, m) == vs[0]);
+  const CGAL::Gmpq u0(2, 3), v0(1, 7);                    // inside the triangle (0,0), (1,0), (1,1)
+  t = tracer.trace_from_point(f_start, u0, v0, SS::Trace_direction::PLUS_V);
+  assert(t.end == SS::Trace_end::CLOSED_LOOP && t.faces_crossed == std::size_t(2 * n));
+  assert(t.segments.back().face == f_start && t.segments.back().target.u == u0 && t.segments.back().target.v == v0);
+  // the motorcycle graph: no cones, no border: two seeded traces
+  SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  assert(g.seeded && g.separatrices.size() == 2 && g.failed == 0);
+  std::cout << "trace: torus: closed loops OK\n";
 }
 
 // Checks the properties of the motorcycle graph of an exactly seamless map without fold-overs and
@@ -253,6 +297,7 @@ int main(int argc, char** argv)
   std::setvbuf(stdout, nullptr, _IONBF, 0);
   parse_test_arguments(argc, argv);
   test_grid();
+  test_torus_closed_loops();
   if(!sanitizer_subset()) test_bear_orbifold();
   test_shared_data();
   std::cout << "test_trace: all passed\n";

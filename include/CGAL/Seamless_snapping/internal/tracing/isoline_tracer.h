@@ -141,17 +141,21 @@ public:
     if(fan.degenerate) return finish(r, Trace_end::DEGENERATE_VERTEX, "start vertex " + std::to_string(r.start_vertex));
     // the ray along d_m: on the first edge of the start corner (lifted 0), else the first one
     // counter-clockwise from it (lifted 8); on an open fan also the one clockwise from it (lifted 0)
+    // A ray along an edge is taken, as in a vertex passage, in the wedge where it is e_b (so that a
+    // closed loop comes back to the same corner and direction).
     std::vector<int> found;
-    if(fan.wedges[fan.start].La == 0) found.push_back(fan.start);
-    else {
+    if(fan.wedges[fan.start].La == 0) {
+      const int i = fan.closed ? int(fan.wedges.size()) - 1 : fan.start - 1;
+      if(i >= 0) { depart(r, fan.wedges[i].corner, ray_direction(fan.wedges[i], fan.wedges[i].Lb)); found.push_back(i); }
+      else { depart(r, fan.wedges[fan.start].corner, fan.wedges[fan.start].m); found.push_back(fan.start); }
+    } else {
       wedges_containing(fan, 8, found);
       if(!fan.closed) wedges_containing(fan, 0, found);
+      if(found.size() == 1) depart(r, fan.wedges[found[0]].corner, direction_mod4(fan.wedges[found[0]].m));
     }
     if(found.size() != 1)
       return finish(r, Trace_end::INVALID_START, "no unique sector of vertex " + std::to_string(r.start_vertex) +
                                                  " contains the start direction (" + std::to_string(found.size()) + ")");
-    const Fan_wedge& w = fan.wedges[found[0]];
-    depart(r, w.corner, direction_mod4(w.m));
     r.start_corner = r.face_h; r.start_m = r.m;
     register_vertex(r, r.start_vertex);
   }
