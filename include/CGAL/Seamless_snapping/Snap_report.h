@@ -57,10 +57,18 @@ struct Snap_report
   double max_change = 0;               ///< max |u - ū| over all UV coordinates, relative
   double mean_change = 0;              ///< mean |u - ū| over the coordinates of constrained sectors, relative
   std::size_t flips_before = 0;        ///< UV triangles with negative orientation in the input (exact test)
-  std::size_t flips_after = 0;         ///< the same after snapping, before the flip repair
-  std::size_t flips_after_repair = 0;  ///< the same after the flip repair (Sec. 5.4; = `flips_after` without repair)
-  std::size_t flips_unrepaired = 0;    ///< triangles flipped by snapping (not in the input) that are still flipped at the end
-  std::size_t repair_moves = 0;        ///< accepted flip-repair moves (each moves one vertex, with its partner across a cut)
+  std::size_t degenerate_before = 0;   ///< UV triangles with zero area in the input (exact test)
+  std::size_t flips_after = 0;         ///< negative UV triangles after snapping, before the flip repair
+  std::size_t degenerate_after = 0;    ///< zero-area UV triangles after snapping, before the flip repair
+  std::size_t flips_introduced = 0;    ///< of `flips_after`: triangles positive in the input
+  std::size_t degenerate_introduced = 0; ///< of `degenerate_after`: triangles positive in the input
+  std::size_t flips_after_repair = 0;  ///< negative UV triangles at the end (= `flips_after` without repair)
+  std::size_t degenerate_after_repair = 0; ///< zero-area UV triangles at the end
+  std::size_t flips_unrepaired = 0;    ///< of `flips_after_repair`: triangles positive in the input (introduced, not repaired)
+  std::size_t degenerate_unrepaired = 0; ///< of `degenerate_after_repair`: triangles positive in the input
+  std::size_t degenerate_forced = 0;   ///< of the unrepaired triangles: those degenerate in every exact solution (two corners forced to one UV point by the constraints)
+  std::size_t repair_moves = 0;        ///< accepted flip-repair moves
+  std::size_t repair_node_moves = 0;   ///< of which moves of node vertices (with their branches) in the null space of the node system
   /// @}
 
   /// \name Timings (milliseconds, wall clock)
@@ -93,9 +101,13 @@ struct Snap_report
     o << "  \"reduced\": " << (reduced ? "true" : "false") << ",\n";
     num("uv_diagonal", uv_diagonal); num("max_input_violation", max_input_violation);
     num("max_change", max_change); num("mean_change", mean_change);
-    num("flips_before", double(flips_before)); num("flips_after", double(flips_after));
-    num("flips_after_repair", double(flips_after_repair)); num("flips_unrepaired", double(flips_unrepaired));
-    num("repair_moves", double(repair_moves));
+    num("flips_before", double(flips_before)); num("degenerate_before", double(degenerate_before));
+    num("flips_after", double(flips_after)); num("degenerate_after", double(degenerate_after));
+    num("flips_introduced", double(flips_introduced)); num("degenerate_introduced", double(degenerate_introduced));
+    num("flips_after_repair", double(flips_after_repair)); num("degenerate_after_repair", double(degenerate_after_repair));
+    num("flips_unrepaired", double(flips_unrepaired)); num("degenerate_unrepaired", double(degenerate_unrepaired));
+    num("degenerate_forced", double(degenerate_forced));
+    num("repair_moves", double(repair_moves)); num("repair_node_moves", double(repair_node_moves));
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
     num("repair_ms", repair_ms);

@@ -47,6 +47,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/surface/local_null_space.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
@@ -56,25 +57,68 @@
 #include <CGAL/Mpzf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// Non-positive UV triangles of one UV map (exact orientation test).
+struct Orientation_counts
+{
+  std::size_t negative = 0;             // flipped: negative orientation
+  std::size_t degenerate = 0;           // zero area
+};
+
+// Orientation of every face (CGAL::NEGATIVE, ZERO, POSITIVE), corner values from `x` (2 per sector).
+inline std::vector<signed char> face_orientations(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  std::vector<signed char> o(cm.n_faces, 0);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
+    const int s0 = st.sector_of[h], s1 = st.sector_of[cm.next[h]], s2 = st.sector_of[cm.prev[h]];
+    o[cm.face[h]] = static_cast<signed char>(CGAL::orientation(P(x[2 * s0], x[2 * s0 + 1]), P(x[2 * s1], x[2 * s1 + 1]),
+                                                              P(x[2 * s2], x[2 * s2 + 1])));
+  }
+  return o;
+}
+
+// Counts the non-positive faces of `o`; with `input`, only those that are positive in `input`
+// (the ones introduced since).
+inline Orientation_counts count_orientations(const std::vector<signed char>& o,
+                                             const std::vector<signed char>* input = nullptr)
+{
+  Orientation_counts c;
+  for(std::size_t f = 0; f < o.size(); ++f) {
+    if(input != nullptr && (*input)[f] != CGAL::POSITIVE) continue;
+    c.negative += o[f] == CGAL::NEGATIVE;
+    c.degenerate += o[f] == CGAL::ZERO;
+  }
+  return c;
+}
+
 struct Flip_repair_result
 {
-  std::size_t flips_input = 0;          // negative faces of ubar
-  std::size_t flips_before = 0;         // negative faces of x on entry (after snapping)
-  std::size_t flips_after = 0;          // negative faces of x on exit
-  std::size_t introduced_before = 0;    // negative on entry, not in the input
-  std::size_t unrepaired = 0;           // negative on exit, not in the input
-  std::size_t moves = 0;                // accepted moves
-  std::vector<int> unrepaired_faces;    // face indices (Corner_mesh numbering), ascending
+  Orientation_counts input;             // faces of ubar
+  Orientation_counts before;            // faces of x on entry (after snapping)
+  Orientation_counts after;             // faces of x on exit
+  Orientation_counts introduced_before; // on entry, among the faces positive in the input
+  Orientation_counts introduced_after;  // on exit, among the faces positive in the input
+  std::size_t moves = 0;                // accepted moves (all kinds)
+  std::size_t node_moves = 0;           // of which moves of node vertices (local null space of C)
+  std::vector<int> unrepaired_faces;    // positive in the input, not on exit (Corner_mesh numbering), ascending
+  std::size_t forced_degenerate = 0;    // of these, faces degenerate in every exact solution (forced_degenerate())
+  std::string reasons;                  // why they could not be repaired
 };
 
 class Flip_repair
@@ -102,11 +146,19 @@ class Flip_repair
   std::vector<std::size_t> vr_start; std::vector<int> vr_row;      // variable -> rows (CSR)
   std::vector<int> group_of;                       // per sector: group index, -1 = fixed
   std::vector<Group> groups;
+  std::vector<signed char> orient_;                // current orientation per face (exact)
+  // node moves
+  const Reduced_system& rs;
+  std::vector<std::size_t> vs_start; std::vector<int> vs_sector;   // vertex -> its sectors (CSR)
+  std::vector<std::size_t> nr_start; std::vector<int> nr_row;      // variable -> rows of the node system C (CSR)
+  std::vector<std::vector<int> > cut_from, align_from;             // sector -> branches that start at it (u_0)
+  std::vector<int> col_of;                                         // variable -> column of the local system, -1
+  std::vector<int> face_stamp; int stamp = 0;
 
 public:
-  Flip_repair(const Corner_mesh& cm_, const Seam_topology& st_, const Reduced_system& rs,
+  Flip_repair(const Corner_mesh& cm_, const Seam_topology& st_, const Reduced_system& rs_,
               const Constraint_rows& full, const Fixed_point_grid& grid_, std::vector<double>& x_)
-    : cm(cm_), st(st_), rows(full), grid(grid_), x(x_)
+    : cm(cm_), st(st_), rows(full), grid(grid_), x(x_), rs(rs_)
   {
     const int ns = st.n_sectors;
     face_corner.assign(cm.n_faces, -1);
@@ -124,13 +176,23 @@ public:
       if(!cm.is_border_halfedge(h)) sc_corner[fill[st.sector_of[h]]++] = h;
 
     const std::size_t nv = 2 * std::size_t(ns);
-    vr_start.assign(nv + 1, 0);
-    for(int c : rows.col) ++vr_start[c + 1];
-    for(std::size_t v = 0; v < nv; ++v) vr_start[v + 1] += vr_start[v];
-    vr_row.assign(vr_start[nv], -1);
-    std::vector<std::size_t> vfill(vr_start.begin(), vr_start.end() - 1);
-    for(std::size_t i = 0; i < rows.size(); ++i)
-      for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k) vr_row[vfill[rows.col[k]]++] = int(i);
+    csr_index(nv, rows, vr_start, vr_row);
+    csr_index(nv, rs.node_rows, nr_start, nr_row);
+    col_of.assign(nv, -1);
+    face_stamp.assign(cm.n_faces, 0);
+    vs_start.assign(cm.n_vertices + 1, 0);
+    for(int t = 0; t < ns; ++t) ++vs_start[st.sector_vertex(cm, t) + 1];
+    for(int v = 0; v < cm.n_vertices; ++v) vs_start[v + 1] += vs_start[v];
+    vs_sector.assign(ns, -1);
+    std::vector<std::size_t> sfill(vs_start.begin(), vs_start.end() - 1);
+    for(int t = 0; t < ns; ++t) vs_sector[sfill[st.sector_vertex(cm, t)]++] = t;
+    cut_from.assign(ns, std::vector<int>());
+    align_from.assign(ns, std::vector<int>());
+    for(std::size_t b = 0; b < rs.cut_branches.size(); ++b) {
+      cut_from[rs.cut_branches[b].u0_plus].push_back(int(b));
+      if(rs.cut_branches[b].u0_minus != rs.cut_branches[b].u0_plus) cut_from[rs.cut_branches[b].u0_minus].push_back(int(b));
+    }
+    for(std::size_t b = 0; b < rs.align_branches.size(); ++b) align_from[rs.align_branches[b].u0].push_back(int(b));
 
     // move groups: the inner sectors of the branches, then the sectors in no row. A sector that
     // would belong to two groups (not expected) stays fixed, and so do its partners.
@@ -163,6 +225,18 @@ public:
     }
   }
 
+  // variable -> rows that mention it, as CSR
+  static void csr_index(std::size_t nv, const Constraint_rows& r, std::vector<std::size_t>& start, std::vector<int>& row)
+  {
+    start.assign(nv + 1, 0);
+    for(int c : r.col) ++start[c + 1];
+    for(std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    row.assign(start[nv], -1);
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t i = 0; i < r.size(); ++i)
+      for(std::size_t k = r.start[i]; k < r.start[i + 1]; ++k) row[fill[r.col[k]]++] = int(i);
+  }
+
   int face_sector(int f, int i) const
   {
     int h = face_corner[f];
@@ -180,38 +254,40 @@ public:
   Flip_repair_result run(const std::vector<double>& ubar)
   {
     Flip_repair_result r;
-    std::vector<char> input_flip(cm.n_faces, 0);
+    const std::vector<signed char> input = face_orientations(cm, st, ubar);
+    orient_ = face_orientations(cm, st, x);
+    r.input = count_orientations(input);
+    r.before = count_orientations(orient_);
+    r.introduced_before = count_orientations(orient_, &input);
+    // targets: faces worse than in the input (introduced), then faces flipped in the input
     std::vector<int> introduced, inherited;
     for(int f = 0; f < cm.n_faces; ++f) {
-      input_flip[f] = face_orientation(f, ubar) == CGAL::NEGATIVE;
-      r.flips_input += input_flip[f];
-      if(face_orientation(f, x) != CGAL::NEGATIVE) continue;
-      ++r.flips_before;
-      (input_flip[f] ? inherited : introduced).push_back(f);
+      if(orient_[f] < input[f]) introduced.push_back(f);
+      else if(orient_[f] == CGAL::NEGATIVE) inherited.push_back(f);
     }
-    r.introduced_before = introduced.size();
     ubar_ = &ubar;
     double snap_change = 0;
     for(std::size_t i = 0; i < x.size(); ++i) snap_change = (std::max)(snap_change, std::fabs(x[i] - ubar[i]));
     const double limit = snap_change;
-    for(int pass = 0; pass < 4; ++pass) {
+    for(int pass = 0; pass < 8; ++pass) {
       bool progress = false;
-      for(int f : introduced) progress = try_face(f, limit, r) || progress;
-      for(int f : inherited) progress = try_face(f, limit, r) || progress;
+      for(int f : introduced) progress = (orient_[f] < input[f] && try_face(f, limit, true, r)) || progress;
+      if(pass < 4) for(int f : inherited) progress = try_face(f, limit, false, r) || progress;
       if(!progress) break;
     }
-    for(int f = 0; f < cm.n_faces; ++f) {
-      if(face_orientation(f, x) != CGAL::NEGATIVE) continue;
-      ++r.flips_after;
-      if(!input_flip[f]) { ++r.unrepaired; r.unrepaired_faces.push_back(f); }
-    }
+    r.after = count_orientations(orient_);
+    r.introduced_after = count_orientations(orient_, &input);
+    for(int f = 0; f < cm.n_faces; ++f)
+      if(input[f] == CGAL::POSITIVE && orient_[f] != CGAL::POSITIVE) r.unrepaired_faces.push_back(f);
+    if(!r.unrepaired_faces.empty()) r.reasons = explain(r.unrepaired_faces, limit);
+    for(int f : r.unrepaired_faces) r.forced_degenerate += forced_degenerate(f) ? 1 : 0;
     return r;
   }
 
 private:
-  bool try_face(int f, double max_move, Flip_repair_result& r)
+  bool try_face(int f, double max_move, bool node_moves, Flip_repair_result& r)
   {
-    if(face_orientation(f, x) != CGAL::NEGATIVE) return false;
+    if(orient_[f] == CGAL::POSITIVE) return false;
     // prefer groups that move freely, then align, then cut-branch groups
     int order[3] = {-1, -1, -1};
     for(int i = 0; i < 3; ++i) order[i] = group_of[face_sector(f, i)];
@@ -220,6 +296,9 @@ private:
       if(g < 0) continue;
       if(try_move(groups[g], f, max_move)) { ++r.moves; return true; }
     }
+    // then the node vertices of the face, alone and with their neighbours in C
+    for(int radius = 0; radius < 3 && node_moves; ++radius)
+      if(try_node_move(f, radius, max_move)) { ++r.moves; ++r.node_moves; return true; }
     return false;
   }
 
@@ -330,7 +409,7 @@ private:
     // current orientations (exact) and half-planes in the parameter space
     std::vector<CGAL::Orientation> old_sign(corners.size());
     std::vector<Halfplane> all, required;
-    std::size_t old_negative = 0;
+    std::size_t old_bad = 0;
     double L = 0;
     for(std::size_t i = 0; i < corners.size(); ++i) {
       const int c = corners[i];
@@ -338,7 +417,7 @@ private:
       const double qx = x[2 * s], qy = x[2 * s + 1];
       const double ax = x[2 * sa], ay = x[2 * sa + 1], bx = x[2 * sb], by = x[2 * sb + 1];
       old_sign[i] = CGAL::orientation(P(qx, qy), P(ax, ay), P(bx, by));
-      if(old_sign[i] == CGAL::NEGATIVE) ++old_negative;
+      if(old_sign[i] != CGAL::POSITIVE) ++old_bad;
       L = (std::max)({L, std::fabs(ax - qx), std::fabs(ay - qy), std::fabs(bx - qx), std::fabs(by - qy)});
       const double n[2] = {ay - by, bx - ax};
       if(n[0] == 0 && n[1] == 0) continue;      // a == b: the face is degenerate whatever we do
@@ -352,7 +431,7 @@ private:
       all.push_back(p);
       if(old_sign[i] != CGAL::NEGATIVE || cm.face[c] == target) required.push_back(p);
     }
-    if(old_negative == 0 || !(L > 0)) return false;
+    if(old_bad == 0 || !(L > 0)) return false;
     L *= 4;
     // |new - ubar| <= max_move for every moved coordinate: (R^k t)_c = sign_c t_{col_c} within
     // [lo, hi] = [ubar - x - max_move, ubar - x + max_move]; the margin does not shrink these
@@ -394,22 +473,20 @@ private:
         double t[2] = {0, 0};
         if(dim == 1) { const double lo = poly[0], hi = poly[1]; t[0] = lo > 0 ? lo : (hi < 0 ? hi : 0); }
         else closest_to_origin(poly, t);
-        if(attempt(g, t, dim, corners, old_sign, old_negative, max_move)) return true;
+        if(attempt(g, t, dim, max_move)) return true;
       }
       if(any) {
         double t[2] = {0, 0};
         if(dim == 1) t[0] = 0.5 * (last[0] + last[1]);
         else centroid(last, t);
-        if(attempt(g, t, dim, corners, old_sign, old_negative, max_move)) return true;
+        if(attempt(g, t, dim, max_move)) return true;
       }
     }
     return false;
   }
 
   // Applies the displacement (after rounding) if every exact test passes.
-  bool attempt(const Group& g, const double tau[2], int dim, const std::vector<int>& corners,
-               const std::vector<CGAL::Orientation>& old_sign,
-               std::size_t old_negative, double max_move)
+  bool attempt(const Group& g, const double tau[2], int dim, double max_move)
   {
     double t[2] = {0, 0};
     if(dim == 1) t[g.axis] = tau[0];
@@ -417,67 +494,264 @@ private:
     if(g.kind == 1) { t[0] = grid.round(t[0]); t[1] = grid.round(t[1]); }
     if(!std::isfinite(t[0]) || !std::isfinite(t[1]) || (t[0] == 0 && t[1] == 0)) return false;
 
-    double old_value[4], new_value[4];
-    bool changed = false;
+    Change ch;
     for(int i = 0; i < g.n; ++i) {
       double d[2];
       rotate_quarter_turns(g.m[i].k, t[0], t[1], d[0], d[1]);
-      for(int c = 0; c < 2; ++c) {
-        old_value[2 * i + c] = x[2 * g.m[i].sector + c];
-        new_value[2 * i + c] = old_value[2 * i + c] + d[c];
-        if(!std::isfinite(new_value[2 * i + c])) return false;
-        if(!(std::fabs(new_value[2 * i + c] - (*ubar_)[2 * g.m[i].sector + c]) <= max_move)) return false;
-        changed = changed || new_value[2 * i + c] != old_value[2 * i + c];
-      }
+      for(int c = 0; c < 2; ++c) ch.set(x, 2 * g.m[i].sector + c, x[2 * g.m[i].sector + c] + d[c]);
     }
-    if(!changed) return false;
-    auto assign = [&](const double* val) {
-      for(int i = 0; i < g.n; ++i) for(int c = 0; c < 2; ++c) x[2 * g.m[i].sector + c] = val[2 * i + c];
-    };
-    assign(new_value);
+    return commit_if_better(ch, max_move, false);
+  }
 
-    bool ok = true;
-    std::size_t new_negative = 0;
-    for(std::size_t i = 0; i < corners.size() && ok; ++i) {
-      const int c = corners[i];
-      const int s = st.sector_of[c], sa = st.sector_of[cm.next[c]], sb = st.sector_of[cm.prev[c]];
-      const CGAL::Orientation o = CGAL::orientation(P(x[2 * s], x[2 * s + 1]), P(x[2 * sa], x[2 * sa + 1]),
-                                                    P(x[2 * sb], x[2 * sb + 1]));
-      if(o == CGAL::NEGATIVE) ++new_negative;
-      if(old_sign[i] == CGAL::POSITIVE && o != CGAL::POSITIVE) ok = false;
-      if(old_sign[i] == CGAL::ZERO && o == CGAL::NEGATIVE) ok = false;
+  // A tentative change of x: (variable, old value); x holds the new values while it is tested.
+  struct Change
+  {
+    std::vector<std::pair<int, double> > old;
+    void set(std::vector<double>& y, int var, double value)
+    {
+      if(y[var] == value) return;
+      old.emplace_back(var, y[var]);
+      y[var] = value;
     }
-    ok = ok && new_negative < old_negative;
-    // every row that mentions a changed variable holds exactly
-    for(int i = 0; i < g.n && ok; ++i)
-      for(int c = 0; c < 2 && ok; ++c) {
-        if(new_value[2 * i + c] == old_value[2 * i + c]) continue;
-        const std::size_t var = 2 * std::size_t(g.m[i].sector) + c;
-        for(std::size_t k = vr_start[var]; k < vr_start[var + 1] && ok; ++k)
-          if(!exact_row_residual(rows, std::size_t(vr_row[k]), x).is_zero()) ok = false;
+    void undo(std::vector<double>& y) const
+    {
+      for(std::size_t i = old.size(); i-- > 0;) y[old[i].first] = old[i].second;
+    }
+  };
+
+  // Exact orientations of the faces around the changed sectors: the total gain in orientation
+  // (NEGATIVE < ZERO < POSITIVE), or -1 if a face gets worse. `updates` receives the new values.
+  long orientation_gain(const Change& ch, std::vector<std::pair<int, signed char> >* updates)
+  {
+    ++stamp;
+    long gain = 0;
+    for(const std::pair<int, double>& v : ch.old) {
+      const int s = v.first / 2;
+      for(std::size_t k = sc_start[s]; k < sc_start[s + 1]; ++k) {
+        const int f = cm.face[sc_corner[k]];
+        if(face_stamp[f] == stamp) continue;
+        face_stamp[f] = stamp;
+        const signed char o = static_cast<signed char>(face_orientation(f, x));
+        if(o < orient_[f]) return -1;
+        gain += o - orient_[f];
+        if(updates != nullptr && o != orient_[f]) updates->emplace_back(f, o);
       }
-    if(!ok) assign(old_value);
-    return ok;
+    }
+    return gain;
+  }
+
+  // every changed value is finite and within `max_move` of the input, and every row of the full
+  // system that mentions a changed variable holds exactly
+  bool exact_and_bounded(const Change& ch, double max_move) const
+  {
+    for(const std::pair<int, double>& v : ch.old)
+      if(!std::isfinite(x[v.first]) || !(std::fabs(x[v.first] - (*ubar_)[v.first]) <= max_move)) return false;
+    for(const std::pair<int, double>& v : ch.old)
+      for(std::size_t k = vr_start[v.first]; k < vr_start[v.first + 1]; ++k)
+        if(!exact_row_residual(rows, std::size_t(vr_row[k]), x).is_zero()) return false;
+    return true;
+  }
+
+  // Keeps the change (x already holds it) iff it is exact, bounded, makes no face worse and at
+  // least one face better; otherwise undoes it. `dry_run`: always undoes, returns the gain.
+  long commit_if_better(const Change& ch, double max_move, bool dry_run)
+  {
+    if(ch.old.empty()) return 0;
+    std::vector<std::pair<int, signed char> > updates;
+    bool bounded = true;
+    for(const std::pair<int, double>& v : ch.old)
+      bounded = bounded && std::isfinite(x[v.first]) && std::fabs(x[v.first] - (*ubar_)[v.first]) <= max_move;
+    const long gain = bounded ? orientation_gain(ch, dry_run ? nullptr : &updates) : -1;
+    if(dry_run || gain <= 0 || !exact_and_bounded(ch, max_move)) { ch.undo(x); return dry_run ? gain : 0; }
+    for(const std::pair<int, signed char>& u : updates) orient_[u.first] = u.second;
+    return gain;
+  }
+
+  // ---- node moves: a few node vertices move together inside the null space of the node system C
+  // (Sec. 5.3): d with C_local d = 0, where C_local are the rows of C that mention the moved node
+  // sectors (all other sectors stay), computed exactly (local_null_space.h). Cones are fixed
+  // points of their transitions and move only together with the other ends of their branches,
+  // hence radius 1 (the vertices sharing a row of C). The values of the non-node sectors follow
+  // by the propagation of Sec. 5.3.1 (u^- = u_0^- - R^k u_0^+ + R^k u^+, exact integer sums on
+  // F_delta). Candidates: each basis vector, then each pair, times +-m grid quanta.
+
+  // vertices of the node system near face f: its node vertices (radius 0), and those sharing a
+  // row of C with them (radius 1); their sector variables in `vars`
+  bool node_cluster(int f, int radius, std::vector<int>& vars) const
+  {
+    std::vector<int> vertices;
+    for(int i = 0; i < 3; ++i) {
+      const int v = st.sector_vertex(cm, face_sector(f, i));
+      if(rs.is_node[v] && std::find(vertices.begin(), vertices.end(), v) == vertices.end()) vertices.push_back(v);
+    }
+    if(vertices.empty()) return false;
+    const std::size_t n0 = vertices.size();
+    for(int level = 0; level < radius; ++level)
+    for(std::size_t i = 0, n_level = vertices.size(); i < n_level; ++i)
+      for(std::size_t k = vs_start[vertices[i]]; k < vs_start[vertices[i] + 1]; ++k)
+        for(int c = 0; c < 2; ++c) {
+          const int var = 2 * vs_sector[k] + c;
+          for(std::size_t j = nr_start[var]; j < nr_start[var + 1]; ++j) {
+            const Constraint_rows& C = rs.node_rows;
+            for(std::size_t e = C.start[nr_row[j]]; e < C.start[nr_row[j] + 1]; ++e) {
+              const int w = st.sector_vertex(cm, C.col[e] / 2);
+              if(std::find(vertices.begin(), vertices.end(), w) == vertices.end()) vertices.push_back(w);
+            }
+          }
+        }
+    vars.clear();
+    for(int v : vertices)
+      for(std::size_t k = vs_start[v]; k < vs_start[v + 1]; ++k) { vars.push_back(2 * vs_sector[k]); vars.push_back(2 * vs_sector[k] + 1); }
+    return vars.size() <= 96;
+  }
+
+  // x += sum_i coef_i basis_i (grid integers) on `vars`, then the propagation; false if a value
+  // leaves F_delta (x is then partly changed: undo `ch`)
+  bool apply_node_move(const std::vector<int>& vars, const std::vector<std::vector<long> >& basis,
+                       const std::vector<std::pair<int, long> >& combo, Change& ch)
+  {
+    for(std::size_t j = 0; j < vars.size(); ++j) {
+      long d = 0;
+      for(const std::pair<int, long>& c : combo) d += c.second * basis[c.first][j];
+      if(d == 0) continue;
+      if(!grid.contains(x[vars[j]])) return false;
+      const std::int64_t z = grid.to_integer(x[vars[j]]) + d;
+      if(z > Fixed_point_grid::max_integer() || -z > Fixed_point_grid::max_integer()) return false;
+      ch.set(x, vars[j], grid.from_integer(z));
+    }
+    const std::size_t n_node_changes = ch.old.size();
+    for(std::size_t i = 0; i < n_node_changes; ++i) {
+      const int s = ch.old[i].first / 2;
+      if(i > 0 && ch.old[i - 1].first / 2 == s) continue;
+      for(int b : cut_from[s]) {
+        const Cut_branch_plan& p = rs.cut_branches[std::size_t(b)];
+        const Quarter_turn R(p.k);
+        for(const std::pair<int, int>& in : p.inner)
+          for(int c = 0; c < 2; ++c) {
+            const double v[3] = {x[2 * p.u0_minus + c], x[2 * p.u0_plus + R.col[c]], x[2 * in.first + R.col[c]]};
+            if(!grid.contains(v[0]) || !grid.contains(v[1]) || !grid.contains(v[2])) return false;
+            const std::int64_t z = grid.to_integer(v[0]) - R.sign[c] * (grid.to_integer(v[1]) - grid.to_integer(v[2]));
+            if(z > Fixed_point_grid::max_integer() || -z > Fixed_point_grid::max_integer()) return false;
+            ch.set(x, 2 * in.second + c, grid.from_integer(z));
+          }
+      }
+      for(int b : align_from[s]) {
+        const Align_branch_plan& p = rs.align_branches[std::size_t(b)];
+        for(int in : p.inner) ch.set(x, 2 * in + p.component, x[2 * p.u0 + p.component]);
+      }
+    }
+    return true;
+  }
+
+  bool try_node_move(int f, int radius, double max_move)
+  {
+    std::vector<int> vars;
+    if(!node_cluster(f, radius, vars)) return false;
+    // the rows of C that mention the cluster, restricted to its columns
+    const Constraint_rows& C = rs.node_rows;
+    for(std::size_t j = 0; j < vars.size(); ++j) col_of[vars[j]] = int(j);
+    std::vector<int> local_rows;
+    for(int var : vars)
+      for(std::size_t k = nr_start[var]; k < nr_start[var + 1]; ++k) local_rows.push_back(nr_row[k]);
+    std::sort(local_rows.begin(), local_rows.end());
+    local_rows.erase(std::unique(local_rows.begin(), local_rows.end()), local_rows.end());
+    std::vector<long> a(local_rows.size() * vars.size(), 0);
+    for(std::size_t i = 0; i < local_rows.size(); ++i)
+      for(std::size_t e = C.start[local_rows[i]]; e < C.start[local_rows[i] + 1]; ++e)
+        if(col_of[C.col[e]] >= 0) a[i * vars.size() + std::size_t(col_of[C.col[e]])] += C.coef[e];
+    for(int var : vars) col_of[var] = -1;
+    std::vector<std::vector<long> > basis;
+    integer_null_space(local_rows.size(), vars.size(), a, 1L << 16, basis);
+    if(basis.empty()) return false;
+
+    // the best candidate: largest gain, then the smallest move (the order of the search)
+    std::vector<std::pair<int, long> > best, combo;
+    long best_gain = 0;
+    auto consider = [&]() {
+      Change ch;
+      const bool ok = apply_node_move(vars, basis, combo, ch);
+      const long gain = ok ? commit_if_better(ch, max_move, true) : (ch.undo(x), -1);
+      if(gain > best_gain) { best_gain = gain; best = combo; }
+    };
+    const long scales[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128};
+    for(long m : scales)
+      for(std::size_t i = 0; i < basis.size(); ++i)
+        for(long sign : {1L, -1L}) { combo.assign(1, std::make_pair(int(i), sign * m)); consider(); }
+    if(best_gain == 0 && basis.size() > 1)
+      for(long m : {1L, 2L, 4L, 8L, 16L})
+        for(std::size_t i = 0; i < basis.size(); ++i)
+          for(std::size_t j = i + 1; j < basis.size(); ++j)
+            for(long si : {1L, -1L}) for(long sj : {1L, -1L}) {
+              combo.assign(1, std::make_pair(int(i), si * m));
+              combo.emplace_back(int(j), sj * m);
+              consider();
+            }
+    if(best_gain == 0) return false;
+    Change ch;
+    if(!apply_node_move(vars, basis, best, ch)) { ch.undo(x); return false; }
+    return commit_if_better(ch, max_move, false) > 0;
+  }
+
+  // true iff the constraints force the sectors s and t to one UV point: rows of the full system or
+  // of the node system C (sums of full rows, Eq. 9) that mention only s and t, of the form
+  // L (u_s - u_t) = 0, with two independent L (e.g. a cut branch with rotation k != 0 between two
+  // vertices with one sector each, such as two cones: (R^k - I)(u_s - u_t) = 0)
+  bool forced_equal(int s, int t) const
+  {
+    if(s == t) return true;
+    std::vector<std::array<long, 2> > l;
+    auto collect = [&](const Constraint_rows& r, const std::vector<std::size_t>& start, const std::vector<int>& row) {
+      for(std::size_t j = start[2 * s]; j < start[2 * s + 2]; ++j) {
+        const int i = row[j];
+        long c[4] = {0, 0, 0, 0};    // coefficients of u_s, v_s, u_t, v_t
+        bool only_st = true;
+        for(std::size_t k = r.start[i]; k < r.start[i + 1] && only_st; ++k) {
+          const int var = r.col[k];
+          if(var / 2 == s) c[var % 2] += r.coef[k];
+          else if(var / 2 == t) c[2 + var % 2] += r.coef[k];
+          else only_st = false;
+        }
+        if(only_st && c[0] == -c[2] && c[1] == -c[3] && (c[0] != 0 || c[1] != 0)) l.push_back({{c[0], c[1]}});
+      }
+    };
+    collect(rows, vr_start, vr_row);
+    collect(rs.node_rows, nr_start, nr_row);
+    for(std::size_t i = 0; i < l.size(); ++i)
+      for(std::size_t j = i + 1; j < l.size(); ++j)
+        if(l[i][0] * l[j][1] - l[i][1] * l[j][0] != 0) return true;
+    return false;
+  }
+
+  // true iff two corners of face f are forced to one UV point by the constraints (the face is
+  // degenerate in every exact solution)
+  bool forced_degenerate(int f) const
+  {
+    for(int i = 0; i < 3; ++i)
+      if(forced_equal(face_sector(f, i), face_sector(f, (i + 1) % 3))) return true;
+    return false;
+  }
+
+  // why the faces positive in the input and not at the end could not be repaired
+  std::string explain(const std::vector<int>& faces, double max_move) const
+  {
+    std::size_t forced = 0;
+    int other = -1;
+    for(int f : faces) {
+      if(forced_degenerate(f)) ++forced;
+      else if(other < 0) other = f;
+    }
+    std::ostringstream o;
+    o << std::setprecision(3);
+    if(forced > 0)
+      o << forced << " of them are degenerate in every exact solution: two of their corners are forced to one UV point "
+        << "by the constraints (a cut edge with rotation k != 0 whose endpoints have one sector each, e.g. two cones "
+        << "joined by a lone cut edge, must have length 0)";
+    if(other >= 0)
+      o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices, of their node neighbours in C "
+        << "or of their branches within " << max_move / grid.quantum << " grid steps keeps every row exact and makes no face worse";
+    return o.str();
   }
 };
-
-// number of faces with negative orientation in `x` but not in `ubar` (exact predicate)
-inline std::size_t count_introduced_flips(const Corner_mesh& cm, const Seam_topology& st,
-                                          const std::vector<double>& ubar, const std::vector<double>& x)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  std::size_t n = 0;
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
-    const int s[3] = {st.sector_of[h], st.sector_of[cm.next[h]], st.sector_of[cm.prev[h]]};
-    auto negative = [&](const std::vector<double>& y) {
-      return CGAL::orientation(P(y[2 * s[0]], y[2 * s[0] + 1]), P(y[2 * s[1]], y[2 * s[1] + 1]),
-                               P(y[2 * s[2]], y[2 * s[2] + 1])) == CGAL::NEGATIVE;
-    };
-    if(negative(x) && !negative(ubar)) ++n;
-  }
-  return n;
-}
 
 // Repairs flips of `x` (2 values per sector) in place; see the header comment.
 inline Flip_repair_result repair_flips(const Corner_mesh& cm, const Seam_topology& st, const Reduced_system& rs,

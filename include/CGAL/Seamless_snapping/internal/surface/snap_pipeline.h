@@ -71,20 +71,6 @@ struct Snap_options
   std::vector<Connection_path> connections;  // connection (Eq. 6) and cycle (Eq. 8) constraints
 };
 
-// number of UV triangles with negative orientation (exact predicate), corner values from `x`
-inline std::size_t count_flips(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  std::size_t flips = 0;
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
-    const int s0 = st.sector_of[h], s1 = st.sector_of[cm.next[h]], s2 = st.sector_of[cm.prev[h]];
-    const P p0(x[2 * s0], x[2 * s0 + 1]), p1(x[2 * s1], x[2 * s1 + 1]), p2(x[2 * s2], x[2 * s2 + 1]);
-    if(CGAL::orientation(p0, p1, p2) == CGAL::NEGATIVE) ++flips;
-  }
-  return flips;
-}
-
 // variables (2s + c) used by `rows`, in increasing order, and the inverse map (-1 = unused)
 inline void used_variables(const Constraint_rows& rows, std::size_t n_vars, std::vector<int>& vars, std::vector<int>& column_of)
 {
@@ -228,7 +214,9 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   double max_abs = 0;
   for(int v : S.constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
   S.grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (project_stage)
-  report.flips_before = count_flips(S.cm, S.st, ubar);
+  const Orientation_counts input = count_orientations(face_orientations(S.cm, S.st, ubar));
+  report.flips_before = input.negative;
+  report.degenerate_before = input.degenerate;
   return SUCCESS;
 }
 
@@ -297,26 +285,35 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
   }
 }
 
-// 5. flip repair (Sec. 5.4): moves that keep every row exact, each checked exactly
+// 5. flip repair (Sec. 5.4, generalized): moves that keep every row exact, each checked exactly
 template <class TriangleMesh>
 void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
-  report.flips_after = count_flips(S.cm, S.st, S.x);
-  report.flips_after_repair = report.flips_after;
-  if(!opt.repair_flips || S.already_exact) {
-    report.flips_unrepaired = count_introduced_flips(S.cm, S.st, S.st.ubar, S.x);
-    return;
-  }
+  const std::vector<signed char> input = face_orientations(S.cm, S.st, S.st.ubar);
+  const std::vector<signed char> snapped = face_orientations(S.cm, S.st, S.x);
+  const Orientation_counts after = count_orientations(snapped), introduced = count_orientations(snapped, &input);
+  report.flips_after = report.flips_after_repair = after.negative;
+  report.degenerate_after = report.degenerate_after_repair = after.degenerate;
+  report.flips_introduced = report.flips_unrepaired = introduced.negative;
+  report.degenerate_introduced = report.degenerate_unrepaired = introduced.degenerate;
+  if(!opt.repair_flips || S.already_exact) return;
   const Snap_clock::time_point t = Snap_clock::now();
   const Flip_repair_result fr = repair_flips(S.cm, S.st, S.rs, S.full, S.grid, S.st.ubar, S.x);
   report.repair_ms = ms_since(t);
-  report.flips_after_repair = fr.flips_after;
-  report.flips_unrepaired = fr.unrepaired;
+  report.flips_after_repair = fr.after.negative;
+  report.degenerate_after_repair = fr.after.degenerate;
+  report.flips_unrepaired = fr.introduced_after.negative;
+  report.degenerate_unrepaired = fr.introduced_after.degenerate;
   report.repair_moves = fr.moves;
-  if(fr.unrepaired > 0) {
-    S.flip_note = "; " + std::to_string(fr.unrepaired) + " flip(s) introduced by snapping could not be repaired locally (faces";
+  report.repair_node_moves = fr.node_moves;
+  report.degenerate_forced = fr.forced_degenerate;
+  if(!fr.unrepaired_faces.empty()) {
+    S.flip_note = "; " + std::to_string(fr.introduced_after.negative) + " flipped and " +
+                  std::to_string(fr.introduced_after.degenerate) +
+                  " degenerate UV triangle(s) introduced by snapping could not be repaired (faces";
     for(std::size_t i = 0; i < fr.unrepaired_faces.size() && i < 10; ++i) S.flip_note += " " + std::to_string(fr.unrepaired_faces[i]);
     S.flip_note += fr.unrepaired_faces.size() > 10 ? " ...)" : ")";
+    S.flip_note += "; " + fr.reasons;
   }
 }
 
