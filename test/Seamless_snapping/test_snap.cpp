@@ -653,9 +653,8 @@ static std::vector<int> face_signs(const Mesh& m, UV_map uv)
 // Every data mesh, with and without repair: the snap itself is the same, the reported counts are
 // the measured ones (negative and zero-area UV triangles, separately), the repair makes no
 // triangle worse (negative < degenerate < positive) nor increases the change, the result is exact,
-// and every triangle that was positive in the input and is not at the end is one that no exact
-// solution can make positive (two of its corners are forced to one UV point; counted by the
-// report and re-checked here: such a triangle is degenerate, not flipped).
+// and every degenerate triangle left that was positive in the input is one that no exact solution
+// can make positive (two of its corners are forced to one UV point by the constraint rows).
 static void test_flip_repair_data()
 {
   std::vector<fs::path> files;
@@ -692,7 +691,8 @@ static void test_flip_repair_data()
     assert(intro_neg[1] == r1.flips_unrepaired && intro_deg[1] == r1.degenerate_unrepaired);
     assert(r1.max_change <= r0.max_change);
     assert((r1.repair_moves == 0) == (uv_bits(m1, uv1) == uv_bits(m0, uv0)));
-    assert(r1.degenerate_forced <= r1.degenerate_unrepaired);
+    // every degenerate triangle left is one that the constraints force to be degenerate
+    assert(r1.degenerate_forced == r1.degenerate_unrepaired);
     introduced += r1.flips_introduced + r1.degenerate_introduced;
     unrepaired += r1.flips_unrepaired + r1.degenerate_unrepaired;
     forced += r1.degenerate_forced;

@@ -10,12 +10,13 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FLIP_REPAIR_H
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FLIP_REPAIR_H
 
-// Flip repair after snapping (Sec. 5.4, Sec. 6): a UV triangle whose orientation became negative
-// is fixed "by parametrically moving one of the vertices of the inverted triangle into the kernel
-// of its 1-ring", i.e. into the intersection of the half-planes spanned by the link edges of the
-// vertex, while every constraint row keeps holding exactly.
+// Flip repair after snapping (Sec. 5.4, Sec. 6, generalized as Sec. 7 suggests): a UV triangle
+// whose orientation got worse than in the input (negative, or degenerate = zero area) is fixed by
+// moving vertices while every constraint row keeps holding exactly. Orientations are ordered
+// NEGATIVE < ZERO < POSITIVE; a move is kept only if no triangle gets worse and one gets better.
 //
-// A move displaces the sectors of one *move group* by one displacement t:
+// 1. Group moves (Sec. 5.4: "parametrically moving one of the vertices of the inverted triangle
+//    into the kernel of its 1-ring"). A move displaces the sectors of one *move group* by t:
 //   free sector      a sector in no row of the full system (no cut edge, no align edge): x_s += t,
 //                    t in R^2, any double (no row mentions it);
 //   cut branch       the two sectors (u^+, u^-) of a non-node vertex inside a cut branch with
@@ -23,26 +24,38 @@
 //                    vertex, R^k (u_i^+ - u_{i+1}^+) - (u_i^- - u_{i+1}^-) = 0, keep holding since
 //                    R^k t - R^k t = 0; t is rounded to the grid F_delta so that the sums stay exact;
 //   align branch     the sector of a non-node vertex inside an align branch with aligned component
-//                    c: only component 1 - c moves (x_s += s e_{1-c}), the constant one stays;
-//   node sectors     and every other sector: fixed.
-// The corners of a group form its fan (for a cut-branch vertex: one fan per side, each in its own
-// chart). For a corner q of the fan and the other two corners a, b of its face (counter-clockwise),
-// the face stays positive iff orient(q + M t, a, b) > 0 (M = I or R^k), a half-plane in t:
-//   (M^T n) . t > -orient(q, a, b),   n = (a_v - b_v, b_u - a_u)   (n is the left normal of a -> b).
-// The kernel is clipped in doubles (a convex polygon, or an interval for align groups). Candidates
-// are the points of the kernel, shrunk by a growing margin, closest to t = 0 (the smallest move that
-// works; the last one is the centroid of the smallest non-empty shrunk kernel). Each candidate is
-// only accepted after exact tests on the doubles that would be stored:
-//   - CGAL::orientation (exact predicate) on every face of the group's fans: a positive face stays
-//     positive, a degenerate one does not become negative, and the number of negative faces drops;
-//   - every row of the full system that mentions a changed variable evaluates to zero exactly.
-// So a move never adds a flip nor breaks a constraint; the number of flips decreases monotonically.
-// Flips introduced by snapping are repaired first, then flips already present in the input.
+//                    c: only component 1 - c moves (x_s += s e_{1-c}), the constant one stays.
+//    The corners of a group form its fan (for a cut-branch vertex: one fan per side, each in its
+//    own chart). For a corner q of the fan and the other two corners a, b of its face
+//    (counter-clockwise), the face is positive iff orient(q + M t, a, b) > 0 (M = I or R^k), a
+//    half-plane in t:  (M^T n) . t > -orient(q, a, b),  n = (a_v - b_v, b_u - a_u).
+//    The kernel is clipped in doubles (a convex polygon, or an interval for align groups).
+//    Candidates are the points of the kernel, shrunk by a growing margin, closest to t = 0 (the
+//    smallest move that works; the last one is the centroid of the smallest non-empty kernel).
+// 2. Node moves, for introduced faces that group moves cannot fix (typically two cones a few grid
+//    steps apart, Sec. 5.3 makes cones nodes): the node vertices of the face, alone (radius 0),
+//    with the vertices sharing a row of the node system C (radius 1), or their neighbours too
+//    (radius 2), move by d with C_local d = 0 (C_local: the rows of C that mention the moved
+//    sectors; the other sectors stay), from an exact integer basis of that null space
+//    (local_null_space.h) times +-m grid quanta (each basis vector, then pairs). A cone is the
+//    fixed point of its transition, so it moves only with the other ends of its branches. The
+//    non-node sectors of the branches starting at a moved node follow by the propagation of
+//    Sec. 5.3.1 (u^- = u_0^- - R^k u_0^+ + R^k u^+, exact integer sums on F_delta; aligned
+//    components are copied). Of all candidates the one with the largest gain is kept.
+// Every candidate is only accepted after exact tests on the doubles that would be stored:
+//   - CGAL::orientation (exact predicate) on every face around a changed sector: none gets worse,
+//     at least one gets better;
+//   - every row of the full system that mentions a changed variable evaluates to zero exactly
+//     (and the pipeline checks every row again at the end, verify_stage).
+// So the number of bad faces decreases monotonically and exactness is never traded. Faces made
+// worse by snapping are repaired first (group moves, then node moves), then faces flipped in the
+// input (group moves only).
 // Bound: every moved coordinate stays within max_i |x_i - ubar_i| (the largest change made by
-// snapping) of its input value, so the repair never increases the maximal change. (Without it,
-// the dragon of the shared data gets a few more of its introduced flips repaired, but by moves of
-// up to 1% of the UV diagonal in regions that are folded in the input; 16 times the bound repairs
-// nothing more there than the bound itself.)
+// snapping) of its input value, so the repair never increases the maximal change.
+// What is left is explained: a face is *forced degenerate* when u_s - u_t = 0 for two of its
+// sectors is a rational combination of constraint rows (exact rank test), e.g. two cones joined by
+// a cut branch with rotation k != 0, (R^k - I)(u_s - u_t) = 0: no exact solution of these
+// constraints has that face positive.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
@@ -692,42 +705,45 @@ private:
     return commit_if_better(ch, max_move, false) > 0;
   }
 
-  // true iff the constraints force the sectors s and t to one UV point: rows of the full system or
-  // of the node system C (sums of full rows, Eq. 9) that mention only s and t, of the form
-  // L (u_s - u_t) = 0, with two independent L (e.g. a cut branch with rotation k != 0 between two
-  // vertices with one sector each, such as two cones: (R^k - I)(u_s - u_t) = 0)
-  bool forced_equal(int s, int t) const
-  {
-    if(s == t) return true;
-    std::vector<std::array<long, 2> > l;
-    auto collect = [&](const Constraint_rows& r, const std::vector<std::size_t>& start, const std::vector<int>& row) {
-      for(std::size_t j = start[2 * s]; j < start[2 * s + 2]; ++j) {
-        const int i = row[j];
-        long c[4] = {0, 0, 0, 0};    // coefficients of u_s, v_s, u_t, v_t
-        bool only_st = true;
-        for(std::size_t k = r.start[i]; k < r.start[i + 1] && only_st; ++k) {
-          const int var = r.col[k];
-          if(var / 2 == s) c[var % 2] += r.coef[k];
-          else if(var / 2 == t) c[2 + var % 2] += r.coef[k];
-          else only_st = false;
-        }
-        if(only_st && c[0] == -c[2] && c[1] == -c[3] && (c[0] != 0 || c[1] != 0)) l.push_back({{c[0], c[1]}});
-      }
-    };
-    collect(rows, vr_start, vr_row);
-    collect(rs.node_rows, nr_start, nr_row);
-    for(std::size_t i = 0; i < l.size(); ++i)
-      for(std::size_t j = i + 1; j < l.size(); ++j)
-        if(l[i][0] * l[j][1] - l[i][1] * l[j][0] != 0) return true;
-    return false;
-  }
-
-  // true iff two corners of face f are forced to one UV point by the constraints (the face is
-  // degenerate in every exact solution)
+  // true iff the constraints force two corners of face f to one UV point, so that the face is
+  // degenerate in every exact solution: for sectors s, t of the face, u_s - u_t = 0 (both
+  // components) is a rational combination of rows of the full system touching s or t and of rows of
+  // the node system C (sums of full rows, Eq. 9) near f (radius 2). Example: a cut branch with
+  // rotation k != 0 between two vertices with one sector each, such as two cones joined by a lone
+  // cut edge, (R^k - I)(u_s - u_t) = 0.
   bool forced_degenerate(int f) const
   {
-    for(int i = 0; i < 3; ++i)
-      if(forced_equal(face_sector(f, i), face_sector(f, (i + 1) % 3))) return true;
+    std::vector<int> vars;
+    node_cluster(f, 2, vars);
+    for(int i = 0; i < 3; ++i) { vars.push_back(2 * face_sector(f, i)); vars.push_back(2 * face_sector(f, i) + 1); }
+    std::vector<std::pair<const Constraint_rows*, int> > local;
+    for(int var : vars) {
+      for(std::size_t k = nr_start[var]; k < nr_start[var + 1]; ++k) local.emplace_back(&rs.node_rows, nr_row[k]);
+      for(std::size_t k = vr_start[var]; k < vr_start[var + 1]; ++k) local.emplace_back(&rows, vr_row[k]);
+    }
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    std::vector<int> cols;
+    for(const auto& r : local)
+      for(std::size_t e = r.first->start[r.second]; e < r.first->start[r.second + 1]; ++e) cols.push_back(r.first->col[e]);
+    for(int i = 0; i < 3; ++i) { cols.push_back(2 * face_sector(f, i)); cols.push_back(2 * face_sector(f, i) + 1); }
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    if(local.empty() || cols.size() > 256) return false;
+    auto column = [&](int var) { return std::size_t(std::lower_bound(cols.begin(), cols.end(), var) - cols.begin()); };
+    const std::size_t nc = cols.size();
+    std::vector<long> a(local.size() * nc, 0);
+    for(std::size_t i = 0; i < local.size(); ++i) {
+      const Constraint_rows& r = *local[i].first;
+      for(std::size_t e = r.start[local[i].second]; e < r.start[local[i].second + 1]; ++e) a[i * nc + column(r.col[e])] += r.coef[e];
+    }
+    for(int i = 0; i < 3; ++i) {
+      const int s = face_sector(f, i), t = face_sector(f, (i + 1) % 3);
+      if(s == t) return true;
+      std::vector<long> b(2 * nc, 0);
+      for(int c = 0; c < 2; ++c) { b[c * nc + column(2 * s + c)] = 1; b[c * nc + column(2 * t + c)] = -1; }
+      if(rows_in_row_space(local.size(), nc, a, 2, b)) return true;
+    }
     return false;
   }
 
@@ -744,8 +760,8 @@ private:
     o << std::setprecision(3);
     if(forced > 0)
       o << forced << " of them are degenerate in every exact solution: two of their corners are forced to one UV point "
-        << "by the constraints (a cut edge with rotation k != 0 whose endpoints have one sector each, e.g. two cones "
-        << "joined by a lone cut edge, must have length 0)";
+        << "by the constraints (u_s - u_t = 0 is a combination of constraint rows, e.g. two cones joined by a cut branch "
+        << "with rotation k != 0: (R^k - I)(u_s - u_t) = 0)";
     if(other >= 0)
       o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices, of their node neighbours in C "
         << "or of their branches within " << max_move / grid.quantum << " grid steps keeps every row exact and makes no face worse";

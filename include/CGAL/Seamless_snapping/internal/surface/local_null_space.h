@@ -10,7 +10,8 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_LOCAL_NULL_SPACE_H
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_LOCAL_NULL_SPACE_H
 
-// An integer basis of the null space {d : A d = 0} of a small dense integer matrix A, exactly:
+// Small dense integer matrices, exactly: whether rows lie in the row space of A, and
+// an integer basis of the null space {d : A d = 0} of A:
 // reduced row echelon form over Q (CGAL::Gmpq), one basis vector per free column (1 there, minus
 // the pivot rows' entries at the pivot columns), scaled by the lcm of its denominators and divided
 // by the gcd of its entries. Used by the flip repair (flip_repair.h) for the moves of a few node
@@ -30,13 +31,12 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// `a`: n_rows x n_cols, row-major. Appends the basis vectors (n_cols entries each) to `basis`.
-inline void integer_null_space(std::size_t n_rows, std::size_t n_cols, const std::vector<long>& a, long max_entry,
-                               std::vector<std::vector<long> >& basis)
+// Reduced row echelon form of `m` (n_rows x n_cols, row-major) in place; the pivot column of each
+// nonzero row, in order.
+inline void reduced_row_echelon(std::vector<CGAL::Gmpq>& m, std::size_t n_rows, std::size_t n_cols,
+                                std::vector<int>& pivot_col)
 {
-  std::vector<CGAL::Gmpq> m(a.begin(), a.end());
-  std::vector<int> pivot_col;                                // per reduced row
-  std::vector<char> is_pivot(n_cols, 0);
+  pivot_col.clear();
   std::size_t r = 0;
   for(std::size_t c = 0; c < n_cols && r < n_rows; ++c) {
     std::size_t p = r;
@@ -51,9 +51,33 @@ inline void integer_null_space(std::size_t n_rows, std::size_t n_cols, const std
       for(std::size_t j = 0; j < n_cols; ++j) m[i * n_cols + j] -= f * m[r * n_cols + j];
     }
     pivot_col.push_back(int(c));
-    is_pivot[c] = 1;
     ++r;
   }
+}
+
+// true iff every row of `b` (n_b x n_cols) is a rational combination of the rows of `a`
+// (n_rows x n_cols): rank [a; b] = rank a.
+inline bool rows_in_row_space(std::size_t n_rows, std::size_t n_cols, const std::vector<long>& a,
+                              std::size_t n_b, const std::vector<long>& b)
+{
+  std::vector<CGAL::Gmpq> m(a.begin(), a.end());
+  std::vector<int> pivots;
+  reduced_row_echelon(m, n_rows, n_cols, pivots);
+  const std::size_t rank = pivots.size();
+  m.insert(m.end(), b.begin(), b.end());
+  reduced_row_echelon(m, n_rows + n_b, n_cols, pivots);
+  return pivots.size() == rank;
+}
+
+// `a`: n_rows x n_cols, row-major. Appends the basis vectors (n_cols entries each) to `basis`.
+inline void integer_null_space(std::size_t n_rows, std::size_t n_cols, const std::vector<long>& a, long max_entry,
+                               std::vector<std::vector<long> >& basis)
+{
+  std::vector<CGAL::Gmpq> m(a.begin(), a.end());
+  std::vector<int> pivot_col;
+  reduced_row_echelon(m, n_rows, n_cols, pivot_col);
+  std::vector<char> is_pivot(n_cols, 0);
+  for(int c : pivot_col) is_pivot[std::size_t(c)] = 1;
   for(std::size_t f = 0; f < n_cols; ++f) {
     if(is_pivot[f]) continue;
     std::vector<CGAL::Gmpq> v(n_cols, CGAL::Gmpq(0));
