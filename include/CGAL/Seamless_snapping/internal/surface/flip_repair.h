@@ -598,7 +598,6 @@ private:
       if(rs.is_node[v] && std::find(vertices.begin(), vertices.end(), v) == vertices.end()) vertices.push_back(v);
     }
     if(vertices.empty()) return false;
-    const std::size_t n0 = vertices.size();
     for(int level = 0; level < radius; ++level)
     for(std::size_t i = 0, n_level = vertices.size(); i < n_level; ++i)
       for(std::size_t k = vs_start[vertices[i]]; k < vs_start[vertices[i] + 1]; ++k)
@@ -616,6 +615,20 @@ private:
     for(int v : vertices)
       for(std::size_t k = vs_start[v]; k < vs_start[v + 1]; ++k) { vars.push_back(2 * vs_sector[k]); vars.push_back(2 * vs_sector[k] + 1); }
     return vars.size() <= 96;
+  }
+
+  // u^- of the pair `in` of the cut branch p from u_0^+, u_0^-, u^+ (Sec. 5.3.1), exactly on F_delta
+  bool propagate_pair(const Cut_branch_plan& p, const std::pair<int, int>& in, Change& ch)
+  {
+    const Quarter_turn R(p.k);
+    for(int c = 0; c < 2; ++c) {
+      const double v[3] = {x[2 * p.u0_minus + c], x[2 * p.u0_plus + R.col[c]], x[2 * in.first + R.col[c]]};
+      if(!grid.contains(v[0]) || !grid.contains(v[1]) || !grid.contains(v[2])) return false;
+      const std::int64_t z = grid.to_integer(v[0]) - R.sign[c] * (grid.to_integer(v[1]) - grid.to_integer(v[2]));
+      if(z > Fixed_point_grid::max_integer() || -z > Fixed_point_grid::max_integer()) return false;
+      ch.set(x, 2 * in.second + c, grid.from_integer(z));
+    }
+    return true;
   }
 
   // x += sum_i coef_i basis_i (grid integers) on `vars`, then the propagation; false if a value
@@ -636,18 +649,9 @@ private:
     for(std::size_t i = 0; i < n_node_changes; ++i) {
       const int s = ch.old[i].first / 2;
       if(i > 0 && ch.old[i - 1].first / 2 == s) continue;
-      for(int b : cut_from[s]) {
-        const Cut_branch_plan& p = rs.cut_branches[std::size_t(b)];
-        const Quarter_turn R(p.k);
-        for(const std::pair<int, int>& in : p.inner)
-          for(int c = 0; c < 2; ++c) {
-            const double v[3] = {x[2 * p.u0_minus + c], x[2 * p.u0_plus + R.col[c]], x[2 * in.first + R.col[c]]};
-            if(!grid.contains(v[0]) || !grid.contains(v[1]) || !grid.contains(v[2])) return false;
-            const std::int64_t z = grid.to_integer(v[0]) - R.sign[c] * (grid.to_integer(v[1]) - grid.to_integer(v[2]));
-            if(z > Fixed_point_grid::max_integer() || -z > Fixed_point_grid::max_integer()) return false;
-            ch.set(x, 2 * in.second + c, grid.from_integer(z));
-          }
-      }
+      for(int b : cut_from[s])
+        for(const std::pair<int, int>& in : rs.cut_branches[std::size_t(b)].inner)
+          if(!propagate_pair(rs.cut_branches[std::size_t(b)], in, ch)) return false;
       for(int b : align_from[s]) {
         const Align_branch_plan& p = rs.align_branches[std::size_t(b)];
         for(int in : p.inner) ch.set(x, 2 * in + p.component, x[2 * p.u0 + p.component]);
@@ -707,10 +711,10 @@ private:
 
   // true iff the constraints force two corners of face f to one UV point, so that the face is
   // degenerate in every exact solution: for sectors s, t of the face, u_s - u_t = 0 (both
-  // components) is a rational combination of rows of the full system touching s or t and of rows of
-  // the node system C (sums of full rows, Eq. 9) near f (radius 2). Example: a cut branch with
-  // rotation k != 0 between two vertices with one sector each, such as two cones joined by a lone
-  // cut edge, (R^k - I)(u_s - u_t) = 0.
+  // components, right-hand side 0) is a rational combination of rows (C x = b, b included) of the
+  // full system touching s or t and of rows of the node system C (sums of full rows, Eq. 9) near f
+  // (radius 2). Example: a cut branch with rotation k != 0 between two vertices with one sector
+  // each, such as two cones joined by a lone cut edge, (R^k - I)(u_s - u_t) = 0.
   bool forced_degenerate(int f) const
   {
     std::vector<int> vars;
@@ -731,11 +735,12 @@ private:
     cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     if(local.empty() || cols.size() > 256) return false;
     auto column = [&](int var) { return std::size_t(std::lower_bound(cols.begin(), cols.end(), var) - cols.begin()); };
-    const std::size_t nc = cols.size();
+    const std::size_t nc = cols.size() + 1;            // the last column: the right-hand side b
     std::vector<long> a(local.size() * nc, 0);
     for(std::size_t i = 0; i < local.size(); ++i) {
       const Constraint_rows& r = *local[i].first;
       for(std::size_t e = r.start[local[i].second]; e < r.start[local[i].second + 1]; ++e) a[i * nc + column(r.col[e])] += r.coef[e];
+      a[i * nc + nc - 1] = r.rhs[std::size_t(local[i].second)];
     }
     for(int i = 0; i < 3; ++i) {
       const int s = face_sector(f, i), t = face_sector(f, (i + 1) % 3);

@@ -16,7 +16,7 @@
 //   2. reduce    nodes, branches, node system C                  (Sec. 5.3)      reduce_stage
 //   3. project   C through Exact_constraint_projection on F_delta (Sec. 4)       project_stage
 //   4. propagate non-node sectors along the branches              (Sec. 5.3.1)   project_node_system
-//   5. repair    flips, moving sector groups, exactly             (Sec. 5.4)     repair_stage
+//   5. repair    flipped/degenerate triangles: group and node moves, exactly (Sec. 5.4, 7)   repair_stage
 //   6. verify    every row of the full system, exactly (Gmpq), before anything is written   verify_stage
 //   7. write     the corners of the changed sectors into the caller's map                   write_stage
 // With use_reduced_system = false, step 4 is skipped and the full system goes to step 3.
