@@ -232,6 +232,23 @@ static void test_malformed()
   expect_invalid("texture index out of range", tri + "f 1/1 2/2 3/30\n", "texture index 30 out of range");
   expect_invalid("index 0", tri + "f 0/1 2/2 3/3\n", "index 0");
   expect_invalid("relative index before start", tri + "f -5/1 -2/2 -1/3\n", "relative vertex index -5");
+  // reproducers obj_llong_min_*.obj: -2^63 cannot be negated; it used to wrap and read past the arrays
+  expect_invalid("vertex index -2^63", tri + "f -9223372036854775808/1 2/2 3/3\n",
+                 "stream:9: relative vertex index -9223372036854775808 out of range");
+  expect_invalid("texture index -2^63", tri + "f 1/-9223372036854775808 2/2 3/3\n",
+                 "stream:9: relative texture index -9223372036854775808 out of range");
+  expect_invalid("vertex index 2^63-1", tri + "f 9223372036854775807/1 2/2 3/3\n", "vertex index 9223372036854775807 out of range");
+  expect_invalid("index beyond long long", tri + "f 1/1 2/2 3/99999999999999999999\n", "cannot parse texture index");
+  expect_invalid("relative index = -(count)", tri + "f 1/-5 2/2 3/3\n", "relative texture index -5 out of range");
+  {  // a huge unparsable number: the message quotes a bounded part of it and names the line
+    const std::string huge = "0." + std::string(1 << 20, '7') + "x";
+    Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
+    std::istringstream is(tri + "vt 0 " + huge + "\n");
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::INVALID_INPUT, "huge token: status");
+    CHECK(msg.size() < 200 && msg.find("stream:9: cannot parse coordinate '0.7777") != std::string::npos &&
+          msg.find("(" + std::to_string(huge.size()) + " characters)") != std::string::npos, "huge token message: " << msg);
+    std::cout << "  huge token: " << msg << "\n";
+  }
   expect_invalid("degenerate face", tri + "f 1/1 1/2 3/3\n", "degenerate");
   expect_invalid("degenerate after weld", tri + "v 0 0 0\nf 1/1 5/2 3/3\n", "after welding", true);
   expect_invalid("empty", "", "empty mesh");
@@ -259,6 +276,16 @@ static void test_valid_variants()
     if(m.is_border(h)) continue;
     const Point_3& p = m.point(m.target(h));
     CHECK(get(uv, h) == Point_2(p.x(), p.y()), "variants: corner UV of vertex " << m.target(h));
+  }
+
+  // a UTF-8 byte-order mark before the first record is not part of it
+  {
+    Mesh b; UV_map ub = b.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string bmsg;
+    std::istringstream is("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(is, b, ub, bmsg) == SS::SUCCESS && b.number_of_vertices() == 3 &&
+          bmsg.find("skipped") == std::string::npos, "UTF-8 BOM: " << bmsg);
+    for(halfedge_descriptor h : b.halfedges())
+      if(!b.is_border(h)) CHECK(get(ub, h) == Point_2(b.point(b.target(h)).x(), b.point(b.target(h)).y()), "UTF-8 BOM: corner UV");
   }
 
   // welding: a cut square (two triangles with their own copies of the diagonal) becomes one disk

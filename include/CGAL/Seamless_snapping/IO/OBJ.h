@@ -116,6 +116,29 @@ inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c ==
 
 inline void skip_spaces(const char*& p, const char* end) { while(p != end && is_space(*p)) ++p; }
 
+// A token of the file for a message, quoted: at most 60 characters of it, then "..." and its
+// length, so that a huge unparsable token does not end up whole in the message.
+inline std::string quote_token(const char* begin, const char* end)
+{
+  const std::size_t n = std::size_t(end - begin), shown = 60;
+  if(n <= shown) return "'" + std::string(begin, end) + "'";
+  return "'" + std::string(begin, begin + shown) + "...' (" + std::to_string(n) + " characters)";
+}
+
+// 0-based element index of the OBJ index `i` (1-based, or negative = relative to the `count`
+// elements read so far, -1 = the last one). Checked arithmetic: every long long, also -2^63, is
+// either mapped into [0, count) (negative indices) or kept for the range check at the end of the
+// file (positive ones: the format allows forward references). False for a negative index that
+// refers before the first element.
+inline bool resolve_index(long long i, std::size_t count, long long& zero_based)
+{
+  if(i > 0) { zero_based = i - 1; return true; }
+  // i < 0: valid iff -i <= count, i.e. -(i + 1) < count (-i itself overflows for i = -2^63)
+  if(static_cast<unsigned long long>(-(i + 1)) >= count) return false;
+  zero_based = static_cast<long long>(count) + i;
+  return true;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Reading: OBJ text -> triangle soup with per-corner vt indices (no mesh is touched here).
 // ---------------------------------------------------------------------------------------------
@@ -150,6 +173,8 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
     ++lineno;
     const char* p = line.data();
     const char* end = p + line.size();
+    // a UTF-8 byte-order mark at the start of the file is not part of the first record
+    if(lineno == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) p += 3;
     // A '#' starts a comment anywhere on the line (also covers "#scale_uv" and friends).
     if(const void* hash = std::memchr(p, '#', line.size()))
       end = static_cast<const char*>(hash);
@@ -171,9 +196,9 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
           return fail(lineno, std::string("'") + what + "' record needs " + std::to_string(required) + " coordinates, got " + std::to_string(k));
         if(!parse_double(p, end, out[k], oor) || (p != end && !is_space(*p))) {
           const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
-          std::string tok(start, tok_end);
-          if(oor) return fail(lineno, "coordinate '" + tok + "' is outside the range of double (Inf)");
-          return fail(lineno, "cannot parse coordinate '" + tok + "' of a '" + what + "' record");
+          const std::string tok = quote_token(start, tok_end);
+          if(oor) return fail(lineno, "coordinate " + tok + " is outside the range of double (Inf)");
+          return fail(lineno, "cannot parse coordinate " + tok + " of a '" + what + "' record");
         }
         if(!std::isfinite(out[k]))
           return fail(lineno, std::string("non-finite coordinate (NaN or Inf) in a '") + what + "' record");
@@ -204,7 +229,7 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
         const char* tok = p;
         while(p != end && !is_space(*p)) ++p;
         const char* tok_end = p;
-        const std::string tok_str(tok, tok_end);
+        const std::string tok_str = quote_token(tok, tok_end);
         if(n == 3) {   // count the rest for the message
           int extra = 1;
           for(;;) { skip_spaces(p, end); if(p == end) break; while(p != end && !is_space(*p)) ++p; ++extra; }
@@ -214,43 +239,34 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
         const char* q = tok;
         long long a = 0, b = 0;
         if(!parse_index(q, tok_end, a))
-          return fail(lineno, "cannot parse vertex index in face corner '" + tok_str + "'");
+          return fail(lineno, "cannot parse vertex index in face corner " + tok_str);
         if(q == tok_end || *q != '/')
-          return fail(lineno, "face corner '" + tok_str + "' has no texture coordinate (expected v/vt or v/vt/vn)");
+          return fail(lineno, "face corner " + tok_str + " has no texture coordinate (expected v/vt or v/vt/vn)");
         ++q;
         if(q == tok_end || *q == '/')
-          return fail(lineno, "face corner '" + tok_str + "' has no texture coordinate" + (q != tok_end ? " (v//vn)" : "") +
+          return fail(lineno, "face corner " + tok_str + " has no texture coordinate" + (q != tok_end ? " (v//vn)" : "") +
                               "; per-corner UVs are required");
         if(!parse_index(q, tok_end, b))
-          return fail(lineno, "cannot parse texture index in face corner '" + tok_str + "'");
+          return fail(lineno, "cannot parse texture index in face corner " + tok_str);
         if(q != tok_end) {
-          if(*q != '/') return fail(lineno, "malformed face corner '" + tok_str + "'");
+          if(*q != '/') return fail(lineno, "malformed face corner " + tok_str);
           ++q;
           long long c = 0;   // normal index: syntax checked, value ignored
           if(q != tok_end && (!parse_index(q, tok_end, c) || q != tok_end))
-            return fail(lineno, "malformed normal index in face corner '" + tok_str + "'");
+            return fail(lineno, "malformed normal index in face corner " + tok_str);
         }
         if(a == 0 || b == 0)
-          return fail(lineno, "index 0 in face corner '" + tok_str + "' (OBJ indices start at 1)");
+          return fail(lineno, "index 0 in face corner " + tok_str + " (OBJ indices start at 1)");
         // Negative = relative to the elements read so far (-1 = the last one).
-        if(a < 0) {
-          if(-a > static_cast<long long>(soup.points.size()))
-            return fail(lineno, "relative vertex index " + std::to_string(a) + " refers before the first vertex (" +
-                                std::to_string(soup.points.size()) + " read so far)");
-          a = static_cast<long long>(soup.points.size()) + a;
-        } else {
-          if(a > max_v) { max_v = a; max_v_line = lineno; }
-          a -= 1;
-        }
-        if(b < 0) {
-          if(-b > static_cast<long long>(soup.uvs.size()))
-            return fail(lineno, "relative texture index " + std::to_string(b) + " refers before the first texture coordinate (" +
-                                std::to_string(soup.uvs.size()) + " read so far)");
-          b = static_cast<long long>(soup.uvs.size()) + b;
-        } else {
-          if(b > max_vt) { max_vt = b; max_vt_line = lineno; }
-          b -= 1;
-        }
+        const long long a_in = a, b_in = b;
+        if(!resolve_index(a_in, soup.points.size(), a))
+          return fail(lineno, "relative vertex index " + std::to_string(a_in) + " out of range: it refers before the first vertex (" +
+                              std::to_string(soup.points.size()) + " read so far)");
+        if(!resolve_index(b_in, soup.uvs.size(), b))
+          return fail(lineno, "relative texture index " + std::to_string(b_in) + " out of range: it refers before the first texture coordinate (" +
+                              std::to_string(soup.uvs.size()) + " read so far)");
+        if(a_in > max_v) { max_v = a_in; max_v_line = lineno; }
+        if(b_in > max_vt) { max_vt = b_in; max_vt_line = lineno; }
         vi[n] = a; ti[n] = b;
         ++n;
       }
