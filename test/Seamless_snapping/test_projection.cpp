@@ -494,15 +494,45 @@ void test_determinism()
   }
   // scale covariance: for b = 0, scaling x̄ by 2^j must scale x by 2^j bit for bit (every step of
   // Sec. 4.3 is relative to delta = 2^K, so a mismatch would expose a hidden absolute constant)
-  for(int j : { -40, -3, 1, 7, 60 }) {
+  // Over the whole range of double: every j for which x̄ * 2^j is exact and the grid 2^K fits in
+  // double (Fixed_point_grid::min/max_exponent) snaps bit for bit; outside, RANGE_EXCEEDED names the
+  // limits of double (the grid is not silently clamped, which would break the covariance).
+  int lo = 0, hi = 0;
+  std::string refused_below, refused_above;
+  for(int j = -1100; j <= 1100; j += (j < -1000 || j >= 1000 ? 2 : 50)) {
     std::vector<double> xs(s.n);
-    for(std::size_t i = 0; i < s.n; ++i) xs[i] = std::ldexp(xbar[i], j);
+    bool exact_input = true;
+    for(std::size_t i = 0; i < s.n; ++i) {
+      xs[i] = std::ldexp(xbar[i], j);
+      exact_input = exact_input && std::ldexp(xs[i], -j) == xbar[i];
+    }
     const Outcome o = run(s, xs);
-    check_success(s, xs, o);
-    bool covariant = true;
+    if(o.status() != SS::SUCCESS) {
+      const bool clear = o.status() == SS::RANGE_EXCEEDED && o.report.message.find("double") != std::string::npos;
+      std::string& edge = j < 0 ? refused_below : refused_above;   // the refusals next to the snapping range
+      if(j < 0 || edge.empty())
+        edge = "x̄ * 2^" + std::to_string(j) + (exact_input ? "" : " (x̄ lost bits)") + ": " + SS::status_name(o.status()) + ": " + o.report.message;
+      assert(!exact_input || clear);
+      assert(j < -900 || j > 900);
+      continue;
+    }
+    if(exact_input) check_success(s, xs, o);
+    else assert(SS_test::exactly_satisfied(s, o.x));   // x̄ underflowed (e.g. to -0.0, which the grid rounds to +0.0)
+    bool covariant = exact_input;
     for(std::size_t i = 0; i < s.n; ++i) covariant = covariant && bit_identical(o.x[i], std::ldexp(base.x[i], j));
-    std::cout << "x̄ * 2^" << j << ": x * 2^" << j << (covariant ? " bit for bit" : " DIFFERS") << std::endl;
-    assert(covariant);
+    if(exact_input && !covariant) std::cout << "x̄ * 2^" << j << ": x DIFFERS from x(j = 0) * 2^" << j << std::endl;
+    assert(covariant || !exact_input);
+    if(covariant) { lo = std::min(lo, j); hi = std::max(hi, j); }
+  }
+  std::cout << "x̄ * 2^j: x * 2^j bit for bit for j in [" << lo << ", " << hi << "] (max |x̄| = " << max_abs(xbar)
+            << ")\n  " << refused_below << "\n  " << refused_above << std::endl;
+  assert(lo <= -900 && hi >= 900);
+  // a grid asked for outside the doubles is refused, not clamped (a clamped grid broke the covariance)
+  for(int K : {SS::internal::Fixed_point_grid::min_exponent - 1, SS::internal::Fixed_point_grid::max_exponent + 1}) {
+    SS::Projection_options options;
+    options.delta_exponent = K;
+    const Outcome o = run(s, xbar, options);
+    assert(o.status() == SS::RANGE_EXCEEDED && o.report.message.find("outside the range of double grids") != std::string::npos);
   }
 }
 

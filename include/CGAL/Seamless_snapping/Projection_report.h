@@ -35,6 +35,10 @@ struct Projection_options
   bool force_multiprecision = false;
   /// When set, `K` (with `delta = 2^K`) is taken from here instead of from x̄, so that several
   /// projections (e.g. the node system and the propagation of Sec. 5.3) share one grid `F_delta`.
+  /// Whether given or taken from x̄, `K` must lie in [-1022, 1023] (delta a normal double, the quantum
+  /// `2^(K-52)` at least the smallest subnormal): otherwise `project()` returns `RANGE_EXCEEDED`.
+  /// Within this range the projection is scale covariant: for `b = 0`, x̄ scaled by `2^j` gives `x`
+  /// scaled by `2^j`, bit for bit.
   std::optional<int> delta_exponent;
 };
 

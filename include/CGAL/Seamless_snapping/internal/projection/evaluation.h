@@ -83,6 +83,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   const std::size_t n = ir.n_cols, m = ir.rank();
   auto fail = [&](Status s, const std::string& msg) { report.status = s; report.message = msg; };
   report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
+  if(!grid.in_range) { fail(RANGE_EXCEEDED, grid.range_message()); return; }
   for(std::size_t i = 0; i < n; ++i)
     if(ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta)) {
       fail(RANGE_EXCEEDED, "|x̄[" + std::to_string(i) + "]| is outside the fixed-point range (-2^" + std::to_string(grid.K)

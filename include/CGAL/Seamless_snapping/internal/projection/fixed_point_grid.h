@@ -18,9 +18,12 @@
 // is a multiple of s below 2^52 s in magnitude, hence representable with 53 significant bits.
 // We therefore often work with the integer z = v / s (|z| < 2^52), which is exact as s is a power of 2.
 
+#include <CGAL/assertions.h>
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 namespace CGAL {
 namespace Seamless_snapping {
@@ -28,20 +31,37 @@ namespace internal {
 
 struct Fixed_point_grid
 {
-  // Exponents are clamped so that s stays a normal double and delta stays finite.
-  static constexpr int min_exponent = -1020 + 52;
+  // The exponents for which F_delta is made of doubles and the rounding below is exact: delta = 2^K
+  // must be a normal double (K >= -1022, so that the doubles in [delta, 2 delta) are spaced by the
+  // quantum 2^(K-52) >= 2^-1074, the smallest subnormal) and finite (K <= 1023). Every value of
+  // F_delta is then a double, and scaling the input by 2^j scales every grid operation by 2^j
+  // exactly (scale covariance) as long as K + j stays in this range. A grid asked for outside it is
+  // not silently moved to the nearest exponent (that would break the covariance): `in_range` is
+  // false and the callers refuse with RANGE_EXCEEDED (`range_message()`).
+  static constexpr int min_exponent = -1022;
   static constexpr int max_exponent = 1023;
 
-  int K = 0;           // delta = 2^K
+  int K = 0;           // delta = 2^K (as asked for, also when out of range)
+  bool in_range = true;// min_exponent <= K <= max_exponent
   double delta = 1;    // the range is (-delta, delta)
   double quantum = 0;  // s = 2^(K-52)
 
   Fixed_point_grid() : Fixed_point_grid(0) {}
-  explicit Fixed_point_grid(int k)
+  explicit Fixed_point_grid(int k) : K(k), in_range(k >= min_exponent && k <= max_exponent)
   {
-    K = k < min_exponent ? min_exponent : (k > max_exponent ? max_exponent : k);
-    delta = std::ldexp(1.0, K);
-    quantum = std::ldexp(1.0, K - 52);
+    // out of range: a valid (clamped) grid, so that nothing is undefined, but callers refuse it
+    const int kk = k < min_exponent ? min_exponent : (k > max_exponent ? max_exponent : k);
+    delta = std::ldexp(1.0, kk);
+    quantum = std::ldexp(1.0, kk - 52);
+  }
+
+  // why a grid with `in_range == false` cannot be used
+  std::string range_message() const
+  {
+    return "the fixed-point range delta = 2^" + std::to_string(K) + " is outside the range of double grids 2^" +
+           std::to_string(min_exponent) + " ... 2^" + std::to_string(max_exponent) +
+           " (Sec. 4.3): the values are too " + (K < min_exponent ? "small" : "large") +
+           " for exact fixed-point arithmetic in doubles";
   }
 
   // The binary exponent e of v: |v| < 2^e (e = 0 is returned for v = 0, so that an all-zero input
@@ -62,6 +82,8 @@ struct Fixed_point_grid
   // F_delta(v) = (v + s_v delta) - s_v delta with s_v the sign of v ([EBCK13], Sec. 4.3).
   // Rounds v to a multiple of the quantum (to nearest in the default rounding mode). The
   // volatile stores keep the two operations from being folded even by aggressive optimizers.
+  // The result may lie on or beyond the range boundary (or be infinite for K = 1023): callers test
+  // contains().
   double round(double v) const
   {
     const double sd = v < 0 ? -delta : delta;
@@ -74,12 +96,25 @@ struct Fixed_point_grid
   bool contains(double v) const
   {
     if(!(std::fabs(v) < delta)) return false;
-    const double z = v / quantum;            // exact: quantum is a power of 2 (no underflow: K - 52 >= -1020)
+    const double z = v / quantum;            // exact: quantum is a power of 2 and |z| < 2^52
     return z == std::trunc(z);
   }
 
-  // z = v / s, for v in F_delta; exact.
-  std::int64_t to_integer(double v) const { return std::int64_t(v / quantum); }
+  // z = v / s. Precondition: contains(v) (then |z| < 2^52 and the conversion is exact); use
+  // to_integer_checked() for a value not known to be on the grid.
+  std::int64_t to_integer(double v) const
+  {
+    CGAL_precondition(contains(v));
+    return std::int64_t(v / quantum);
+  }
+  // z = v / s if v is in F_delta; false (z untouched) otherwise, e.g. for a value outside (-delta, delta),
+  // whose conversion to an integer could overflow.
+  bool to_integer_checked(double v, std::int64_t& z) const
+  {
+    if(!contains(v)) return false;
+    z = std::int64_t(v / quantum);
+    return true;
+  }
   // v = z s; exact for |z| <= 2^53.
   double from_integer(std::int64_t z) const { return double(z) * quantum; }
   // the largest |z| of a grid point inside (-delta, delta)
