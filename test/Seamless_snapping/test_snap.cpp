@@ -4,7 +4,10 @@
 //                                          SUCCESS, exact after (Gmpq), change bounded by the input violation,
 //                                          sectors outside constraints untouched, deterministic
 //   snap: already exact input unchanged    libigl cube.obj stays bit-identical
-//   snap: scale covariance                 UVs scaled by 2^j snap to the scaled result, bit for bit
+//   snap: scale covariance                 bear orbifold and MIQ map, UVs scaled by 2^j (j = -1100 ... 1100):
+//                                          the scaled result of j = 0 bit for bit, or a clear refusal
+//   snap: reproducers                      seams of UV size 1e-300 ... 1e300 snap with the right k; a far-away
+//                                          UV is RANGE_EXCEEDED (no UB); a zero-length cut edge is counted
 //   snap: given seams and rotations        same result as detected/fitted; wrong rotations are refused
 //   snap: boundary and feature alignment   synthetic grid: aligned edges become exactly axis-parallel
 //   snap: orbifold Tutte inputs            Square and Parallelogram on CGAL meshes become exact;
@@ -44,6 +47,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -149,29 +153,164 @@ static void test_data_meshes(std::vector<File_result>& results)
 }
 
 // ---------------------------------------------------------------------------------------------
-// snap: scale covariance (libigl-style): all steps are scale covariant in binary
+// snap: scale covariance: UVs scaled by 2^j snap to the 2^j-scaled result of j = 0, bit for bit, or
+// are refused with a clear status (map untouched); no SUCCESS with a change far above the violation
 // ---------------------------------------------------------------------------------------------
-static void test_scale_covariance()
+static void scale_uvs(const Mesh& m, UV_map uv, int j)
 {
-  Mesh input;
-  if(!load_shared_or_skip("directional/spherer-param.obj", "snap: scale covariance", input)) return;
+  for(halfedge_descriptor h : m.halfedges())
+    put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
+}
+
+// true iff every UV of `m` times 2^j is a double (no bit lost to underflow, no overflow)
+static bool scales_exactly(const Mesh& m, UV_map uv, int j)
+{
+  for(halfedge_descriptor h : m.halfedges())
+    for(double c : {get(uv, h).x(), get(uv, h).y()})
+      if(std::ldexp(std::ldexp(c, j), -j) != c) return false;
+  return true;
+}
+
+// Sweeps j over `js`; every j in [must_lo, must_hi] must snap bit for bit. Returns the smallest and
+// largest j that snapped bit for bit.
+static void scale_sweep(const std::string& name, const Mesh& input, const std::vector<int>& js, int must_lo, int must_hi)
+{
+  const auto t0 = std::chrono::steady_clock::now();
   Mesh m0 = input;
-  SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv_of(m0));
-  assert(r0.status == SS::SUCCESS);
-  for(int j : {-40, -3, 7, 60}) {
+  UV_map uv0 = uv_of(m0);
+  const SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0);
+  assert(r0.status == SS::SUCCESS && r0.max_change > 0);
+  int lo = 0, hi = 0;
+  for(int j : js) {
     Mesh m = input;
     UV_map uv = uv_of(m);
-    for(halfedge_descriptor h : m.halfedges())
-      put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
-    SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
-    assert(r.status == SS::SUCCESS);
-    UV_map uv0 = uv_of(m0);
-    for(halfedge_descriptor h : m.halfedges()) {
-      assert(get(uv, h).x() == std::ldexp(get(uv0, h).x(), j));
-      assert(get(uv, h).y() == std::ldexp(get(uv0, h).y(), j));
+    const bool exact_input = scales_exactly(m, uv, j);
+    scale_uvs(m, uv, j);
+    const std::vector<std::uint64_t> before = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+    if(r.status != SS::SUCCESS) {
+      // a refusal, and the caller's map is untouched; when the scaled input is the exact scaled map,
+      // the refusal names the limits of double (an input that lost bits may be refused for what it became)
+      std::printf("  %s, j = %d (scaled input %s): %s: %s\n", name.c_str(), j, exact_input ? "exact" : "lost bits",
+                  SS::status_name(r.status), r.message.c_str());
+      assert(!r.message.empty());
+      assert(uv_bits(m, uv) == before);
+      assert(!exact_input || r.status == SS::RANGE_EXCEEDED || r.status == SS::INVALID_INPUT);
+      assert(!exact_input || r.message.find("double") != std::string::npos || r.message.find("finite") != std::string::npos);
+      assert(j < must_lo || j > must_hi);
+      continue;
     }
+    assert(SS::is_exactly_seamless(m, uv));
+    // never a success far from the input
+    if(!(r.max_change <= 100 * r.max_input_violation))
+      std::printf("  %s, j = %d: SUCCESS with max change %.3g, input violation %.3g\n", name.c_str(), j, r.max_change, r.max_input_violation);
+    assert(r.max_change <= 100 * r.max_input_violation);
+    bool same = exact_input;
+    for(halfedge_descriptor h : m.halfedges()) {
+      if(!same) break;
+      same = get(uv, h).x() == std::ldexp(get(uv0, h).x(), j) && get(uv, h).y() == std::ldexp(get(uv0, h).y(), j);
+    }
+    if(exact_input && !same) std::printf("  %s, j = %d: SUCCESS but not the scaled result of j = 0\n", name.c_str(), j);
+    if(exact_input) assert(same);     // the same doubles up to 2^j
+    if(same) { lo = (std::min)(lo, j); hi = (std::max)(hi, j); }
+    else assert(j < must_lo || j > must_hi);
   }
-  std::cout << "snap: scale covariance: OK (2^-40, 2^-3, 2^7, 2^60)\n";
+  std::cout << "snap: scale covariance: " << name << ": bit for bit for 2^j, j in [" << lo << ", " << hi << "] of the swept j ("
+            << js.size() << " scales, " << ms_since(t0) << " ms)\n";
+  assert(lo <= must_lo && hi >= must_hi);
+}
+
+static void test_scale_covariance()
+{
+  std::vector<int> js;
+  for(int j = -1100; j <= 1100; j += 200) js.push_back(j);
+  for(int j : {-1074, -1050, -1030, -1020, -1010, -1000, -990, -970, -1, 1, 1010, 1020, 1022, 1023}) js.push_back(j);
+  std::sort(js.begin(), js.end());
+
+  // CGAL's bear, Square orbifold Tutte map (as in `snap: orbifold Tutte inputs`)
+  const fs::path bear = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
+  Mesh base;
+  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(bear) || !CGAL::IO::read_polygon_mesh(bear.string(), base)) {
+    std::cout << "snap: scale covariance: bear orbifold SKIPPED (no " << bear.string() << ")\n";
+  } else {
+    UV_map uv = uv_of(base);
+    std::string msg;
+    const auto cones = SS::internal::farthest_point_cones(base, SS::internal::orbifold_cone_count(SMP::Square));
+    const SS::Status s = SS::internal::make_orbifold_tutte_uv(base, uv, cones, SMP::Square, msg);
+    assert(s == SS::SUCCESS);
+    scale_sweep("bear orbifold (Square)", base, js, -900, 900);
+  }
+  Mesh miq;
+  if(load_shared_or_skip("progressive_embedding/retinal_miq.obj", "snap: scale covariance (MIQ map)", miq))
+    scale_sweep("retinal_miq.obj", miq, js, -900, 900);
+}
+
+// ---------------------------------------------------------------------------------------------
+// snap: reproducers of fuzzing (/work/shared/repro, inlined): seams of tiny and huge maps, a UV far
+// from the rest, a cut edge of zero length on one side
+// ---------------------------------------------------------------------------------------------
+static SS::Snap_report snap_obj_text(const std::string& text, Mesh& m, bool& untouched)
+{
+  UV_map uv = uv_of(m);
+  std::istringstream is(text);
+  std::string msg;
+  const SS::Status read = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg);
+  assert(read == SS::SUCCESS);
+  const std::vector<std::uint64_t> before = uv_bits(m, uv);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+  untouched = uv_bits(m, uv) == before;
+  std::printf("  %s: %s\n", SS::status_name(r.status), r.message.c_str());
+  return r;
+}
+
+static void test_reproducers()
+{
+  std::cout << "snap: reproducers\n";
+  // a 90-degree seam (k = 3) with UVs around 1e-200 and 1e300: products under/overflowed, k = 0 was
+  // fitted (tiny: SUCCESS with a change of the size of the map) or the angle was NaN (huge: refused)
+  const char* seam = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0.0 0.0\nvt 1%s 0.0\nvt 0.0 1%s\n"
+                     "vt 1%s 1.00000000001%s\nvt 9%s 9%s\nvt 9.0000000001%s 1.1%s\nf 1/1 2/2 3/3\nf 3/4 2/5 4/6\n";
+  for(const char* e : {"e-200", "e+300", "e-300", "e0"}) {
+    const std::string big = std::string(e) == "e-200" ? "e-199" : std::string(e) == "e+300" ? "e+301"
+                          : std::string(e) == "e-300" ? "e-299" : "e1";
+    char text[512];
+    std::snprintf(text, sizeof text, seam, e, e, big.c_str(), big.c_str(), e, e, e, big.c_str());
+    Mesh m; bool untouched = false;
+    const SS::Snap_report r = snap_obj_text(text, m, untouched);
+    assert(r.status == SS::SUCCESS && r.cut_edges == 1);
+    assert(SS::is_exactly_seamless(m, uv_of(m)));
+    assert(r.max_change <= 100 * r.max_input_violation && r.max_change < 1e-9);   // k = 0 would move by ~0.5
+    assert(r.message.find("nan") == std::string::npos);
+  }
+  // ubsan_fpgrid_to_integer_small.obj: a vt with v = -6.7e9, far from the rest, in a sector that no
+  // row constrains but the propagation reads: was a double -> int64 conversion out of range (UB)
+  // and SAFE_DOT_FAILED "although its value lies inside (-delta, delta)"
+  {
+    const std::string text =
+      "v 0.5 -0.5 0.5\nv -0.5 0.5 0.5\nv 5.5 0.5 0.5\nv -0.5 0.5 -0.5\nv 0.5 0.5 -0.5\n"
+      "v -0.5 -0.5000007773198378612628 -0.61488022306936774\n"
+      "vt -0.084053580086713209 -0.60609223262980272\nvt -0.083302762787220527 -0.60259121519043801\n"
+      "vt -0.076492785721951867 -06698172297 -0.58424246463710239\nvt -0.07590 -0.500000\nv 0.5 -0.5 -0.5\n"
+      "vt 0.375 0\nvt 0.625 0\nvt 0.375 0.25\nvt 0.625 0.25\nvt 0.375 0.5001\nvt 0.625 0.5\nvt 0.375 0.75\n"
+      "vt 0.625 0.75\nvt 0.375 0100.000\nvt 0.625 1.0\n"
+      "f 1/1 2/2 3/3\nf 3/3 2/2 4/4\nf 3/3 4/4 5/5\nf 5/5 4/4 6/6\nf 5/5 6/6 7/7\nf 7/13 1/1 5/14\nf 5/14 1/1 3/3\n";
+    Mesh m; bool untouched = false;
+    const SS::Snap_report r = snap_obj_text(text, m, untouched);
+    assert(r.status == SS::RANGE_EXCEEDED && untouched);
+    assert(r.message.find("-6698172297") != std::string::npos && r.message.find("lies inside") == std::string::npos);
+  }
+  // a cut edge of zero UV length on one side (face 2 has v2 = v3 in UV): the transition collapses it
+  // in face 1 too; SUCCESS says so (it used to say nothing)
+  for(int collapsed = 0; collapsed <= 1; ++collapsed) {
+    const std::string text = std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n") +
+                             (collapsed ? "vt 1 1\nvt 1 1\n" : "vt 1 0.5\nvt 0 1.5\n") + "vt -0.5 0\nf 1/1 2/2 3/3\nf 3/4 2/5 4/6\n";
+    Mesh m; bool untouched = false;
+    const SS::Snap_report r = snap_obj_text(text, m, untouched);
+    assert(r.status == SS::SUCCESS && r.cut_edges == 1 && SS::is_exactly_seamless(m, uv_of(m)));
+    assert(r.collapsed_cut_edges == std::size_t(collapsed));
+    assert((r.message.find("zero UV length (1 of them already on one side in the input)") != std::string::npos) == (collapsed == 1));
+    assert(r.to_json().find("\"collapsed_cut_edges\": " + std::to_string(collapsed)) != std::string::npos);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -715,6 +854,7 @@ int main(int argc, char** argv)
   std::vector<File_result> results;
   test_data_meshes(results);
   test_scale_covariance();
+  test_reproducers();
   test_given_seams_and_rotations();
   test_alignment();
   test_cut_and_boundary();

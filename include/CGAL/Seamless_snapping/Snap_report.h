@@ -34,6 +34,10 @@ struct Snap_report
   /// @{
   std::size_t faces = 0;
   std::size_t cut_edges = 0;           ///< interior edges whose two faces disagree on an endpoint UV
+  /// cut edges whose UV vector is zero on one side in the result (in the input, or created by the
+  /// snap): the transition (Eq. 4) then makes it zero on both sides, and the faces at this edge are
+  /// degenerate in UV. On `SUCCESS`, a nonzero count is also stated in `message`.
+  std::size_t collapsed_cut_edges = 0;
   std::size_t cones = 0;               ///< interior vertices whose UV angle sum is not 2*pi (singularities)
   std::size_t sectors = 0;             ///< corner groups between cut edges around vertices (one UV variable pair each)
   std::size_t constrained_sectors = 0; ///< sectors that appear in some constraint
@@ -94,6 +98,7 @@ struct Snap_report
     num("faces", double(faces)); num("cut_edges", double(cut_edges)); num("cones", double(cones));
     num("sectors", double(sectors)); num("constrained_sectors", double(constrained_sectors));
     num("align_edges", double(align_edges)); num("constraints", double(constraints));
+    num("collapsed_cut_edges", double(collapsed_cut_edges));
     num("nodes", double(nodes)); num("cut_branches", double(cut_branches)); num("align_branches", double(align_branches));
     num("system_rows", double(system_rows)); num("system_columns", double(system_columns));
     num("free_variables", double(free_variables)); num("implied_variables", double(implied_variables));

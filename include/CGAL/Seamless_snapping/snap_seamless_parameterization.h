@@ -178,10 +178,16 @@ namespace Seamless_snapping {
  *   - `NOT_QUARTER_TURN_SEAMLESS`: a transition is not a rotation by a multiple of 90 degrees (the message names the
  *     edge by its vertex indices and gives the angle);
  *   - `RANGE_EXCEEDED`, `SAFE_DOT_FAILED`, `INFEASIBLE`: the exact projection or the propagation failed
- *     (Sec. 4.3, 7), the message says where;
+ *     (Sec. 4.3, 7), the message says where; `RANGE_EXCEEDED` also when the map is too close to the limits of
+ *     double for an exact result at its scale (the grid quantum below 2^-1074 or delta above 2^1024 in UV units);
  *   - `EXACTNESS_CHECK_FAILED`: the final exact check found a violated row (an internal error, never hidden).
  *   On any status other than `SUCCESS`, `uv` is left bit-identical.
  *   Lengths in the report are relative to the diagonal of the UV bounding box of the input.
+ *   A `SUCCESS` with cut edges of zero UV length (`Snap_report::collapsed_cut_edges`) says so in its message.
+ *
+ * Scale: the result is scale covariant. The UVs are first scaled by a power of 2 so that the largest
+ * |coordinate| lies in [1/2, 1) (exact), every step works on these values, and the result is scaled back;
+ * a map scaled by 2^j therefore snaps to the result scaled by 2^j, bit for bit, whenever both are doubles.
  *
  * \warning The result consists of doubles and satisfies the constraints exactly, but it is not the
  * closest such point (Sec. 4.2): free variables keep their (rounded) values and implied ones absorb

@@ -30,6 +30,7 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -46,6 +47,10 @@ struct Corner_mesh
   std::vector<int> edge_halfedge;                        // per edge: index of halfedge(e, tm)
   std::vector<double> u, v;                              // per halfedge: corner UV (border: unused)
   std::vector<char> vertex_on_border;                    // per vertex
+  int uv_exponent = 0;   // u, v are the caller's UVs times 2^-uv_exponent (normalize_uv_scale())
+
+  // a value of the (normalized) corner UVs in the caller's UV units
+  double to_uv(double x) const { return std::ldexp(x, uv_exponent); }
 
   int source(int h) const { return target[opp[h]]; }
   bool is_border_halfedge(int h) const { return face[h] < 0; }
@@ -148,6 +153,36 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
     cm.edge[cm.opp[h]] = id;
   }
   cm.n_edges = int(d.edges.size());
+  return SUCCESS;
+}
+
+// Scale normalization (scale covariance): multiplies every corner UV by 2^-E, E = uv_exponent, the
+// binary exponent of the largest |UV coordinate| (so that it lies in [1/2, 1) afterwards). A power
+// of 2 changes no significant bit, so a map scaled by 2^j is normalized to the very same doubles as
+// the map itself, and everything computed from the normalized UVs (cut edges, cones, rotation fit,
+// alignment, F_delta, flip repair) is identical; results are scaled back by 2^E with to_uv(). This
+// also keeps products, angle tests and the grid away from the underflow and overflow limits of
+// double for maps of any size. Refused (INVALID_INPUT): a UV that would lose bits, i.e. one more
+// than 2^1074 times smaller than the largest one (a map spanning more than the double range).
+inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message)
+{
+  double max_abs = 0;
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h)) max_abs = (std::max)({max_abs, std::fabs(cm.u[h]), std::fabs(cm.v[h])});
+  int e = 0;
+  if(max_abs > 0) std::frexp(max_abs, &e);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    const double n[2] = {std::ldexp(cm.u[h], -e), std::ldexp(cm.v[h], -e)};
+    if(std::ldexp(n[0], e) != cm.u[h] || std::ldexp(n[1], e) != cm.v[h]) {
+      message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
+                ") has a coordinate more than 2^1074 times smaller than the largest UV coordinate (2^" + std::to_string(e) +
+                "): the map spans more than the range of double";
+      return INVALID_INPUT;
+    }
+    cm.u[h] = n[0]; cm.v[h] = n[1];
+  }
+  cm.uv_exponent = e;
   return SUCCESS;
 }
 

@@ -60,14 +60,22 @@ inline Status propagate_along_branches(const Reduced_system& rs, const std::vect
       }
       for(int c = 0; c < 2; ++c) {
         // (u^-)_c = (u_0^-)_c - sign_c (u_0^+)_{col_c} + sign_c (u^+)_{col_c}
-        terms[0] = std::make_pair(std::int64_t(1), grid.to_integer(x[2 * p.u0_minus + c]));
-        terms[1] = std::make_pair(std::int64_t(-R.sign[c]), grid.to_integer(x[2 * p.u0_plus + R.col[c]]));
-        terms[2] = std::make_pair(std::int64_t(R.sign[c]), grid.to_integer(x[2 * plus + R.col[c]]));
+        const int var[3] = {2 * p.u0_minus + c, 2 * p.u0_plus + R.col[c], 2 * plus + R.col[c]};
+        const std::int64_t coef[3] = {1, -R.sign[c], R.sign[c]};
+        for(int t = 0; t < 3; ++t) {
+          std::int64_t z = 0;
+          if(!grid.to_integer_checked(x[var[t]], z)) {   // a node value (or its input) off the grid F_delta
+            message = "sector " + std::to_string(var[t] / 2) + " (cut branch " + std::to_string(branch) + "): its value " +
+                      format_double(x[var[t]], 17) + " is not in the fixed-point grid F_delta, delta = 2^" + std::to_string(grid.K);
+            return RANGE_EXCEEDED;
+          }
+          terms[t] = std::make_pair(coef[t], z);
+        }
         double r = 0;
         const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
         if(sr == SAFE_DOT_STUCK) {
           message = "safe dot product (Alg. 5) stuck for sector " + std::to_string(minus) + " on cut branch " +
-                    std::to_string(branch) + " although its value lies inside (-delta, delta), delta = 2^" + std::to_string(grid.K);
+                    std::to_string(branch) + " (an internal error: its summands lie in F_delta, delta = 2^" + std::to_string(grid.K) + ")";
           return SAFE_DOT_FAILED;
         }
         if(sr == SAFE_DOT_OUT_OF_RANGE || !grid.contains(r)) {

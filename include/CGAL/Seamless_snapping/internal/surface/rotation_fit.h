@@ -170,7 +170,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     if(!(std::fabs(li - lj) <= tolerance_degrees * rad * (std::max)(li, lj))) {
       message = "cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
                 std::to_string(cm.face[cm.opp[h]]) + "): its UV lengths on the two sides differ (" +
-                format_double(li, 17) + " vs " + format_double(lj, 17) + "), more than the rotation tolerance of " +
+                format_double(cm.to_uv(li), 17) + " vs " + format_double(cm.to_uv(lj), 17) + "), more than the rotation tolerance of " +
                 format_double(tolerance_degrees) + " degrees allows: the transition is not a rigid motion";
       return NOT_QUARTER_TURN_SEAMLESS;
     }

@@ -81,8 +81,15 @@ inline std::string vertex_pair_name(const Corner_mesh& cm, int h)
 inline double corner_angle(const Corner_mesh& cm, int h)
 {
   const int hn = cm.next[h], hp = cm.prev[h];
-  const double ax = cm.u[hn] - cm.u[h], ay = cm.v[hn] - cm.v[h];
-  const double bx = cm.u[hp] - cm.u[h], by = cm.v[hp] - cm.v[h];
+  double ax = cm.u[hn] - cm.u[h], ay = cm.v[hn] - cm.v[h];
+  double bx = cm.u[hp] - cm.u[h], by = cm.v[hp] - cm.v[h];
+  // the angle does not depend on the scale: bring the edge vectors to magnitude ~1 by a power of 2
+  // (exact) so that the products below neither underflow nor overflow, also for tiny triangles
+  const double m = (std::max)({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by)});
+  if(m > 0) {
+    int e; std::frexp(m, &e);
+    ax = std::ldexp(ax, -e); ay = std::ldexp(ay, -e); bx = std::ldexp(bx, -e); by = std::ldexp(by, -e);
+  }
   return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
 }
 

@@ -71,6 +71,22 @@ struct Snap_options
   std::vector<Connection_path> connections;  // connection (Eq. 6) and cycle (Eq. 8) constraints
 };
 
+// number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
+// in that face, which is then degenerate), corner values from `x`
+inline std::size_t count_collapsed_cut_edges(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
+{
+  std::size_t n = 0;
+  auto zero = [&](int h) {   // UV of target(h) == UV of source(h), both seen from face(h)
+    const int a = st.sector_of[h], b = st.sector_of[cm.prev[h]];
+    return x[2 * a] == x[2 * b] && x[2 * a + 1] == x[2 * b + 1];
+  };
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[e];
+    if(zero(h) || zero(cm.opp[h])) ++n;
+  }
+  return n;
+}
+
 // variables (2s + c) used by `rows`, in increasing order, and the inverse map (-1 = unused)
 inline void used_variables(const Constraint_rows& rows, std::size_t n_vars, std::vector<int>& vars, std::vector<int>& column_of)
 {
@@ -120,6 +136,21 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
   return SUCCESS;
 }
 
+// The values of the grid F_delta (normalized UVs) scaled back to the caller's UV units by
+// 2^uv_exponent must be doubles: the quantum 2^(K+E-52) at least the smallest subnormal 2^-1074 and
+// delta = 2^(K+E) at most 2^1024. Otherwise the map is too close to the limits of double for an
+// exact snap at its scale: RANGE_EXCEEDED.
+inline Status check_grid_fits_uv_scale(const Fixed_point_grid& grid, int uv_exponent, std::string& message)
+{
+  const int K = grid.K + uv_exponent;
+  if(grid.in_range && K - 52 >= -1074 && K <= 1024) return SUCCESS;
+  message = "the UV map is too " + std::string(K - 52 < -1074 ? "small" : "large") + " for exact snapping in doubles: " +
+            "its fixed-point grid F_delta (Sec. 4.3) has delta = 2^" + std::to_string(K) + " and quantum 2^" +
+            std::to_string(K - 52) + " in UV units, but doubles need a quantum of at least 2^-1074 and delta of at most 2^1024; " +
+            "scale the UVs by a power of 2 into the range of double";
+  return RANGE_EXCEEDED;
+}
+
 // What the stages hand down, in data-flow order (each stage reads what the ones before it wrote).
 template <class TriangleMesh>
 struct Snap_state
@@ -141,6 +172,7 @@ struct Snap_state
   std::vector<double> x;                 // the result, one value per sector variable
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
+  std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
 
@@ -158,6 +190,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
                      Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
   Status s = build_corner_mesh(tm, uvmap, S.cm, S.desc, message);
+  if(s == SUCCESS) s = normalize_uv_scale(S.cm, message);   // from here on: UVs times 2^-uv_exponent
   if(s != SUCCESS) return s;
   const Corner_mesh& cm = S.cm;
   report.faces = std::size_t(cm.n_faces);
@@ -177,7 +210,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
   if(s != SUCCESS) return s;
   report.cut_edges = S.st.cut_edges.size();
   report.sectors = std::size_t(S.st.n_sectors);
-  report.uv_diagonal = S.st.uv_diagonal;
+  report.uv_diagonal = cm.to_uv(S.st.uv_diagonal);
   for(char c : S.st.is_cone) report.cones += c ? 1 : 0;
 
   if(has_rotations) {
@@ -217,6 +250,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const Orientation_counts input = count_orientations(face_orientations(S.cm, S.st, ubar));
   report.flips_before = input.negative;
   report.degenerate_before = input.degenerate;
+  S.collapsed_in_input = count_collapsed_cut_edges(S.cm, S.st, ubar);
   return SUCCESS;
 }
 
@@ -245,12 +279,23 @@ Status project_node_system(Snap_state<TriangleMesh>& S, Snap_report& report, std
   if(s != SUCCESS) { message = "node system: " + message; return s; }
   std::vector<int> node_vars, node_column_of;
   used_variables(rs.node_rows, S.x.size(), node_vars, node_column_of);
+  int off_grid = -1;    // a free node variable whose input is outside (-delta, delta)
   auto fix_free_node_var = [&](int var) {
-    if(node_column_of[var] < 0) { S.x[var] = S.grid.round(ubar[var]); node_column_of[var] = -2; }
+    if(node_column_of[var] >= 0 || node_column_of[var] == -2) return;
+    S.x[var] = S.grid.round(ubar[var]);
+    node_column_of[var] = -2;
+    if(off_grid < 0 && !S.grid.contains(S.x[var])) off_grid = var;
   };
   for(const Cut_branch_plan& p : rs.cut_branches)
     for(int c = 0; c < 2; ++c) { fix_free_node_var(2 * p.u0_plus + c); fix_free_node_var(2 * p.u0_minus + c); }
   for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
+  if(off_grid >= 0) {
+    message = "node sector " + std::to_string(off_grid / 2) + " (vertex " + std::to_string(S.st.sector_vertex(S.cm, off_grid / 2)) +
+              ") is in no row of the node system, and its input value " + format_double(S.cm.to_uv(ubar[off_grid]), 17) +
+              " (UV units) lies outside the fixed-point range (-delta, delta) of the constrained values, delta = 2^" +
+              std::to_string(S.grid.K);
+    return RANGE_EXCEEDED;
+  }
   const Snap_clock::time_point t = Snap_clock::now();
   s = propagate_along_branches(rs, ubar, S.grid, S.x, message);
   report.propagate_ms = ms_since(t);
@@ -275,13 +320,26 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
     report.system_columns = system_vars.size();
     return SUCCESS;
   }
+  Status s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, message);
+  if(s != SUCCESS) return s;
+  auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
+    if(S.cm.uv_exponent != 0)
+      message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
+    return st;
+  };
   for(int retry = 0;; ++retry) {
     S.x = S.st.ubar;
-    Status s = opt.use_reduced_system ? project_node_system(S, report, message)
-                                      : project_rows(S.full, S.grid, S.x, report, message);
+    s = opt.use_reduced_system ? project_node_system(S, report, message)
+                               : project_rows(S.full, S.grid, S.x, report, message);
     if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
-    if(s != RANGE_EXCEEDED || retry == 5) return s;
+    if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
     S.grid = Fixed_point_grid(S.grid.K + 4);
+    std::string why;
+    if(check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why) != SUCCESS) {
+      failed(s);
+      message += "; a larger grid does not help: " + why;
+      return s;
+    }
   }
 }
 
@@ -330,6 +388,14 @@ Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std:
     return EXACTNESS_CHECK_FAILED;
   }
   const std::vector<double>& ubar = S.st.ubar;
+  for(std::size_t i = 0; i < S.x.size(); ++i) {   // the written values are exact at the caller's scale
+    if(S.x[i] == ubar[i] || std::ldexp(S.cm.to_uv(S.x[i]), -S.cm.uv_exponent) == S.x[i]) continue;
+    message = "the snapped UV " + format_double(S.x[i], 17) + " * 2^" + std::to_string(S.cm.uv_exponent) + " of sector " +
+              std::to_string(i / 2) + " is not a double (below the smallest subnormal 2^-1074 or above the largest double): " +
+              "the UV map is too close to the limits of double for exact snapping at its scale; nothing was written";
+    return RANGE_EXCEEDED;
+  }
+  report.collapsed_cut_edges = count_collapsed_cut_edges(S.cm, S.st, S.x);
   const double diagonal = S.st.uv_diagonal;
   auto relative = [diagonal](double a) { return diagonal > 0 ? a / diagonal : a; };
   double max_change = 0, sum_change = 0;
@@ -358,11 +424,11 @@ void write_stage(HalfedgeUVMap uvmap, Snap_state<TriangleMesh>& S)
       // (the Seam_mesh convention) is kept in sync with it
       corner = cm.prev[cm.opp[h]];
       const auto p = get(uvmap, S.desc.halfedges[h]);
-      if(!(CGAL::to_double(p.x()) == cm.u[corner] && CGAL::to_double(p.y()) == cm.v[corner])) continue;
+      if(!(CGAL::to_double(p.x()) == cm.to_uv(cm.u[corner]) && CGAL::to_double(p.y()) == cm.to_uv(cm.v[corner]))) continue;
     }
     const int sec = S.st.sector_of[corner];
     if(!changed[sec]) continue;
-    put(uvmap, S.desc.halfedges[h], Point_2(FT(S.x[2 * sec]), FT(S.x[2 * sec + 1])));
+    put(uvmap, S.desc.halfedges[h], Point_2(FT(cm.to_uv(S.x[2 * sec])), FT(cm.to_uv(S.x[2 * sec + 1]))));
     ++S.written;
   }
 }
@@ -376,6 +442,10 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
              " align edges, " + std::to_string(report.constraints) + " constraints, " +
              (opt.use_reduced_system ? std::to_string(report.nodes) + " nodes, " : std::string()) +
              "system " + std::to_string(report.system_rows) + " x " + std::to_string(report.system_columns) + ")";
+  if(report.collapsed_cut_edges > 0)
+    summary += "; " + std::to_string(report.collapsed_cut_edges) + " cut edge(s) have zero UV length (" +
+               std::to_string(S.collapsed_in_input) + " of them already on one side in the input): the transition "
+               "collapses them on both sides, so their faces are degenerate in UV";
   return summary + S.flip_note;
 }
 

@@ -116,7 +116,7 @@ inline Status find_align_edges(const Corner_mesh& cm, const Seam_topology& st, b
     if(c < 0) {
       if(!given) continue;
       message = "align edge " + vertex_pair_name(cm, g) + " (face " + std::to_string(cm.face[g]) + ") has UV vector (" +
-                format_double(du, 17) + ", " + format_double(dv, 17) + "), " +
+                format_double(cm.to_uv(du), 17) + ", " + format_double(cm.to_uv(dv), 17) + "), " +
                 (length < min_length ? std::string("too short to infer its aligned component")
                                      : "not within " + format_double(tolerance_degrees) + " degrees of the u or v axis");
       return INVALID_INPUT;
