@@ -10,6 +10,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
+#include <CGAL/Seamless_snapping/matrices.h>
+#include <CGAL/Seamless_snapping/version.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -32,8 +35,8 @@ namespace SS = CGAL::Seamless_snapping;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
-  "usage: seamless_snap IN.obj OUT.obj [--weld] [--no-align-boundary] [--unreduced]\n"
-  "                     [--report FILE.json] [--quiet]\n";
+  "usage: seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary]\n"
+  "                     [--unreduced] [--fail-on-new-flips] [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
   "Makes an approximately seamless UV map exactly seamless (Mandad & Campen 2019, \"Exact\n"
@@ -46,10 +49,16 @@ static const char* help_text =
   "checked in rational arithmetic before OUT.obj is written.\n"
   "\n"
   "Options:\n"
-  "  --weld               merge vertices with bit-identical positions before snapping. Needed for\n"
-  "                       'cut meshes' (e.g. libigl/Directional output), whose vertices are\n"
-  "                       duplicated along the seams: without it the seams are mesh borders and\n"
-  "                       nothing gets snapped. A hint is printed when the input looks like one.\n"
+  "  --weld               merge vertices with bit-identical positions before snapping. 'Cut meshes'\n"
+  "                       (e.g. libigl/Directional output) duplicate their vertices along the seams;\n"
+  "                       read as they are, their seams are mesh borders and nothing gets snapped.\n"
+  "                       Such an input is welded automatically (a line says so).\n"
+  "  --no-weld            never weld; an input whose seams are then invisible is an error (exit 1)\n"
+  "                       instead of 'already exactly seamless'\n"
+  "  --keep-layout        write OUT.obj in the input's own layout: the same 'v' and 'vt' lines in the\n"
+  "                       same order (only moved UVs change) and the same face indices\n"
+  "  --fail-on-new-flips  exit 1 without writing OUT.obj when the snap leaves UV triangles flipped or\n"
+  "                       degenerate that were positively oriented in the input\n"
   "  --no-align-boundary  do not make axis-parallel border edges exactly axis-parallel\n"
   "                       (by default, border edges within 1e-3 degrees of the u or v axis are aligned)\n"
   "  --unreduced          project the full sector system instead of the reduced node system\n"
@@ -58,10 +67,11 @@ static const char* help_text =
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
   "\n"
-  "Output: OUT.obj has one 'v' per vertex (after welding, if asked), one 'vt' per vertex and\n"
-  "distinct UV, and 'f v/vt' faces; numbers have 17 significant digits, so the doubles are\n"
-  "exact. OUT.obj is written atomically (temporary file + rename): it is never left half written.\n"
-  "Normals, groups and materials of IN.obj are not carried over.\n"
+  "Output: OUT.obj has one 'v' per vertex (after welding, if any), one 'vt' per vertex and\n"
+  "distinct UV, and 'f v/vt' faces (with --keep-layout: the input's layout); numbers have 17\n"
+  "significant digits, so the doubles are exact. OUT.obj is written atomically (temporary file +\n"
+  "rename): it is never left half written. Normals, groups and materials are not carried over.\n"
+  "The JSON report has the snap report's fields plus 'input', 'output' and 'version'.\n"
   "\n"
   "Exit status: 0 when OUT.obj was written and verified exactly seamless; 1 when reading,\n"
   "snapping, verifying or writing failed (one line on stderr says why; OUT.obj is then not\n"
@@ -101,14 +111,39 @@ static std::size_t border_edges_with_duplicated_ends(const Mesh& m, std::size_t&
   return n;
 }
 
+// The cut-mesh test: many border edges whose two endpoints have bit-identical copies elsewhere.
+static bool looks_like_cut_mesh(const Mesh& mesh, std::size_t& dup, std::size_t& border)
+{
+  dup = border_edges_with_duplicated_ends(mesh, border);
+  return dup >= 3 && 2 * dup >= border;
+}
+
+static bool read_mesh(const std::string& in, bool weld, Mesh& mesh, UV_map& uv, std::string& message)
+{
+  mesh = Mesh();
+  uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) == SS::SUCCESS;
+}
+
+static std::string json_string(const std::string& v)
+{
+  std::string o = "\"";
+  for(char c : v) { if(c == '"' || c == '\\') o += '\\'; if(c == '\n') { o += "\\n"; continue; } o += c; }
+  return o + "\"";
+}
+
 int main(int argc, char** argv)
 {
   std::string in, out, report_file;
-  bool weld = false, align_boundary = true, reduced = true, quiet = false, has_report = false;
+  bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
+  bool align_boundary = true, reduced = true, quiet = false, has_report = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
     else if(a == "--weld") weld = true;
+    else if(a == "--no-weld") no_weld = true;
+    else if(a == "--keep-layout") keep_layout = true;
+    else if(a == "--fail-on-new-flips") fail_on_new_flips = true;
     else if(a == "--no-align-boundary") align_boundary = false;
     else if(a == "--unreduced") reduced = false;
     else if(a == "--quiet") quiet = true;
@@ -122,26 +157,32 @@ int main(int argc, char** argv)
     else { std::cerr << "seamless_snap: unexpected argument '" << a << "'\n" << usage_text; return 2; }
   }
   if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
+  if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
 
-  // 1. read; the corner map: uv[h] = UV of target(h) in face(h)
+  // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
   Mesh mesh;
-  UV_map uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  UV_map uv;
   std::string message;
-  if(SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) != SS::SUCCESS)
-    return fail("cannot read input: " + message);
-  if(!quiet) std::cout << message << "\n";
-  if(!weld) {
-    std::size_t border = 0;
-    const std::size_t dup = border_edges_with_duplicated_ends(mesh, border);
-    if(dup >= 3 && 2 * dup >= border)
-      std::cerr << "seamless_snap: hint: " << dup << " of " << border << " border edges join vertices that have "
-                << "bit-identical copies: this looks like a cut mesh (vertices duplicated along the seams); "
-                << "its seams are treated as borders and left alone. Use --weld to snap them.\n";
+  if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
+  std::size_t dup = 0, border = 0;
+  const bool cut_mesh = !weld && looks_like_cut_mesh(mesh, dup, border);
+  if(cut_mesh && !no_weld) {
+    weld = true;
+    if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
+    if(!quiet) std::cout << "welded automatically: " << dup << " of " << border << " border edges join vertices that "
+                         << "have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
   }
+  if(!quiet) std::cout << message << "\n";
 
-  // 2. snap (writes uv only on success)
-  const SS::Snap_report report = SS::snap_seamless_parameterization(
-      mesh, uv, params::use_reduced_system(reduced, params::align_boundary(align_boundary)));
+  // 2. snap (writes the UVs only on success); with --keep-layout through the matrix entry point,
+  //    which keeps the input's v/vt layout
+  Eigen::MatrixXd V, UV, UV_out;
+  Eigen::MatrixXi F, FUV, FUV_out;
+  if(keep_layout && SS::IO::read_OBJ_matrices(in, V, F, UV, FUV, message) != SS::SUCCESS)
+    return fail("cannot read input: " + message);
+  const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary);
+  const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
+                                             : SS::snap_seamless_parameterization(mesh, uv, np);
   if(!quiet) {
     std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms,
                 report.message.empty() ? "" : ": ", one_line(report.message).c_str());
@@ -152,32 +193,37 @@ int main(int argc, char** argv)
                 report.free_variables, report.implied_variables, report.max_abs_coefficient.c_str());
     std::printf("  relative to the UV diagonal %.6g: input violation %.3g, max change %.3g, mean change %.3g\n",
                 report.uv_diagonal, report.max_input_violation, report.max_change, report.mean_change);
-    std::printf("  UV fold-overs: %zu before, %zu after\n", report.flips_before, report.flips_after);
+    std::printf("  UV triangles negative / zero-area: input %zu / %zu, after snapping %zu / %zu, after repair %zu / %zu;"
+                " introduced and left %zu / %zu\n", report.flips_before, report.degenerate_before, report.flips_after,
+                report.degenerate_after, report.flips_after_repair, report.degenerate_after_repair,
+                report.flips_unrepaired, report.degenerate_unrepaired);
   }
   if(has_report) {
-    const std::string tmp = report_file + ".tmp";
-    bool ok = false;
-    {
-      std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-      if(os) { os << report.to_json(); os.flush(); ok = bool(os); }
-    }
-    if(!ok || std::rename(tmp.c_str(), report_file.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      return fail("cannot write the report '" + report_file + "'");
-    }
+    std::string json = report.to_json();
+    json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+                                    ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",");
+    if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
     if(!quiet) std::cout << "report written to " << report_file << "\n";
   }
   if(report.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(report.status) + ": " + report.message);
+  if(report.cut_edges == 0 && cut_mesh)
+    return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(dup) + " of " +
+                std::to_string(border) + " border edges join duplicated vertices) and --no-weld keeps its seams as "
+                "borders; nothing was snapped and nothing was written");
+  if(fail_on_new_flips && report.flips_unrepaired + report.degenerate_unrepaired > 0)
+    return fail("--fail-on-new-flips: " + std::to_string(report.flips_unrepaired) + " flipped and " +
+                std::to_string(report.degenerate_unrepaired) + " degenerate UV triangles introduced and not repaired; "
+                "nothing was written");
 
-  // 3. verify independently, in rational arithmetic
-  if(!SS::is_exactly_seamless(mesh, uv))
-    return fail("verification failed: the snapped map is not exactly seamless (internal error; please report)");
+  // 3. verify independently, in rational arithmetic; 4. write atomically
+  const bool exact = keep_layout ? SS::is_exactly_seamless(V, F, UV_out, FUV_out, params::weld_vertices(weld))
+                                 : SS::is_exactly_seamless(mesh, uv);
+  if(!exact) return fail("verification failed: the snapped map is not exactly seamless (internal error; please report)");
   if(!quiet) std::cout << "verified: every seam transition holds exactly\n";
-
-  // 4. write atomically
-  if(SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message) != SS::SUCCESS)
-    return fail(message);
+  const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
+                                         : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message);
+  if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
   return EXIT_SUCCESS;
 }

@@ -106,17 +106,18 @@ Seamless_diagnosis<TriangleMesh> diagnose_seamlessness(const TriangleMesh& tm, H
     return d;
   }
   const std::size_t i = std::size_t(d.row);
-  const int e = rows.edge[i];
+  const int edge = rows.edge[i];
   std::string where;
-  if(e >= 0) {
-    const bool cut = S.st.is_cut[std::size_t(e)] != 0;
-    const bool aligned = S.al.component.size() > std::size_t(e) && S.al.component[std::size_t(e)] >= 0;
+  if(edge >= 0) {
+    const std::size_t ei = std::size_t(edge);
+    const bool cut = S.st.is_cut[ei] != 0;
+    const bool aligned = S.al.component.size() > ei && S.al.component[ei] >= 0;
     d.kind = cut && aligned ? "transition or alignment" : (cut ? "transition" : "alignment");
-    d.edge = S.desc.edges[std::size_t(e)];
-    where = "edge " + internal::vertex_pair_name(S.cm, S.cm.edge_halfedge[std::size_t(e)]);
+    d.edge = S.desc.edges[ei];
+    where = "edge " + internal::vertex_pair_name(S.cm, S.cm.edge_halfedge[ei]);
   } else {
     d.kind = "connection";
-    d.connection = std::size_t(-1 - e);
+    d.connection = std::size_t(-1 - edge);
     where = internal::connection_name(d.connection);
   }
   for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k) {
@@ -124,11 +125,15 @@ Seamless_diagnosis<TriangleMesh> diagnose_seamlessness(const TriangleMesh& tm, H
     const auto h = S.desc.halfedges[std::size_t(S.st.sector_corner[std::size_t(sector)])];
     if(d.corners.empty() || d.corners.back() != h) d.corners.push_back(h);
   }
-  const CGAL::Mpzf signed_residual = internal::exact_row_residual(rows, i, S.st.ubar);
+  // the pipeline works on the UVs scaled by 2^-uv_exponent (exactly); the residual goes back to UV units
+  const int e = S.cm.uv_exponent;
+  CGAL::Gmpq residual(internal::exact_row_residual(rows, i, S.st.ubar));
+  const CGAL::Gmpz power = CGAL::Gmpz(1) << (unsigned long)(e < 0 ? -e : e);
+  residual = e < 0 ? residual / CGAL::Gmpq(power) : residual * CGAL::Gmpq(power);
   std::ostringstream os;
-  os << CGAL::Gmpq(signed_residual);
+  os << residual;
   d.residual = os.str();
-  d.residual_double = signed_residual.to_double();
+  d.residual_double = CGAL::to_double(residual);
   d.message = std::to_string(d.violated_rows) + " of " + std::to_string(d.rows) + " constraint rows are violated; worst: row " +
               std::to_string(d.row) + " (" + d.kind + ", " + where + "), residual " + std::to_string(d.residual_double) +
               " UV units";

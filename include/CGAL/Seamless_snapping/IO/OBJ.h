@@ -548,6 +548,37 @@ inline std::string temporary_name_next_to(const std::string& filename)
   return filename + ".tmp-" + buf;
 }
 
+// Writes `text` to `filename` through a temporary file next to it and std::rename (atomic on POSIX):
+// on failure nothing is left behind and `filename` is untouched.
+inline Status write_text_atomically(const std::string& filename, const std::string& text, std::string& message)
+{
+  const std::string tmp = temporary_name_next_to(filename);
+  {
+    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+    if(!os) {
+      message = "cannot write '" + filename + "': cannot create the temporary file '" + tmp + "' (" +
+                std::strerror(errno) + ")";
+      return INVALID_INPUT;
+    }
+    os.write(text.data(), static_cast<std::streamsize>(text.size()));
+    os.flush();
+    const bool ok = static_cast<bool>(os);
+    os.close();
+    if(!ok || os.fail()) {
+      std::remove(tmp.c_str());
+      message = "cannot write '" + filename + "': writing the temporary file '" + tmp + "' failed (disk full?)";
+      return INVALID_INPUT;
+    }
+  }
+  if(std::rename(tmp.c_str(), filename.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(tmp.c_str());
+    message = "cannot write '" + filename + "': renaming the temporary file failed (" + why + ")";
+    return INVALID_INPUT;
+  }
+  return SUCCESS;
+}
+
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
 Status read_obj_impl(std::istream& is, const std::string& where, TriangleMesh& tm, HalfedgeUVMap uv,
                      std::string& message, const NamedParameters& np)
@@ -726,30 +757,7 @@ Status write_OBJ_with_corner_uvs(const std::string& filename, const TriangleMesh
     return INVALID_INPUT;
   }
   const std::string summary = message;
-  const std::string tmp = internal::temporary_name_next_to(filename);
-  {
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    if(!os) {
-      message = "cannot write '" + filename + "': cannot create the temporary file '" + tmp + "' (" +
-                std::strerror(errno) + ")";
-      return INVALID_INPUT;
-    }
-    os.write(text.data(), static_cast<std::streamsize>(text.size()));
-    os.flush();
-    const bool ok = static_cast<bool>(os);
-    os.close();
-    if(!ok || os.fail()) {
-      std::remove(tmp.c_str());
-      message = "cannot write '" + filename + "': writing the temporary file '" + tmp + "' failed (disk full?)";
-      return INVALID_INPUT;
-    }
-  }
-  if(std::rename(tmp.c_str(), filename.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    message = "cannot write '" + filename + "': renaming the temporary file failed (" + why + ")";
-    return INVALID_INPUT;
-  }
+  if(internal::write_text_atomically(filename, text, message) != SUCCESS) return INVALID_INPUT;
   message = summary + " to " + filename;
   return SUCCESS;
 }

@@ -1,0 +1,85 @@
+"""CTest test of the seamless_snap command line: automatic welding of a cut mesh, --no-weld refusing an
+input whose seams are invisible, --keep-layout, --fail-on-new-flips, and the JSON report's keys.
+usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)"""
+import json
+import os
+import subprocess
+import sys
+
+exe, src, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+
+
+def run(*args):
+    p = subprocess.run([exe, *args], capture_output=True, text=True)
+    return p.returncode, p.stdout + p.stderr
+
+
+def records(path, kind):
+    with open(path) as f:
+        return [l.split()[1:] for l in f if l.split() and l.split()[0] == kind]
+
+
+# a cut mesh made from the input: one 'v' per 'vt' (vertices duplicated along the seams), as libigl/Directional write
+v, vt, faces = records(src, "v"), records(src, "vt"), records(src, "f")
+cut = os.path.join(work, "cut.obj")
+pos = [None] * len(vt)
+for f in faces:
+    for c in f:
+        a, b = (int(x) for x in c.split("/")[:2])
+        pos[b - 1] = v[a - 1]
+with open(cut, "w") as o:
+    for p in pos:
+        o.write("v %s\n" % " ".join(p))
+    for t in vt:
+        o.write("vt %s\n" % " ".join(t))
+    for f in faces:
+        o.write("f %s\n" % " ".join("%s/%s" % (c.split("/")[1], c.split("/")[1]) for c in f))
+
+failures = []
+checks = [0]
+def check(cond, what):
+    checks[0] += 1
+    if not cond:
+        failures.append(what)
+
+# 1. automatic weld: the seams are found and snapped
+out1, rep1 = os.path.join(work, "welded.obj"), os.path.join(work, "welded.json")
+rc, text = run(cut, out1, "--report", rep1)
+check(rc == 0 and "welded automatically" in text, "cut mesh: automatic weld, exit 0: %d %s" % (rc, text))
+r = json.load(open(rep1))
+check(r["status"] == "SUCCESS" and r["cut_edges"] > 0, "cut mesh: seams seen after welding")
+check(r["input"] == cut and r["output"] == out1 and r["version"], "JSON report names input, output, version")
+
+# 2. --no-weld: no seam is visible; an error, not 'already exactly seamless'
+out2 = os.path.join(work, "noweld.obj")
+rc, text = run(cut, out2, "--no-weld")
+check(rc == 1 and "no seam is visible" in text and not os.path.exists(out2), "--no-weld on a cut mesh: %d %s" % (rc, text))
+
+# 3. --keep-layout: the same v and vt lines in number and order, the same faces; only UVs move
+out3 = os.path.join(work, "layout.obj")
+rc, text = run(cut, out3, "--keep-layout")
+check(rc == 0, "--keep-layout: exit %d %s" % (rc, text))
+if rc == 0:
+    v3, vt3, f3 = records(out3, "v"), records(out3, "vt"), records(out3, "f")
+    check(len(v3) == len(pos) and len(vt3) == len(vt), "--keep-layout: v/vt counts kept")
+    check(all(float(a) == float(b) for p, q in zip(pos, v3) for a, b in zip(p, q)), "--keep-layout: positions kept")
+    check([[c.split("/")[:2] for c in f] for f in f3] == [[[c.split("/")[1]] * 2 for c in f] for f in faces],
+          "--keep-layout: face indices kept")
+    moved = sum(1 for a, b in zip(vt, vt3) if [float(x) for x in a] != [float(x) for x in b])
+    check(0 < moved < len(vt), "--keep-layout: some UVs moved (%d of %d)" % (moved, len(vt)))
+    rc, text = run(out3, os.path.join(work, "again.obj"), "--keep-layout")
+    check(rc == 0 and "already exactly seamless" in text, "the result is exactly seamless: %s" % text)
+
+# 4. --fail-on-new-flips passes when nothing flips, --help lists every option
+rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
+check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
+rc, text = run("--help")
+for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
+            "--report", "--quiet", "--help"]:
+    check(opt in text, "--help lists " + opt)
+
+for f in failures:
+    print("FAILED:", f)
+print("cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))
+sys.exit(1 if failures else 0)
