@@ -24,7 +24,11 @@
 // One row per system: m, n, nnz, rank, IRREF nnz (fill-in), max|coef| of the IRREF, integer type,
 // initialize ms, project ms and their total for the fastest of the R runs, the median total,
 // max |x - x̄|, and whether every row of C x = b holds exactly (each double converted exactly to
-// Gmpq, zero tolerance). Times on shared virtual machines vary by up to 1.6x from minute to
+// Gmpq, zero tolerance). Then the size of the change against the smallest exact change
+// x* = argmin ||x - x̄||_2 s.t. C x = b (independent reference: exact residual, sparse QR of C^T,
+// test/Seamless_snapping/l2_optimum_reference.h; systems up to 100k rows): L2/opt for the default
+// minimal-change mode and for the paper's mode (Projection_options::minimal_change = false), and
+// the optimum's max |x* - x̄| in grid quanta. Times on shared virtual machines vary by up to 1.6x from minute to
 // minute, so compare rows measured in one run.
 //
 // Seamless-like systems come in two variable orders. "chain": sectors and rows numbered along the
@@ -37,6 +41,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 
 #include "../test/Seamless_snapping/generators.h"
+#include "../test/Seamless_snapping/l2_optimum_reference.h"
 
 #include <algorithm>
 #include <chrono>
@@ -63,9 +68,9 @@ struct Settings
 
 void print_header()
 {
-  std::printf("%-36s %8s %8s %9s %8s %10s %6s %-5s %9s %10s %9s %9s %10s %9s %-6s %s\n",
+  std::printf("%-36s %8s %8s %9s %8s %10s %6s %-5s %9s %10s %9s %9s %10s %9s %-6s %8s %8s %9s %s\n",
               "system", "m", "n", "nnz", "rank", "irref_nnz", "fill", "int", "init_ms", "project_ms", "total_ms",
-              "median_ms", "max|x-x̄|", "max|coef|", "exact", "status");
+              "median_ms", "max|x-x̄|", "max|coef|", "exact", "L2/opt", "paper", "opt(q)", "status");
 }
 
 std::string short_coefficient(const std::string& c)
@@ -103,11 +108,28 @@ double bench(const Linear_system& s, const std::vector<double>& xbar, const Sett
     else exact = "skip";
   }
   const double total = best;
+  // the change against the L2 optimum, for this mode and the paper's
+  char l2[3][16] = {"-", "-", "-"};
+  if(r.status == SS::SUCCESS && s.m <= 100000) {
+    std::vector<l2_reference::Row> rows(s.m);
+    for(const auto& t : s.triplets) { rows[std::size_t(t.row())].col.push_back(int(t.col())); rows[std::size_t(t.row())].coef.push_back(long(t.value())); }
+    for(std::size_t i = 0; i < s.m; ++i) rows[i].b = s.b[i];
+    const l2_reference::Optimum opt = l2_reference::l2_optimum(rows, xbar);
+    SS::Projection_options paper_options; paper_options.minimal_change = false;
+    SS::Exact_constraint_projection paper(paper_options);
+    std::vector<double> xp;
+    const bool paper_ok = paper.initialize(s.m, s.n, s.triplets, s.b) == SS::SUCCESS && paper.project(xbar, xp).status == SS::SUCCESS;
+    if(opt.ok) {
+      std::snprintf(l2[0], 16, "%.4f", l2_reference::compare(opt, xbar, x, r.quantum).ratio_l2);
+      if(paper_ok) std::snprintf(l2[1], 16, "%.3f", l2_reference::compare(opt, xbar, xp, r.quantum).ratio_l2);
+      if(r.quantum > 0) std::snprintf(l2[2], 16, "%.3g", opt.max / r.quantum);
+    }
+  }
   const double fill = s.triplets.empty() ? 0. : double(st.irref_nonzeros) / double(s.triplets.size());
-  std::printf("%-36s %8zu %8zu %9zu %8zu %10zu %6.2f %-5s %9.1f %10.1f %9.1f %9.1f %10.3g %9s %-6s %s%s%s\n",
+  std::printf("%-36s %8zu %8zu %9zu %8zu %10zu %6.2f %-5s %9.1f %10.1f %9.1f %9.1f %10.3g %9s %-6s %8s %8s %9s %s%s%s\n",
               s.name.c_str(), s.m, s.n, s.triplets.size(), st.rank, st.irref_nonzeros, fill, st.integer_type(),
               st.initialize_ms, r.status == SS::SUCCESS ? r.project_ms : 0., total, median, r.status == SS::SUCCESS ? r.max_abs_change : 0.,
-              short_coefficient(st.max_abs_coefficient).c_str(), exact, SS::status_name(r.status),
+              short_coefficient(st.max_abs_coefficient).c_str(), exact, l2[0], l2[1], l2[2], SS::status_name(r.status),
               r.status == SS::SUCCESS ? "" : ": ", r.status == SS::SUCCESS ? "" : r.message.c_str());
   std::fflush(stdout);
   if(x_out != nullptr && r.status == SS::SUCCESS) x_out->swap(x);

@@ -2,12 +2,18 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] [--connections] [--subdivide L] <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
 // Times are wall clock in ms, the minimum over N runs (default 3). Lengths are relative to the UV
 // bounding-box diagonal. Not part of the test run.
+//
+// After the timing table (or alone with --change): the size of the change against the smallest exact
+// change u* = argmin ||u - ubar||_2 s.t. C u = 0 over the same sector system (Eq. 4 per cut edge,
+// alignment rows), computed independently of the package (exact residual, sparse QR of C^T:
+// test/Seamless_snapping/l2_optimum_reference.h), for the paper's mode (minimal_change(false)) and the
+// default minimal-change mode; targets of issue 10 per model and the median.
 //
 // --connections: instead, the stress study of Table 3 / Fig. 2: per model, 0, 10, 20, 50 and 100 random
 // connection constraints (Eq. 6) between pairs of cones (shortest edge paths, random component; seed
@@ -25,6 +31,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
 #include "../test/Seamless_snapping/connection_test_utils.h"
+#include "../test/Seamless_snapping/l2_optimum_reference.h"
 
 #include <algorithm>
 #include <array>
@@ -166,15 +173,79 @@ static int connection_study(const std::vector<fs::path>& files, int repeat)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// The change of both modes against the L2 optimum, per model (see the header).
+static int change_study(const std::vector<fs::path>& files)
+{
+  namespace LR = l2_reference;
+  std::printf("%-36s %9s %9s | %8s %8s %7s %5s | %8s %8s %7s %5s %8s | %6s\n", "model", "opt quanta", "opt max",
+              "L2 paper", "max", "excess", "flips", "L2 ours", "max", "excess", "flips", "LS ms", "target");
+  int failures = 0;
+  std::vector<double> ratios;
+  for(const fs::path& p : files) {
+    Mesh input;
+    UV_map uv_in;
+    if(!read_model(p, input, uv_in, failures)) continue;
+    const LR::Sector_system<Mesh> sys = LR::sector_system(input, uv_in);
+    const LR::Optimum opt = sys.ok ? LR::l2_optimum(sys.rows, sys.ubar) : LR::Optimum();
+    if(!opt.ok) { std::printf("%-36s no reference (sector system or QR failed)\n", p.filename().string().c_str()); ++failures; continue; }
+    LR::Comparison cmp[2];
+    SS::Snap_report rep[2];
+    for(int mode = 0; mode < 2; ++mode) {
+      Mesh m = input;
+      UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+      rep[mode] = SS::snap_seamless_parameterization(m, uv, SS::parameters::minimal_change(mode == 1));
+      cmp[mode] = LR::compare(opt, sys.ubar, LR::sector_values(sys, uv), sys.quantum);
+    }
+    if(rep[0].status != SS::SUCCESS || rep[1].status != SS::SUCCESS) {
+      std::printf("%-36s FAILED: paper %s, ours %s (%s)\n", p.filename().string().c_str(), SS::status_name(rep[0].status),
+                  SS::status_name(rep[1].status), rep[1].message.c_str());
+      ++failures;
+      continue;
+    }
+    { // TEMP experiment: rounding floor
+      std::vector<double> r(sys.ubar.size()); std::vector<char> used(sys.ubar.size(), 0);
+      for(auto& row : sys.rows) for(int c : row.col) used[c] = 1;
+      for(std::size_t i = 0; i < r.size(); ++i) { double v = sys.ubar[i] + opt.d[i]; r[i] = used[i] ? std::nearbyint(v / sys.quantum) * sys.quantum : sys.ubar[i]; }
+      LR::Comparison c = LR::compare(opt, sys.ubar, r, sys.quantum);
+      std::vector<double> r2(r); for(std::size_t i = 0; i < r.size(); ++i) if(used[i]) r2[i] = std::nearbyint((sys.ubar[i] + opt.d[i]) / (0.5 * sys.quantum)) * 0.5 * sys.quantum;
+      LR::Comparison c2 = LR::compare(opt, sys.ubar, r2, sys.quantum);
+      std::printf("  floor: round(u*) L2 %.4f, half-quantum %.4f\n", c.ratio_l2, c2.ratio_l2);
+    }
+    const bool ok = LR::meets_target(opt, cmp[1], sys.quantum);
+    if(opt.l2 > 0) ratios.push_back(cmp[1].ratio_l2);
+    std::printf("%-36s %9.3g %9.2e | %8.3f %8.3f %7.1f %5zu | %8.4f %8.4f %7.1f %5zu %8.2f | %6s\n",
+                p.filename().string().c_str(), opt.max / sys.quantum, opt.max,
+                cmp[0].ratio_l2, cmp[0].ratio_max, cmp[0].excess_quanta, rep[0].flips_unrepaired,
+                cmp[1].ratio_l2, cmp[1].ratio_max, cmp[1].excess_quanta, rep[1].flips_unrepaired,
+                rep[1].least_squares_ms, opt.l2 == 0 ? (cmp[1].l2 == 0 ? "exact" : "MOVED") : ok ? "ok" : "MISSED");
+    if(!ok) ++failures;
+  }
+  double median = 0;
+  if(!ratios.empty()) {
+    std::sort(ratios.begin(), ratios.end());
+    const std::size_t h = ratios.size() / 2;
+    median = ratios.size() % 2 ? ratios[h] : 0.5 * (ratios[h - 1] + ratios[h]);
+  }
+  std::printf("median L2 ratio (ours) over %zu models with a nonzero optimum: %.4f (target <= 1.1)\n", ratios.size(), median);
+  std::printf("\ncolumns: opt quanta = ||u* - ubar||_inf in grid quanta 2^(K-52); opt max = the same in UV units; L2 =\n"
+              "||u - ubar||_2 / ||u* - ubar||_2; max = ||u - ubar||_inf / ||u* - ubar||_inf; excess = (||u - ubar||_inf -\n"
+              "||u* - ubar||_inf) in quanta; flips = triangles flipped by snapping and left unrepaired; LS ms = the\n"
+              "floating-point projection of the full system (minimal-change mode); target: L2 <= 1.05 where the optimum\n"
+              "spans >= 100 quanta, else excess <= 8 quanta.\n");
+  if(ratios.size() > 0 && median > 1.1) ++failures;
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   int repeat = 3;
-  bool connections = false;
+  bool connections = false, change_only = false;
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) { repeat = (std::max)(1, std::atoi(argv[++i])); continue; }
     if(std::strcmp(argv[i], "--connections") == 0) { connections = true; continue; }
+    if(std::strcmp(argv[i], "--change") == 0) { change_only = true; continue; }
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
@@ -198,6 +269,7 @@ int main(int argc, char** argv)
   std::sort(files.begin(), files.end());
   if(connections) return connection_study(files, repeat);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
+  if(change_only) return change_study(files);
 
   std::printf("%-36s %7s %6s %6s %6s | %8s %8s %8s %8s %8s %8s | %9s %6s %9s %6s | %9s %9s %9s | %13s %13s | %9s %9s %8s | %9s\n",
               "model", "#F", "#cut", "#nodes", "#branch", "extract", "reduce", "IRREF", "evaluate", "propag.", "total",
@@ -264,6 +336,7 @@ int main(int argc, char** argv)
               "neg / deg in/sn/rep = UV triangles with negative / zero area (exact test) in the input, after snapping, after\n"
               "the flip repair; intro n+d = negative + degenerate triangles that were positive in the input, after snapping;\n"
               "left n+d = the same after the repair (must be 0+0: otherwise the reason is printed and the exit code is 1);\n"
-              "repair = flip repair ms.\n");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+              "repair = flip repair ms.\n\n");
+  const int change = change_study(files);
+  return failures == 0 && change == EXIT_SUCCESS ? EXIT_SUCCESS : EXIT_FAILURE;
 }

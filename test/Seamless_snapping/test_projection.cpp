@@ -554,6 +554,10 @@ void test_determinism()
 // exists (observed: 1.2e4 - 5.6e4 for the cases below, 2.4e8 for n = 2m); only optimality d_ours >= d_opt
 // is asserted and the ratio printed.
 const double BOUND = 100.;
+// The default minimal-change mode snaps the floating-point L2 projection instead (Projection_options::
+// minimal_change): ||x - x̄|| <= MIN_BOUND ||x* - x̄|| + 2 sqrt(n) s (at most two quanta per variable of
+// grid rounding), asserted for the seamless-like systems (unit pivots).
+const double MIN_BOUND = 1.1;
 
 std::vector<CGAL::Gmpq> qp_optimum(const Linear_system& s, const std::vector<double>& xbar)
 {
@@ -592,8 +596,13 @@ void test_qp_reference()
     }
     assert(s.n <= 300);
     const std::vector<double> xbar = SS_test::noisy_input(s, qc.noise, 700 + qc.seed);
-    const Outcome o = run(s, xbar);
+    SS::Projection_options paper; paper.minimal_change = false;
+    const Outcome o = run(s, xbar, paper);
     check_success(s, xbar, o);
+    const Outcome om = run(s, xbar);                                     // default: minimal change
+    check_success(s, xbar, om);
+    if(qc.seamless) assert(om.report.minimal_change || om.report.changed_variables == 0);   // (exact x̄ is returned as is)
+    // random systems may fall back to snapping x̄ (coarse divisors)
     const Clock::time_point t0 = Clock::now();
     const std::vector<CGAL::Gmpq> opt = qp_optimum(s, xbar);
     const double qp_ms = ms_since(t0);
@@ -604,7 +613,15 @@ void test_qp_reference()
     CGAL::Gmpq d_opt(0);
     for(std::size_t j = 0; j < s.n; ++j) { CGAL::Gmpq e = opt[j] - CGAL::Gmpq(xbar[j]); d_opt += e * e; }
     const CGAL::Gmpq d_ours = SS_test::exact_squared_distance(o.x, xbar);
+    const CGAL::Gmpq d_min = SS_test::exact_squared_distance(om.x, xbar);
     assert(d_ours >= d_opt);                                             // optimality of the reference
+    assert(d_min >= d_opt);
+    const double min_ratio = d_opt == 0 ? 0 : std::sqrt(CGAL::to_double(d_min / d_opt));
+    const double min_limit = MIN_BOUND * std::sqrt(CGAL::to_double(d_opt)) + 2 * std::sqrt(double(s.n)) * om.report.quantum;
+    std::cout << "  minimal change" << (om.report.minimal_change ? "" : " (fell back to x̄: " + om.report.message + ")")
+              << ": ||x - x̄|| / ||x* - x̄|| = " << min_ratio << " (limit " << min_limit
+              << ", ||x - x̄|| = " << std::sqrt(CGAL::to_double(d_min)) << ")" << std::endl;
+    if(qc.seamless) assert(std::sqrt(CGAL::to_double(d_min)) <= min_limit);
     const CGAL::Gmpq grid_term = CGAL::Gmpq(double(s.n)) * CGAL::Gmpq(32. * o.report.quantum) * CGAL::Gmpq(32. * o.report.quantum);
     if(qc.seamless) {
       assert(o.stats.max_abs_coefficient == "1");                        // unit pivots: the bound applies
@@ -617,6 +634,55 @@ void test_qp_reference()
               << ", grid term=" << CGAL::to_double(grid_term) << ", QP " << qp_ms << " ms)" << std::endl;
   }
   std::cout << "largest observed d_ours/d_opt: seamless-like " << worst << ", random " << worst_random << " (QP total " << ms_since(t_all) << " ms)" << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5b. an input that already satisfies every row exactly comes back bit-identical, in both modes, and
+// the minimal-change mode is scale covariant and moves no unconstrained variable (not even -0.0)
+void test_exact_input_unchanged()
+{
+  std::cout << "== 5b. exact input unchanged" << std::endl;
+  SS::Projection_options paper; paper.minimal_change = false;
+  // 2 x0 + 2 x1 = 1 with (0.3, 0.2): exact in doubles (0.3 + 0.2 rounds to 0.5, and the sum is exactly 0.5)
+  const Linear_system s = small_system(3, { { {0, 2}, {1, 2} } }, { 1 });
+  CGAL::Gmpq sum = CGAL::Gmpq(0.3) + CGAL::Gmpq(0.2);
+  const bool exact_input = (sum == CGAL::Gmpq(1, 2));
+  for(const SS::Projection_options& opt : { SS::Projection_options(), paper }) {
+    const std::vector<double> xbar = { 0.25, 0.25, -0.0 };
+    const Outcome o = run(s, xbar, opt);
+    check_success(s, xbar, o);
+    assert(bit_identical(o.x, xbar));
+    assert(o.report.changed_variables == 0 && o.report.max_abs_change == 0);
+    if(exact_input) {
+      const std::vector<double> x2 = { 0.3, 0.2, -0.0 };
+      const Outcome o2 = run(s, x2, opt);
+      check_success(s, x2, o2);
+      assert(bit_identical(o2.x, x2));
+    }
+  }
+  // a generated seamless-like system at its exact solution, and the same slightly off
+  SS_test::Seamless_options so; so.target_rows = 300; so.seed = 77;
+  const Linear_system g = SS_test::seamless_system(so);
+  assert(g.has_solution && g.solution.size() == g.n);
+  std::vector<double> xs = SS_test::noisy_input(g, 0., 5);
+  const Outcome oe = run(g, xs);
+  check_success(g, xs, oe);
+  assert(bit_identical(oe.x, xs));
+  std::vector<double> xn = SS_test::noisy_input(g, 1e-9, 5);
+  for(std::size_t i = 0; i < g.n; ++i) if(!g.constrained[i]) xn[i] = -0.0;
+  const Outcome on = run(g, xn);
+  check_success(g, xn, on);
+  assert(on.report.minimal_change);
+  for(std::size_t i = 0; i < g.n; ++i) if(!g.constrained[i]) assert(bit_identical(on.x[i], -0.0));
+  for(int j : { -60, 33 }) {
+    std::vector<double> xj(xn);
+    for(double& v : xj) v = std::ldexp(v, j);
+    const Outcome oj = run(g, xj);
+    check_success(g, xj, oj);
+    for(std::size_t i = 0; i < g.n; ++i) assert(bit_identical(oj.x[i], std::ldexp(on.x[i], j)));
+  }
+  std::cout << "exact inputs returned bit-identical (both modes" << (exact_input ? ", incl. (0.3, 0.2)" : "")
+            << "); minimal change scale covariant (2^-60, 2^33)" << std::endl;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -767,6 +833,7 @@ int main()
   test_determinism();
   test_generated_systems();
   test_qp_reference();
+  test_exact_input_unchanged();
   test_regressions();
   test_eigen_vectors();
   std::cout << "test_projection: all tests passed in " << ms_since(t0) / 1000. << " s" << std::endl;

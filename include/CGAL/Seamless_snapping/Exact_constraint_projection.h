@@ -15,10 +15,13 @@
 #include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
 #include <CGAL/Seamless_snapping/internal/projection/irref.h>
 #include <CGAL/Seamless_snapping/internal/projection/evaluation.h>
+#include <CGAL/Seamless_snapping/internal/projection/exact_input_check.h>
+#include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
 
 #include <Eigen/Sparse>
 
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -42,7 +45,12 @@ namespace Seamless_snapping {
  *   free/implied split, and the divisor (lcm of pivots) of every free variable (Alg. 4).
  *   Integers are 64-bit with overflow detection; on any overflow the elimination is redone in
  *   `CGAL::Gmpz`, so the IRREF is exact either way.
- * - `project(x̄, x)` per input vector: the fixed-point grid `F_delta` from `max |x̄|` (Sec. 4.3),
+ *   In the minimal-change mode (`Projection_options::minimal_change`, the default) also the sparse
+ *   LDL^T factorization of `C C^T` for the floating-point projection.
+ * - `project(x̄, x)` per input vector: if x̄ already satisfies every row exactly, x = x̄ bit-identical.
+ *   Otherwise, in the minimal-change mode, x̄ is first replaced by its L2-closest point on `C x = b`
+ *   computed in floating point (beyond Sec. 4.2: the correction is spread over all variables); then
+ *   the fixed-point grid `F_delta` from `max |x̄|` (Sec. 4.3),
  *   free variables rounded to multiples of their divisors (Alg. 3–4; for `b != 0` shifted by a
  *   particular solution of the per-row divisibility congruences, addendum Eq. 2'), implied variables
  *   by the safe dot product (Alg. 5), and a final exact integer check of every row of the
@@ -56,9 +64,12 @@ namespace Seamless_snapping {
  * `project()` before `initialize()` is a precondition violation; after a failed `initialize()`,
  * `project()` returns that failure and writes nothing.
  *
- * \warning `x` is exact and near x̄, but it is not the L2-closest point of the solution space
- * (Sec. 4.2): free variables keep (rounded) input values and implied variables absorb the change.
- * For `b != 0` a system may have no solution on the grid (e.g. `3 x = 1`): `INFEASIBLE` is then
+ * `x` is exact and near x̄. In the minimal-change mode `||x - x̄||_2` is within grid rounding of the
+ * smallest change under the same constraints (measured by `bench_projection`); with
+ * `minimal_change = false` it is the paper's point (Sec. 4.2): free variables keep (rounded) input
+ * values and implied variables absorb the whole change, often several times the smallest one.
+ *
+ * \warning For `b != 0` a system may have no solution on the grid (e.g. `3 x = 1`): `INFEASIBLE` is then
  * reported, never a wrong answer.
  */
 class Exact_constraint_projection
@@ -141,12 +152,52 @@ public:
       return report;
     }
     std::vector<double> xb(n);
-    for(std::size_t i = 0; i < n; ++i) xb[i] = double(xbar[i]);
-    std::vector<double> result;
-    if(m_irref64) internal::evaluate(*m_irref64, m_system, xb, m_options, result, report);
-    else          internal::evaluate(*m_irrefz, m_system, xb, m_options, result, report);
+    for(std::size_t i = 0; i < n; ++i) {
+      xb[i] = double(xbar[i]);
+      if(!std::isfinite(xb[i])) { report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite"; return report; }
+    }
+    if(input_is_exact(xb)) {                                   // nothing to do: x̄ comes back bit-identical
+      report.status = SUCCESS;
+      if(m_options.delta_exponent) {
+        const internal::Fixed_point_grid grid(*m_options.delta_exponent);
+        report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
+      }
+      report.message = "x̄ satisfies all " + std::to_string(m_statistics.rows) + " rows exactly; returned unchanged";
+      x.swap(xb);
+      report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      return report;
+    }
+    std::vector<double> start, result;
+    if(m_least_squares) {                                // minimal-change mode: snap the L2-closest point
+      const auto t1 = std::chrono::steady_clock::now();
+      m_least_squares->project(m_b_double, xb, start);
+      report.least_squares_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+      evaluate(start, result, report);
+      report.minimal_change = report.status == SUCCESS;
+    }
+    if(!report.minimal_change) {
+      const double ls_ms = report.least_squares_ms;
+      const std::string note = m_least_squares ? " (snapping the floating-point projection failed: " + report.message + ")"
+                                                       : std::string();
+      report = Projection_report();
+      report.least_squares_ms = ls_ms;
+      evaluate(xb, result, report);
+      if(report.status == SUCCESS) report.message += note;
+    }
+    if(report.status == SUCCESS) {
+      report.max_abs_change = 0;
+      report.changed_variables = 0;
+      for(std::size_t i = 0; i < n; ++i) {
+        if(result[i] != xb[i]) ++report.changed_variables;
+        report.max_abs_change = (std::max)(report.max_abs_change, std::fabs(result[i] - xb[i]));
+      }
+      if(report.minimal_change)
+        report.message = "all " + std::to_string(m_statistics.rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
+                       + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change)
+                       + " (floating-point projection snapped)";
+      x.swap(result);
+    }
     report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if(report.status == SUCCESS) x.swap(result);
     return report;
   }
 
@@ -171,12 +222,57 @@ public:
   /// @}
 
 private:
+  // x̄ satisfies every row exactly (and, with a given grid, its constrained values lie on that grid,
+  // as a caller sharing the grid relies on)
+  bool input_is_exact(const std::vector<double>& xb) const
+  {
+    if(m_options.delta_exponent) {
+      const internal::Fixed_point_grid grid(*m_options.delta_exponent);
+      for(std::size_t i = 0; i < xb.size(); ++i)
+        if(m_system.column_used[i] && !grid.contains(xb[i])) return false;
+    }
+    return internal::satisfies_exactly(m_system, xb);
+  }
+
+  void evaluate(const std::vector<double>& xb, std::vector<double>& result, Projection_report& report) const
+  {
+    if(m_irref64) internal::evaluate(*m_irref64, m_system, xb, m_options, result, report);
+    else          internal::evaluate(*m_irrefz, m_system, xb, m_options, result, report);
+  }
+
+  // The floating-point copy of the canonical rows and the factorization of C C^T (minimal-change
+  // mode). A failed factorization only turns the mode off (x̄ itself is then snapped).
+  void initialize_least_squares()
+  {
+    const internal::Integer_system& sys = m_system;
+    std::vector<Eigen::Triplet<double> > entries;
+    entries.reserve(sys.nonzeros());
+    m_b_double.assign(sys.n_rows, 0.);
+    for(std::size_t i = 0; i < sys.n_rows; ++i) {
+      if(sys.fits_int64) {
+        m_b_double[i] = double(sys.rows64.b[i]);
+        for(std::size_t q = sys.rows64.ptr[i]; q < sys.rows64.ptr[i + 1]; ++q)
+          entries.emplace_back(int(i), int(sys.rows64.e[q].col), double(sys.rows64.e[q].val));
+      } else {
+        m_b_double[i] = CGAL::to_double(sys.rowsz.b[i]);
+        for(std::size_t q = sys.rowsz.ptr[i]; q < sys.rowsz.ptr[i + 1]; ++q)
+          entries.emplace_back(int(i), int(sys.rowsz.e[q].col), CGAL::to_double(sys.rowsz.e[q].val));
+      }
+    }
+    internal::Least_squares_projection::Matrix C(Eigen::Index(sys.n_rows), Eigen::Index(sys.n_cols));
+    C.setFromTriplets(entries.begin(), entries.end());
+    std::string ignored;
+    m_least_squares.reset(new internal::Least_squares_projection());
+    if(m_least_squares->initialize(C, std::vector<double>(), ignored) != SUCCESS) m_least_squares.reset();
+  }
+
   template <typename BRange, typename Visit>
   Status initialize_impl(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit visit)
   {
     auto t0 = std::chrono::steady_clock::now();
     m_initialized = true;
     m_irref64.reset(); m_irrefz.reset();
+    m_least_squares.reset();
     m_statistics = Irref_statistics();
     m_statistics.rows = n_rows; m_statistics.columns = n_cols;
     m_message.clear();
@@ -208,6 +304,7 @@ private:
       if(m_status == SUCCESS) {
         if(m_irref64) m_irref64->fill_statistics(m_statistics);
         else          m_irrefz->fill_statistics(m_statistics);
+        if(m_options.minimal_change) initialize_least_squares();
       } else {
         m_irref64.reset(); m_irrefz.reset();
       }
@@ -224,6 +321,8 @@ private:
   internal::Integer_system m_system;                      // the original rows, for the final exact check
   std::unique_ptr<internal::Irref<std::int64_t>> m_irref64; // exactly one of the two is set after a successful initialize()
   std::unique_ptr<internal::Irref<CGAL::Gmpz>> m_irrefz;
+  std::unique_ptr<internal::Least_squares_projection> m_least_squares;   // set only in the minimal-change mode
+  std::vector<double> m_b_double;
 };
 
 /*!

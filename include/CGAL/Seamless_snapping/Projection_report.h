@@ -39,7 +39,17 @@ struct Projection_options
   /// `2^(K-52)` at least the smallest subnormal): otherwise `project()` returns `RANGE_EXCEEDED`.
   /// Within this range the projection is scale covariant: for `b = 0`, x̄ scaled by `2^j` gives `x`
   /// scaled by `2^j`, bit for bit.
+  /// An input that already satisfies every row exactly is then returned unchanged only if its
+  /// constrained values lie on that grid.
   std::optional<int> delta_exponent;
+  /// Minimal-change mode (default): x̄ is first projected onto `C x = b` in floating point (the
+  /// L2-closest point, by a sparse LDL^T factorization of `C C^T` with iterative refinement,
+  /// computed in `initialize()`), and that point is snapped exactly (Sec. 4.3). The change
+  /// `||x - x̄||_2` is then close to the smallest possible one; what is left is grid rounding
+  /// (a few quanta `2^(K-52)` per variable). `false` gives the paper's asymmetric choice (Sec. 4.2):
+  /// free variables keep their rounded inputs and the implied variables absorb the whole correction.
+  /// If snapping the projected point fails (e.g. `RANGE_EXCEEDED`), x̄ itself is snapped.
+  bool minimal_change = true;
 };
 
 /*!
@@ -61,7 +71,7 @@ struct Irref_statistics
   std::string max_abs_coefficient = "0";///< largest |entry| of Ĉ and b̂, exact decimal
   double max_abs_coefficient_double = 0;///< the same, rounded to double
   bool multiprecision = false;          ///< true when the elimination ran in `CGAL::Gmpz` (overflow of int64 or forced)
-  double initialize_ms = 0;             ///< wall-clock time of `initialize()`
+  double initialize_ms = 0;             ///< wall-clock time of `initialize()` (the factorization of `C C^T` included)
   /// the integer type the IRREF was computed in: "int64" or "Gmpz"
   const char* integer_type() const { return multiprecision ? "Gmpz" : "int64"; }
 };
@@ -77,9 +87,13 @@ struct Projection_report
   int delta_exponent = 0;          ///< K, with `delta = 2^K` (Sec. 4.3)
   double delta = 0;                ///< the fixed-point range is (-delta, delta)
   double quantum = 0;              ///< spacing s = 2^(K-52) of the grid F_delta; every constrained output is a multiple of s
+                                   ///< (`K`, `delta` and `quantum` are 0 when x̄ already satisfied every row exactly
+                                   ///< and was returned bit-identical)
   double max_abs_change = 0;       ///< max_i |x_i - x̄_i| (rounded to double)
   std::size_t changed_variables = 0; ///< number of i with x_i != x̄_i
   double project_ms = 0;           ///< wall-clock time of `project()`
+  double least_squares_ms = 0;     ///< part of it spent on the floating-point projection (`Projection_options::minimal_change`)
+  bool minimal_change = false;     ///< true iff the floating-point projection of x̄ was snapped (not x̄ itself)
 };
 
 } // namespace Seamless_snapping

@@ -147,6 +147,31 @@ namespace Seamless_snapping {
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::repair_flips()`. The report gives the
  *                     flips before, after snapping and after repair, and the introduced ones left unrepaired.}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{minimal_change}
+ *     \cgalParamDescription{`true`: before the exact projection, the UVs of all constrained sectors are moved to the
+ *                           L2-closest point of the full constraint system (every row of Eq. 4, 5, 6-8, weighted by
+ *                           `vertex_weight_map`), computed in floating point by a sparse LDL^T factorization of
+ *                           `C W^-1 C^T` with iterative refinement; the node system is then snapped and the branches
+ *                           propagated from that point (Sec. 5.3), so the change `||u - ubar||_2` is within grid
+ *                           rounding (a few quanta `2^(K-52)`) of the smallest exact change. `false`: the paper's
+ *                           Sec. 4.2 choice, where implied variables absorb the whole correction (several times
+ *                           larger). The cut graph, sectors and rotations are always those of the input.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::minimal_change()`; the report gives the time in
+ *                     `least_squares_ms`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_weight_map}
+ *     \cgalParamDescription{a weight per vertex for the minimal change: it minimizes `sum_s w(v_s) |u_s - ubar_s|^2`
+ *                           over the sectors `s` (one UV pair each) with `v_s` the vertex of the sector. A larger weight
+ *                           makes the UVs of that vertex move less (relative to the others); scaling all weights by
+ *                           one factor changes nothing. Only used with `minimal_change(true)`. A weight that is not
+ *                           positive and finite gives `INVALID_INPUT`.}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and `double` as value type}
+ *     \cgalParamDefault{all weights 1}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::vertex_weight_map()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{connection_constraints}
  *     \cgalParamDescription{connection constraints (Eq. 6): the two end vertices of each path lie on one isocurve of
  *                           the given UV coordinate, after transport along the path's face strip; a closed path is a
@@ -189,9 +214,8 @@ namespace Seamless_snapping {
  * |coordinate| lies in [1/2, 1) (exact), every step works on these values, and the result is scaled back;
  * a map scaled by 2^j therefore snaps to the result scaled by 2^j, bit for bit, whenever both are doubles.
  *
- * \warning The result consists of doubles and satisfies the constraints exactly, but it is not the
- * closest such point (Sec. 4.2): free variables keep their (rounded) values and implied ones absorb
- * the change. Small triangles near the seams may flip; they are repaired locally when possible
+ * \warning The result consists of doubles and satisfies the constraints exactly; with `minimal_change(true)` it is
+ * within grid rounding of the L2-closest such point, not exactly that point. Small triangles near the seams may flip; they are repaired locally when possible
  * (`repair_flips`), and the report counts flips in the input, after snapping and after repair.
  *
  * \sa `is_exactly_seamless()`, `Exact_constraint_projection`
@@ -207,6 +231,7 @@ Snap_report snap_seamless_parameterization(const TriangleMesh& tm, HalfedgeUVMap
                                  [&](typename GT::edge_descriptor e) { return in.seam_of(e); }, in.has_seams,
                                  [&](typename GT::halfedge_descriptor h) { return in.rotation_of(h); }, in.has_rotations,
                                  [&](typename GT::edge_descriptor e) { return in.constrained_of(e); }, in.has_constrained,
+                                 [&](typename GT::vertex_descriptor v) { return in.weight_of(v); }, in.has_weights,
                                  in.options);
 }
 

@@ -27,6 +27,8 @@ enum rotation_tolerance_t{ rotation_tolerance };// double: max angle (degrees) b
 enum weld_vertices_t     { weld_vertices };     // bool, OBJ reading: merge vertices with bit-identical positions
 enum connection_constraints_t{ connection_constraints };// range of Connection_constraint: Eq. (6), and Eq. (8) for closed paths
 enum repair_flips_t      { repair_flips };      // bool: repair UV flips introduced by snapping (Sec. 5.4, default true)
+enum minimal_change_t    { minimal_change };    // bool: snap the L2-closest point of the full system (default true)
+enum vertex_weight_map_t { vertex_weight_map }; // vertex -> double > 0: weight of the vertex's UVs in the L2 change
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -40,7 +42,9 @@ enum repair_flips_t      { repair_flips };      // bool: repair UV flips introdu
   SS_NP(rotation_tolerance_t,      rotation_tolerance)       \
   SS_NP(weld_vertices_t,           weld_vertices)            \
   SS_NP(connection_constraints_t,  connection_constraints)   \
-  SS_NP(repair_flips_t,            repair_flips)
+  SS_NP(repair_flips_t,            repair_flips)             \
+  SS_NP(minimal_change_t,          minimal_change)           \
+  SS_NP(vertex_weight_map_t,       vertex_weight_map)
 
 namespace parameters {
 

@@ -29,6 +29,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
 #include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
 #include <CGAL/Seamless_snapping/internal/projection/irref.h>
+#include <CGAL/Seamless_snapping/internal/projection/rounding_refinement.h>
 #include <CGAL/Seamless_snapping/internal/projection/safe_dot.h>
 
 #include <CGAL/Gmpz.h>
@@ -74,10 +75,11 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz
   return false;
 }
 
-// One attempt on a given grid.
+// One attempt on a given grid. `refine`: minimal-change mode, xbar is the floating-point projection
+// and the free grid integers are chosen jointly (rounding_refinement.h) instead of rounded one by one.
 template <typename Int>
 void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
-                      const Fixed_point_grid& grid, std::vector<double>& x, Projection_report& report)
+                      const Fixed_point_grid& grid, std::vector<double>& x, Projection_report& report, bool refine = false)
 {
   typedef Integer_ops<Int> Ops;
   const std::size_t n = ir.n_cols, m = ir.rank();
@@ -139,6 +141,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       out[i] = grid.from_integer(z[i]);
     }
   }
+  if(refine) refine_free_rounding(ir, grid, xbar, z, out);
 
   // -- implied variables (Alg. 3 with Alg. 5; Eq. 2' for b != 0)
   // With z_i = z0_i + p_j t_i (z_i - z0_i is a multiple of l_i, hence of p_j), Eq. (2') reads
@@ -306,19 +309,20 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
       report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite";
       return;
     }
-  if(options.delta_exponent) { evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report); return; }
+  const bool refine = options.minimal_change;
+  if(options.delta_exponent) { evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report, refine); return; }
   double max_x = 0, max_b = 0;
   for(std::size_t i = 0; i < ir.n_cols; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_x = std::max(max_x, std::fabs(xbar[i]));
   for(std::size_t j = 0; j < ir.rank(); ++j)
     if(!Ops::is_zero(ir.rhs[j]))
       max_b = std::max(max_b, std::fabs(Ops::to_double(ir.rhs[j]) / Ops::to_double(ir.pivot[j])));
   const Fixed_point_grid g1 = Fixed_point_grid::from_max_abs(max_x, options.delta_margin_bits);
-  evaluate_on_grid(ir, sys, xbar, g1, x, report);
+  evaluate_on_grid(ir, sys, xbar, g1, x, report, refine);
   if(report.status != RANGE_EXCEEDED || max_b <= max_x) return;
   const Fixed_point_grid g2 = Fixed_point_grid::from_max_abs(std::max(max_x, max_b), options.delta_margin_bits);
   if(g2.K == g1.K) return;
   Projection_report second;
-  evaluate_on_grid(ir, sys, xbar, g2, x, second);
+  evaluate_on_grid(ir, sys, xbar, g2, x, second, refine);
   if(second.status == SUCCESS) report = second;
   else report.message += " (also with delta = 2^" + std::to_string(g2.K) + " from |b̂_j / p_j|: " + second.message + ")";
 }

@@ -18,6 +18,11 @@
 //   u_{t+1}^- has a unit coefficient: u_{t+1}^- = u_0^- - R^k u_0^+ + R^k u_{t+1}^+, per component
 //   a sum of three grid values with coefficients +-1, evaluated by the safe dot product (Alg. 5),
 //   hence exactly (step 3).
+// With split_node_offset (minimal-change mode, `target` = the L2-closest point y): the node values
+//   differ from y by a few quanta, and u_{t+1}^- inherits delta = (u_0^- - y_0^-) - R^k (u_0^+ - y_0^+)
+//   on every sector of the branch. Step 2 then rounds y_{t+1}^+ - R^-k delta / 2 instead of y_{t+1}^+,
+//   which splits delta evenly between the two sides (the minimizer of |a|^2 + |delta + R^k a|^2);
+//   only the choice of a free value changes, so exactness is untouched.
 // Align branch with component c: u_{t+1}|c <- u_0|c (exact copy); the other component is untouched.
 // The branch rows are homogeneous (reduced_system.h): rows with b != 0 are node rows, solved by the
 // projection, so no constant enters here.
@@ -39,19 +44,28 @@ namespace Seamless_snapping {
 namespace internal {
 
 // `x`: 2 values per sector; on entry the node sectors hold their exact values (on the grid) and
-// every other sector its input value. On success, the non-node sectors of the branches are set.
-inline Status propagate_along_branches(const Reduced_system& rs, const std::vector<double>& ubar,
-                                       const Fixed_point_grid& grid, std::vector<double>& x, std::string& message)
+// every other sector its input value. `target`: the values the free sectors are rounded from (ubar,
+// or its L2-closest point). On success, the non-node sectors of the branches are set.
+inline Status propagate_along_branches(const Reduced_system& rs, const std::vector<double>& target,
+                                       const Fixed_point_grid& grid, std::vector<double>& x, std::string& message,
+                                       bool split_node_offset = false)
 {
   Safe_dot_workspace ws;
   std::vector<std::pair<std::int64_t, std::int64_t> > terms(3);   // (coefficient, grid integer)
   std::size_t branch = 0;
   for(const Cut_branch_plan& p : rs.cut_branches) {
     const Quarter_turn R(p.k);
+    double shift[2] = {0, 0};                                     // -R^-k delta / 2
+    if(split_node_offset)
+      for(int c = 0; c < 2; ++c) {
+        const double delta = (x[2 * p.u0_minus + c] - target[2 * p.u0_minus + c])
+                           - R.sign[c] * (x[2 * p.u0_plus + R.col[c]] - target[2 * p.u0_plus + R.col[c]]);
+        shift[R.col[c]] = -0.5 * R.sign[c] * delta;
+      }
     for(const std::pair<int, int>& s : p.inner) {
       const int plus = s.first, minus = s.second;
       for(int c = 0; c < 2; ++c) {
-        x[2 * plus + c] = grid.round(ubar[2 * plus + c]);
+        x[2 * plus + c] = grid.round(target[2 * plus + c] + shift[c]);
         if(!grid.contains(x[2 * plus + c])) {
           message = "sector " + std::to_string(plus) + " (cut branch " + std::to_string(branch) +
                     "): its input value leaves the fixed-point range (-delta, delta), delta = 2^" + std::to_string(grid.K);

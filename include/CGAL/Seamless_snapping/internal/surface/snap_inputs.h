@@ -33,6 +33,7 @@ struct Snap_inputs
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
 
   typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_seam_map;
   typedef typename internal_np::Lookup_named_param_def<snap_np::seam_edge_map_t, NamedParameters,
@@ -43,6 +44,9 @@ struct Snap_inputs
   typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_constrained_map;
   typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
                                                        Default_constrained_map>::type Constrained_map;
+  typedef CGAL::Constant_property_map<vertex_descriptor, double> Default_weight_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::vertex_weight_map_t, NamedParameters,
+                                                       Default_weight_map>::type Weight_map;
 
   Seam_map seams;
   bool has_seams;
@@ -50,6 +54,8 @@ struct Snap_inputs
   bool has_rotations;
   Constrained_map constrained;
   bool has_constrained;
+  Weight_map weights;             // of the minimal change
+  bool has_weights;
   Snap_options options;
 
   Snap_inputs(const TriangleMesh& tm, const NamedParameters& np)
@@ -61,7 +67,10 @@ struct Snap_inputs
       has_rotations(!CGAL::parameters::is_default_parameter<NamedParameters, snap_np::rotation_map_t>::value),
       constrained(CGAL::parameters::choose_parameter<Constrained_map>(
           CGAL::parameters::get_parameter(np, internal_np::edge_is_constrained), Default_constrained_map(false))),
-      has_constrained(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value)
+      has_constrained(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value),
+      weights(CGAL::parameters::choose_parameter<Weight_map>(CGAL::parameters::get_parameter(np, snap_np::vertex_weight_map),
+                                                             Default_weight_map(1.))),
+      has_weights(!CGAL::parameters::is_default_parameter<NamedParameters, snap_np::vertex_weight_map_t>::value)
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -71,6 +80,7 @@ struct Snap_inputs
     options.alignment_tolerance = choose_parameter(get_parameter(np, snap_np::alignment_tolerance), defaults.alignment_tolerance);
     options.rotation_tolerance = choose_parameter(get_parameter(np, snap_np::rotation_tolerance), defaults.rotation_tolerance);
     options.repair_flips = choose_parameter(get_parameter(np, snap_np::repair_flips), defaults.repair_flips);
+    options.minimal_change = choose_parameter(get_parameter(np, snap_np::minimal_change), defaults.minimal_change);
     options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),
@@ -80,6 +90,7 @@ struct Snap_inputs
   bool seam_of(edge_descriptor e) const { return bool(get(seams, e)); }
   int rotation_of(halfedge_descriptor h) const { return int(get(rotations, h)); }
   bool constrained_of(edge_descriptor e) const { return bool(get(constrained, e)); }
+  double weight_of(vertex_descriptor v) const { return double(get(weights, v)); }
 };
 
 } // namespace internal

@@ -14,8 +14,12 @@
 //   1. extract   corner mesh, cut edges, sectors, cones, rotations k, align edges,
 //                the full system of rows                        (Sec. 5, 5.1)   extract_seams, build_constraints
 //   2. reduce    nodes, branches, node system C                  (Sec. 5.3)      reduce_stage
+//   3a. spread   the L2-closest point of the FULL system, in floating point     least_squares_stage
+//                (all constrained sectors move, weighted; beyond Sec. 4.2)
 //   3. project   C through Exact_constraint_projection on F_delta (Sec. 4)       project_stage
+//                starting from the point of 3a, not from ubar
 //   4. propagate non-node sectors along the branches              (Sec. 5.3.1)   project_node_system
+//                also from the point of 3a: the exact result stays within grid rounding of it
 //   5. repair    flipped/degenerate triangles: group and node moves, exactly (Sec. 5.4, 7)   repair_stage
 //   6. verify    every row of the full system, exactly (Gmpq), before anything is written   verify_stage
 //   7. write     the corners of the changed sectors into the caller's map                   write_stage
@@ -35,6 +39,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
+#include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
 #include <CGAL/Seamless_snapping/internal/surface/flip_repair.h>
 #include <CGAL/Seamless_snapping/internal/surface/propagation.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
@@ -68,6 +73,7 @@ struct Snap_options
   double alignment_tolerance = 1e-3;   // degrees
   double rotation_tolerance = 1;       // degrees
   bool repair_flips = true;            // Sec. 5.4: move one vertex of a flipped triangle into its 1-ring kernel
+  bool minimal_change = true;          // step 3a: snap the L2-closest point of the full system instead of ubar
   std::vector<Connection_path> connections;  // connection (Eq. 6) and cycle (Eq. 8) constraints
 };
 
@@ -100,8 +106,8 @@ inline void used_variables(const Constraint_rows& rows, std::size_t n_vars, std:
 // Projects x onto {C x = b} for the rows `rows` (over sector variables, b = rows.rhs) with the core,
 // on `grid` (the addendum's Eq. 2' when b != 0).
 // Writes the constrained variables of x (others untouched).
-inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& grid, std::vector<double>& x,
-                           Snap_report& report, std::string& message)
+inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& grid, bool minimal_change,
+                           std::vector<double>& x, Snap_report& report, std::string& message)
 {
   std::vector<int> vars, column_of;
   used_variables(rows, x.size(), vars, column_of);
@@ -117,6 +123,8 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
 
   Projection_options options;
   options.delta_exponent = grid.K;
+  options.minimal_change = minimal_change;   // x is the L2-closest point of the full system (step 3a): the
+                                             // core's own projection only refines how it is rounded
   Exact_constraint_projection projection(options);
   Status s = projection.initialize(rows.size(), vars.size(), triplets, rows.rhs);
   const Irref_statistics& stats = projection.statistics();
@@ -165,9 +173,12 @@ struct Snap_state
   std::size_t first_connection_row = 0;
   std::vector<char> path_endpoints;      // vertices that end a connection/cycle path (become nodes)
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
+  std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   // 2. reduce
   Reduced_system rs;
+  // 3a. the floating-point L2-closest point of the full system (= ubar without minimal_change)
+  std::vector<double> start;
   // 3.-5. project, propagate, repair
   std::vector<double> x;                 // the result, one value per sector variable
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
@@ -254,6 +265,22 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   return SUCCESS;
 }
 
+// 1c. the weights of step 3a, per vertex: positive and finite
+template <class TriangleMesh, class WeightOf>
+Status read_vertex_weights(const WeightOf& weight_of, Snap_state<TriangleMesh>& S, std::string& message)
+{
+  S.vertex_weights.resize(S.desc.vertices.size());
+  for(std::size_t v = 0; v < S.desc.vertices.size(); ++v) {
+    S.vertex_weights[v] = double(weight_of(S.desc.vertices[v]));
+    if(!(std::isfinite(S.vertex_weights[v]) && S.vertex_weights[v] > 0)) {
+      message = "vertex_weight_map: the weight of vertex " + std::to_string(v) + " is " +
+                format_double(S.vertex_weights[v], 17) + ", not a positive finite number";
+      return INVALID_INPUT;
+    }
+  }
+  return SUCCESS;
+}
+
 // 2. nodes, branches and the node system (Sec. 5.3), connection rows reduced to node variables
 template <class TriangleMesh>
 Status reduce_stage(Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
@@ -267,22 +294,59 @@ Status reduce_stage(Snap_state<TriangleMesh>& S, Snap_report& report, std::strin
   return SUCCESS;
 }
 
-// 3.+4. the node system through the core on `S.grid`, then the non-node sectors along the branches
-// (Sec. 5.3.1). Node sectors used by the propagation but absent from C (e.g. the node of a closed
-// loop, whose node rows cancel) are free: rounded to the grid.
+// 3a. y = argmin sum_s w_s |u_s - ubar_s|^2 s.t. every row of the full system (Eq. 4, 5, 6-8), in
+// floating point (least_squares_projection.h); w_s = the weight of the sector's vertex. Only values
+// change: the cut graph, the sectors and the rotations stay those of the input.
 template <class TriangleMesh>
-Status project_node_system(Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+Status least_squares_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  S.start = S.st.ubar;
+  if(!opt.minimal_change || S.full.size() == 0) return SUCCESS;
+  const Snap_clock::time_point t = Snap_clock::now();
+  const std::vector<int>& vars = S.constrained_vars;
+  std::vector<int> column_of(S.start.size(), -1);
+  for(std::size_t j = 0; j < vars.size(); ++j) column_of[vars[j]] = int(j);
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(S.full.col.size());
+  for(std::size_t i = 0; i < S.full.size(); ++i)
+    for(std::size_t k = S.full.start[i]; k < S.full.start[i + 1]; ++k)
+      entries.emplace_back(int(i), column_of[S.full.col[k]], double(S.full.coef[k]));
+  Least_squares_projection::Matrix C(Eigen::Index(S.full.size()), Eigen::Index(vars.size()));
+  C.setFromTriplets(entries.begin(), entries.end());
+  std::vector<double> weights;
+  if(!S.vertex_weights.empty()) {
+    std::vector<double> sector_weight(S.st.n_sectors, 1.);
+    for(int h = 0; h < S.cm.n_halfedges; ++h)
+      if(S.st.sector_of[h] >= 0) sector_weight[S.st.sector_of[h]] = S.vertex_weights[S.cm.target[h]];
+    for(int v : vars) weights.push_back(sector_weight[v / 2]);
+  }
+  Least_squares_projection ls;
+  Status s = ls.initialize(C, weights, message);
+  if(s != SUCCESS) { message = "minimal-change projection: " + message; return s; }
+  std::vector<double> xbar(vars.size()), y;
+  for(std::size_t j = 0; j < vars.size(); ++j) xbar[j] = S.st.ubar[vars[j]];
+  ls.project(std::vector<double>(S.full.size(), 0.), xbar, y);
+  for(std::size_t j = 0; j < vars.size(); ++j) S.start[vars[j]] = y[j];
+  report.least_squares_ms = ms_since(t);
+  return SUCCESS;
+}
+
+// 3.+4. the node system through the core on `S.grid`, then the non-node sectors along the branches
+// (Sec. 5.3.1), both from S.start. Node sectors used by the propagation but absent from C (e.g. the
+// node of a closed loop, whose node rows cancel) are free: rounded to the grid.
+template <class TriangleMesh>
+Status project_node_system(Snap_state<TriangleMesh>& S, bool minimal_change, Snap_report& report, std::string& message)
 {
   const Reduced_system& rs = S.rs;
-  const std::vector<double>& ubar = S.st.ubar;
-  Status s = project_rows(rs.node_rows, S.grid, S.x, report, message);
+  const std::vector<double>& start = S.start;
+  Status s = project_rows(rs.node_rows, S.grid, minimal_change, S.x, report, message);
   if(s != SUCCESS) { message = "node system: " + message; return s; }
   std::vector<int> node_vars, node_column_of;
   used_variables(rs.node_rows, S.x.size(), node_vars, node_column_of);
   int off_grid = -1;    // a free node variable whose input is outside (-delta, delta)
   auto fix_free_node_var = [&](int var) {
     if(node_column_of[var] >= 0 || node_column_of[var] == -2) return;
-    S.x[var] = S.grid.round(ubar[var]);
+    S.x[var] = S.grid.round(start[var]);
     node_column_of[var] = -2;
     if(off_grid < 0 && !S.grid.contains(S.x[var])) off_grid = var;
   };
@@ -291,13 +355,13 @@ Status project_node_system(Snap_state<TriangleMesh>& S, Snap_report& report, std
   for(const Align_branch_plan& p : rs.align_branches) fix_free_node_var(2 * p.u0 + p.component);
   if(off_grid >= 0) {
     message = "node sector " + std::to_string(off_grid / 2) + " (vertex " + std::to_string(S.st.sector_vertex(S.cm, off_grid / 2)) +
-              ") is in no row of the node system, and its input value " + format_double(S.cm.to_uv(ubar[off_grid]), 17) +
+              ") is in no row of the node system, and its input value " + format_double(S.cm.to_uv(start[off_grid]), 17) +
               " (UV units) lies outside the fixed-point range (-delta, delta) of the constrained values, delta = 2^" +
               std::to_string(S.grid.K);
     return RANGE_EXCEEDED;
   }
   const Snap_clock::time_point t = Snap_clock::now();
-  s = propagate_along_branches(rs, ubar, S.grid, S.x, message);
+  s = propagate_along_branches(rs, start, S.grid, S.x, message, minimal_change);
   report.propagate_ms = ms_since(t);
   if(s != SUCCESS) message = "propagation: " + message;
   return s;
@@ -327,10 +391,12 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
       message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
     return st;
   };
+  s = least_squares_stage(opt, S, report, message);
+  if(s != SUCCESS) return s;
   for(int retry = 0;; ++retry) {
-    S.x = S.st.ubar;
-    s = opt.use_reduced_system ? project_node_system(S, report, message)
-                               : project_rows(S.full, S.grid, S.x, report, message);
+    S.x = S.start;
+    s = opt.use_reduced_system ? project_node_system(S, opt.minimal_change, report, message)
+                               : project_rows(S.full, S.grid, opt.minimal_change, S.x, report, message);
     if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
     if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
     S.grid = Fixed_point_grid(S.grid.K + 4);
@@ -452,10 +518,11 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
 // The pipeline: the stages above in order; the caller's map is written only after step 6 passed.
 // The overrides are given per edge/halfedge descriptor through callables, evaluated after the
 // corner mesh is built (they need its numbering).
-template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
+template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf, class WeightOf>
 Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
                           const RotationOf& rotation_of, bool has_rotations,
-                          const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt)
+                          const ConstrainedOf& constrained_of, bool has_constrained,
+                          const WeightOf& weight_of, bool has_weights, const Snap_options& opt)
 {
   const Snap_clock::time_point t_start = Snap_clock::now();
   Snap_report report;
@@ -475,6 +542,7 @@ Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Sea
   Status s = extract_seams(tm, uvmap, seam_of, has_seams, rotation_of, has_rotations, constrained_of, has_constrained,
                            opt, S, report, message);
   if(s == SUCCESS) s = build_constraints(opt, S, report, message);
+  if(s == SUCCESS && has_weights) s = read_vertex_weights(weight_of, S, message);
   if(s != SUCCESS) return finish(s, message);
   report.extract_ms = ms_since(t);
 
