@@ -202,15 +202,6 @@ static int change_study(const std::vector<fs::path>& files)
       ++failures;
       continue;
     }
-    { // TEMP experiment: rounding floor
-      std::vector<double> r(sys.ubar.size()); std::vector<char> used(sys.ubar.size(), 0);
-      for(auto& row : sys.rows) for(int c : row.col) used[c] = 1;
-      for(std::size_t i = 0; i < r.size(); ++i) { double v = sys.ubar[i] + opt.d[i]; r[i] = used[i] ? std::nearbyint(v / sys.quantum) * sys.quantum : sys.ubar[i]; }
-      LR::Comparison c = LR::compare(opt, sys.ubar, r, sys.quantum);
-      std::vector<double> r2(r); for(std::size_t i = 0; i < r.size(); ++i) if(used[i]) r2[i] = std::nearbyint((sys.ubar[i] + opt.d[i]) / (0.5 * sys.quantum)) * 0.5 * sys.quantum;
-      LR::Comparison c2 = LR::compare(opt, sys.ubar, r2, sys.quantum);
-      std::printf("  floor: round(u*) L2 %.4f, half-quantum %.4f\n", c.ratio_l2, c2.ratio_l2);
-    }
     const bool ok = LR::meets_target(opt, cmp[1], sys.quantum);
     if(opt.l2 > 0) ratios.push_back(cmp[1].ratio_l2);
     std::printf("%-36s %9.3g %9.2e | %8.3f %8.3f %7.1f %5zu | %8.4f %8.4f %7.1f %5zu %8.2f | %6s\n",
