@@ -432,7 +432,7 @@ static void test_right_hand_sides()
     SS::Snap_report report;
     std::string message;
     const SI::Fixed_point_grid grid = SI::Fixed_point_grid::from_max_abs(5 * scale, 1);
-    assert(SI::project_rows(rows, grid, y, report, message) == SS::SUCCESS);
+    assert(SI::project_rows(rows, grid, false, y, report, message) == SS::SUCCESS);
     assert(y[0] == 5 * scale && y[2] == 2 * scale && y[1] == 0.25);   // C y = b exactly; x1 is in no row
   }
   std::cout << "right-hand sides: OK\n";
