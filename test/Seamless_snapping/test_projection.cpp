@@ -18,6 +18,8 @@
 //     (rank cross-checked mod p)
 //  2. adversarial doubling chain (coefficients 2^N): Gmpz for N >= 70, exact or a clear failure;
 //     force_multiprecision gives the identical x
+// 2b. wide range: doubling chain y_i = x_i, x_{i+1} = x_i + y_i (N = 100, 300) within 4x of the exact
+//     L2 optimum and not flagged; exactly feasible input bit-identical
 //  3. b != 0 (addendum Eq. 2'), infeasible systems, invalid input, atomicity of failures
 //  4. determinism: explicit zeros, cancelled duplicates, triplet order, Eigen vs triplet input,
 //     repeated projection, scale covariance by powers of two
@@ -255,11 +257,13 @@ void test_coefficient_growth()
       else assert(o.status() == SS::RANGE_EXCEEDED || o.status() == SS::SAFE_DOT_FAILED);  // b = 0: never infeasible
       std::size_t nonzero = 0;
       if(o.status() == SS::SUCCESS) for(std::size_t j = 0; j + 1 < s.n; ++j) nonzero += (o.x[j] != 0);
+      // y = (2^N + 1) t is a double only for t = 0 when N > 52: the chain collapses, and that is flagged
+      if(o.status() == SS::SUCCESS && nonzero == 0) assert(o.report.large_change);
       std::cout << "doubling N=" << N << " noise=" << noise << ": " << describe(o)
                 << (o.status() == SS::SUCCESS ? ", exact" : "") << ", " << o.stats.integer_type()
                 << " max|coef|~2^" << std::log2(o.stats.max_abs_coefficient_double)
                 << " free=" << o.stats.free_variables << " nonzero outputs=" << nonzero << "/" << s.n - 1
-                << " max|x-xbar|=" << o.report.max_abs_change << std::endl;
+                << " max|x-xbar|=" << o.report.max_abs_change << (o.report.large_change ? " (large change flagged)" : "") << std::endl;
     }
   }
   // the same coefficient growth, shuffled among the rows of a seamless system
@@ -533,6 +537,73 @@ void test_determinism()
     options.delta_exponent = K;
     const Outcome o = run(s, xbar, options);
     assert(o.status() == SS::RANGE_EXCEEDED && o.report.message.find("outside the range of double grids") != std::string::npos);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2b. variables over many binary orders of magnitude: the doubling chain y_i = x_i,
+//     x_{i+1} = x_i + y_i (i < N, rows of +-1), 2N + 1 variables, solution x_i = y_i = 2^i t.
+//     With x̄_i ~ 2^(i-N), x_0 lies ~2^-N below the largest value: on one grid F_delta it is below the
+//     quantum and the whole chain rounds to 0 (the common grid's result is printed). Asserted:
+//     SUCCESS, every row exact in Gmpq, ||x - x̄||_2 <= 4 ||x* - x̄||_2 with x* the exact L2 optimum
+//     (the solution space is the line t v: t* = <x̄, v> / <v, v> in Gmpq), not flagged as a large
+//     change; and an exactly feasible x̄ of this kind comes back bit-identical.
+Linear_system doubling_sum_chain(int N)
+{
+  std::vector<std::vector<std::pair<long, long>>> rows;     // x_i: column i (0..N), y_i: column N + 1 + i
+  for(int i = 0; i < N; ++i) {
+    rows.push_back({ { long(i), -1 }, { long(N) + 1 + i, 1 } });                       // y_i - x_i = 0
+    rows.push_back({ { long(i), -1 }, { long(i) + 1, 1 }, { long(N) + 1 + i, -1 } });   // x_{i+1} - x_i - y_i = 0
+  }
+  return small_system(2 * std::size_t(N) + 1, rows, std::vector<long>(rows.size(), 0));
+}
+
+void test_wide_range()
+{
+  std::cout << "== 2b. wide range (doubling chain y_i = x_i, x_{i+1} = x_i + y_i): near the L2 optimum, or flagged" << std::endl;
+  for(int N : { 100, 300 }) {
+    const Linear_system s = doubling_sum_chain(N);
+    std::vector<CGAL::Gmpq> v(s.n);                        // the solution line's direction, 2^(i-N)
+    for(int i = 0; i <= N; ++i) v[std::size_t(i)] = CGAL::Gmpq(std::ldexp(1., i - N));
+    for(int i = 0; i < N; ++i) v[std::size_t(N + 1 + i)] = v[std::size_t(i)];
+    for(std::uint64_t seed : { 1, 2, 3 }) {
+      SS_test::Rng rng{seed};
+      const double t = 0.7 + 0.1 * double(seed);
+      std::vector<double> xbar(s.n);
+      for(std::size_t j = 0; j < s.n; ++j) xbar[j] = CGAL::to_double(v[j]) * t * (1. + 1e-12 * rng.symmetric());
+      const Outcome o = run(s, xbar);
+      check_success(s, xbar, o);
+      CGAL::Gmpq vx(0), vv(0);
+      for(std::size_t j = 0; j < s.n; ++j) { vx += v[j] * CGAL::Gmpq(xbar[j]); vv += v[j] * v[j]; }
+      const CGAL::Gmpq ts = vx / vv;
+      CGAL::Gmpq d_opt(0);
+      for(std::size_t j = 0; j < s.n; ++j) { const CGAL::Gmpq e = ts * v[j] - CGAL::Gmpq(xbar[j]); d_opt += e * e; }
+      const CGAL::Gmpq d_ours = SS_test::exact_squared_distance(o.x, xbar);
+      assert(d_ours >= d_opt);
+      assert(d_ours <= CGAL::Gmpq(16) * d_opt);
+      assert(!o.report.large_change);
+      SS::Projection_options one_grid;                    // the common grid alone, for comparison
+      one_grid.delta_exponent = SS::internal::Fixed_point_grid::exponent_of(max_abs(xbar)) + 1;
+      const Outcome g = run(s, xbar, one_grid);
+      check_success(s, xbar, g);
+      std::size_t zeros = 0;
+      for(double a : g.x) zeros += (a == 0);
+      std::cout << "N=" << N << " seed " << seed << ": ||x - x̄||_2 / ||x* - x̄||_2 = " << std::sqrt(CGAL::to_double(d_ours / d_opt))
+                << " (||x* - x̄||_2 = " << std::sqrt(CGAL::to_double(d_opt)) << ", max|x - x̄| = " << o.report.max_abs_change
+                << ", input violation " << o.report.input_violation << ", per-row grids " << o.report.per_row_grids
+                << "); one grid F_delta: max|x - x̄| = " << g.report.max_abs_change << ", " << zeros << "/" << s.n
+                << " zeros, large change " << (g.report.large_change ? "flagged" : "NOT flagged") << std::endl;
+      assert(g.report.large_change == (g.report.max_abs_change > SS::Projection_report::large_change_factor * g.report.input_violation));
+    }
+    // exactly feasible: x_i = y_i = 2^(i-N) t in doubles
+    std::vector<double> exact(s.n);
+    for(std::size_t j = 0; j < s.n; ++j) exact[j] = CGAL::to_double(v[j]) * 0.7;
+    assert(SS_test::exactly_satisfied(s, exact));
+    const Outcome e = run(s, exact);
+    check_success(s, exact, e);
+    assert(bit_identical(e.x, exact));
+    assert(!e.report.large_change);
+    std::cout << "N=" << N << " exactly feasible x̄: bit-identical, input violation " << e.report.input_violation << std::endl;
   }
 }
 
@@ -830,6 +901,7 @@ int main()
   test_status_names();
   test_inhomogeneous_and_invalid();
   test_coefficient_growth();
+  test_wide_range();
   test_determinism();
   test_generated_systems();
   test_qp_reference();

@@ -55,6 +55,12 @@ namespace Seamless_snapping {
  *   particular solution of the per-row divisibility congruences, addendum Eq. 2'), implied variables
  *   by the safe dot product (Alg. 5), and a final exact integer check of every row of the
  *   *original* `C` before `x` is written.
+ * - Wide-range systems (b = 0): when the result on the common grid changes x̄ by much more than x̄
+ *   violates `C x = b` (`Projection_report::large_change`, e.g. a doubling chain whose smallest
+ *   values lie below the grid quantum and round to 0), or the common grid has no room (`RANGE_EXCEEDED`),
+ *   `project()` also evaluates with one quantum per IRREF row (the result is then an exact double
+ *   solution near x̄ of the kind Addendum A allows, when one exists) and keeps it if it passes the same
+ *   exact check of every row and changes x̄ less (`Projection_report::per_row_grids`).
  *
  * Shapes and units: `C` is m × n with integer entries (one row per constraint); `b` has m integer
  * entries; x̄ and `x` have n doubles, in the units of the caller (UV units for parametrizations).

@@ -94,6 +94,21 @@ struct Projection_report
                                    ///< and was returned bit-identical)
   double max_abs_change = 0;       ///< max_i |x_i - x̄_i| (rounded to double)
   std::size_t changed_variables = 0; ///< number of i with x_i != x̄_i
+  /// max_i |C_i x̄ - b_i| / ||C_i||_2 over the rows of `C`: how far x̄ is from the solution space,
+  /// evaluated in double arithmetic (a diagnostic, not a proof; 0 for an exactly feasible x̄ up to rounding)
+  double input_violation = 0;
+  /// true when the change is huge relative to how far x̄ was from satisfying `C x = b`:
+  /// `max_abs_change > large_change_factor * input_violation` (with a zero violation, any change).
+  /// The result is still exact; it is just not a small correction of x̄ (e.g. values far below the
+  /// grid quantum of Sec. 4.3 were rounded to 0). See `large_change_factor`.
+  bool large_change = false;
+  /// the factor of `large_change`: 2^20
+  static constexpr double large_change_factor = 1048576.;
+  /// true when x comes from the evaluation with one quantum per IRREF row (b = 0 only), which is
+  /// tried when the common grid F_delta gives a `large_change` or `RANGE_EXCEEDED` and is kept only
+  /// if it is exact and changes x̄ less. Then `quantum` is the finest quantum used (every constrained
+  /// output is a multiple of it) and `delta_exponent`/`delta` describe the common grid tried first.
+  bool per_row_grids = false;
   double project_ms = 0;           ///< wall-clock time of `project()`
   double least_squares_ms = 0;     ///< part of it spent on the floating-point projection (`Projection_options::minimal_change`)
   bool minimal_change = false;     ///< true iff the floating-point projection of x̄ was snapped (not x̄ itself)

@@ -30,11 +30,13 @@
 #include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
 #include <CGAL/Seamless_snapping/internal/projection/irref.h>
 #include <CGAL/Seamless_snapping/internal/projection/rounding_refinement.h>
+#include <CGAL/Seamless_snapping/internal/projection/row_grids.h>
 #include <CGAL/Seamless_snapping/internal/projection/safe_dot.h>
 
 #include <CGAL/Gmpz.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -73,6 +75,39 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz
     if(Integer_ops<CGAL::Gmpz>::to_int64(cand, c) && c <= Z_MAX && c >= -Z_MAX) { z = c; return true; }
   }
   return false;
+}
+
+// The change x - x̄ of a successful projection, in the report.
+inline void report_success(const Integer_system& sys, const std::vector<double>& xbar, const std::vector<double>& out,
+                           Projection_report& report)
+{
+  report.max_abs_change = 0;
+  report.changed_variables = 0;
+  for(std::size_t i = 0; i < out.size(); ++i) {
+    if(out[i] != xbar[i]) ++report.changed_variables;
+    report.max_abs_change = std::max(report.max_abs_change, std::fabs(out[i] - xbar[i]));
+  }
+  report.status = SUCCESS;
+  report.message = "all " + std::to_string(sys.n_rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
+                   + " of " + std::to_string(out.size()) + " variables changed, by at most " + std::to_string(report.max_abs_change);
+}
+
+// max_i |C_i x̄ - b_i| / ||C_i||_2 in double arithmetic (Projection_report::input_violation)
+inline double scaled_input_violation(const Integer_system& sys, const std::vector<double>& xbar)
+{
+  const bool small = sys.fits_int64;
+  const std::vector<std::size_t>& ptr = small ? sys.rows64.ptr : sys.rowsz.ptr;
+  double worst = 0;
+  for(std::size_t i = 0; i < sys.n_rows; ++i) {
+    double r = small ? -double(sys.rows64.b[i]) : -CGAL::to_double(sys.rowsz.b[i]), norm2 = 0;
+    for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) {
+      const double c = small ? double(sys.rows64.e[q].val) : CGAL::to_double(sys.rowsz.e[q].val);
+      r += c * xbar[small ? sys.rows64.e[q].col : sys.rowsz.e[q].col];
+      norm2 += c * c;
+    }
+    if(norm2 > 0) worst = std::max(worst, std::fabs(r) / std::sqrt(norm2));
+  }
+  return worst;
 }
 
 // One attempt on a given grid. `refine`: minimal-change mode, xbar is the floating-point projection
@@ -282,35 +317,20 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
     }
   }
 
-  // -- report
-  report.max_abs_change = 0;
-  report.changed_variables = 0;
-  for(std::size_t i = 0; i < n; ++i) {
-    if(out[i] != xbar[i]) ++report.changed_variables;
-    report.max_abs_change = std::max(report.max_abs_change, std::fabs(out[i] - xbar[i]));
-  }
-  report.status = SUCCESS;
-  report.message = "all " + std::to_string(sys.n_rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
-                   + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change);
+  report_success(sys, xbar, out, report);
   x.swap(out);
 }
 
-// Alg. 3 driver: validates x̄, chooses the grid (Sec. 4.3) and evaluates. K = e(max |x̄_i|) +
-// margin over the constrained x̄ (the paper's choice). If that grid is too small for the solution
-// (RANGE_EXCEEDED) and b != 0, one more attempt uses K from max(|x̄_i|, |b̂_j / p_j|): the values the
-// implied variables take when the free ones are 0. A grid given in the options is used as is.
+// The common grid F_delta of Sec. 4.3: K = e(max |x̄_i|) + margin over the constrained x̄ (the
+// paper's choice). If that grid is too small for the solution (RANGE_EXCEEDED) and b != 0, one more
+// attempt uses K from max(|x̄_i|, |b̂_j / p_j|): the values the implied variables take when the free
+// ones are 0.
 template <typename Int>
-void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
-              const Projection_options& options, std::vector<double>& x, Projection_report& report)
+void evaluate_on_common_grid(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
+                             const Projection_options& options, std::vector<double>& x, Projection_report& report)
 {
   typedef Integer_ops<Int> Ops;
-  for(std::size_t i = 0; i < xbar.size(); ++i)
-    if(!std::isfinite(xbar[i])) {
-      report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite";
-      return;
-    }
   const bool refine = options.minimal_change;
-  if(options.delta_exponent) { evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report, refine); return; }
   double max_x = 0, max_b = 0;
   for(std::size_t i = 0; i < ir.n_cols; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_x = std::max(max_x, std::fabs(xbar[i]));
   for(std::size_t j = 0; j < ir.rank(); ++j)
@@ -325,6 +345,53 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
   evaluate_on_grid(ir, sys, xbar, g2, x, second, refine);
   if(second.status == SUCCESS) report = second;
   else report.message += " (also with delta = 2^" + std::to_string(g2.K) + " from |b̂_j / p_j|: " + second.message + ")";
+}
+
+// Alg. 3 driver: validates x̄, evaluates on the common grid (given in the options, or chosen from x̄),
+// and flags a change that is huge relative to the input's violation (Projection_report::large_change).
+// Without a given grid, b = 0, and a large change or RANGE_EXCEEDED, the evaluation with one quantum
+// per IRREF row (row_grids.h) is tried, and kept if it is exact and changes x̄ less.
+template <typename Int>
+void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
+              const Projection_options& options, std::vector<double>& x, Projection_report& report)
+{
+  for(std::size_t i = 0; i < xbar.size(); ++i)
+    if(!std::isfinite(xbar[i])) {
+      report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite";
+      return;
+    }
+  report.input_violation = scaled_input_violation(sys, xbar);
+  auto flag = [&](Projection_report& r) {
+    r.input_violation = report.input_violation;
+    r.large_change = r.status == SUCCESS && r.max_abs_change > Projection_report::large_change_factor * r.input_violation;
+  };
+  if(options.delta_exponent) {
+    evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report, options.minimal_change);
+    flag(report);
+    return;
+  }
+  evaluate_on_common_grid(ir, sys, xbar, options, x, report);
+  flag(report);
+  // a large change or no room on one grid: one quantum per IRREF row (b = 0, row_grids.h), kept if
+  // it is exact and moves x̄ less
+  if(!ir.homogeneous || !(report.large_change || report.status == RANGE_EXCEEDED)) return;
+  for(int margin : { 0, 2 }) {
+    std::vector<double> y;
+    int finest = 0;
+    if(!evaluate_on_row_grids(ir, sys, xbar, margin, y, finest)) continue;
+    Projection_report r;
+    report_success(sys, xbar, y, r);
+    if(report.status == SUCCESS && !(r.max_abs_change < report.max_abs_change)) return;
+    r.delta_exponent = report.delta_exponent; r.delta = report.delta;
+    r.quantum = finest == INT_MAX ? report.quantum : std::ldexp(1., finest);
+    r.per_row_grids = true;
+    r.message += " (one grid per IRREF row: the common grid F_delta " + std::string(report.status == SUCCESS
+                 ? "changed x̄ by " + std::to_string(report.max_abs_change) : "failed: " + report.message) + ")";
+    flag(r);
+    report = r;
+    x.swap(y);
+    return;
+  }
 }
 
 } // namespace internal
