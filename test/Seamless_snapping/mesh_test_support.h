@@ -46,6 +46,7 @@ typedef Mesh::Edge_index                                       edge_descriptor;
 typedef Mesh::Property_map<halfedge_descriptor, Point_2>       UV_map;   // uv[h] = UV of target(h) in face(h)
 
 namespace SS = CGAL::Seamless_snapping;
+namespace CGAL { namespace Surface_mesh_parameterization {} }   // declared, for the alias, without its headers
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
 

@@ -29,12 +29,10 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 
 #include "generators.h"
+#include "qp_reference.h"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Gmpz.h>
-#include <CGAL/Gmpzf.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 
 #include <Eigen/Sparse>
 
@@ -632,16 +630,12 @@ const double MIN_BOUND = 1.1;
 
 std::vector<CGAL::Gmpq> qp_optimum(const Linear_system& s, const std::vector<double>& xbar)
 {
-  CGAL::Quadratic_program<double> qp(CGAL::EQUAL, false, 0, false, 0);   // equalities, free variables
-  for(const Triplet& t : s.triplets) qp.set_a(int(t.col()), int(t.row()), double(t.value()));  // (variable, row)
-  for(std::size_t i = 0; i < s.m; ++i) qp.set_b(int(i), double(s.b[i]));
-  for(std::size_t j = 0; j < s.n; ++j) { qp.set_d(int(j), int(j), 2.); qp.set_c(int(j), -2. * xbar[j]); }
-  CGAL::Quadratic_program_solution<CGAL::Gmpzf> sol = CGAL::solve_quadratic_program(qp, CGAL::Gmpzf());
-  assert(sol.is_optimal());
+  std::vector<SS_test::Qp_entry> C;
+  for(const Triplet& t : s.triplets) C.push_back({ std::size_t(t.row()), std::size_t(t.col()), long(t.value()) });
   std::vector<CGAL::Gmpq> x;
-  for(auto it = sol.variable_values_begin(); it != sol.variable_values_end(); ++it)
-    x.push_back(CGAL::Gmpq(it->numerator()) / CGAL::Gmpq(it->denominator()));    // exact
-  assert(x.size() == s.n);
+  const bool optimal = SS_test::l2_optimum_qp(s.m, s.n, C, s.b, xbar, x);
+  assert(optimal);
+  (void)optimal;
   return x;
 }
 

@@ -32,9 +32,6 @@
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include <CGAL/Gmpq.h>
-#include <CGAL/Gmpzf.h>
-#include <CGAL/QP_functions.h>
-#include <CGAL/QP_models.h>
 
 #include <algorithm>
 #include <cassert>
@@ -53,6 +50,7 @@
 
 #include "mesh_test_support.h"
 #include "l2_optimum_reference.h"
+#include "qp_reference.h"
 
 
 
@@ -676,19 +674,6 @@ static void test_orbifolds()
 // ---------------------------------------------------------------------------------------------
 // snap: node system vs exact optimum (CGAL QP solver)
 // ---------------------------------------------------------------------------------------------
-static CGAL::Gmpq to_gmpq(const CGAL::Quotient<CGAL::Gmpzf>& q)
-{
-  auto zf = [](const CGAL::Gmpzf& z) {
-    CGAL::Gmpq m(z.man());
-    const long e = z.exp();
-    CGAL::Gmpq p(1);
-    CGAL::Gmpq two(e >= 0 ? 2 : 1, e >= 0 ? 1 : 2);
-    for(long i = 0; i < (e >= 0 ? e : -e); ++i) p *= two;
-    return m * p;
-  };
-  return zf(q.numerator()) / zf(q.denominator());
-}
-
 static void test_node_system_vs_qp()
 {
   if(std::string(SS_SHARED_DATA_DIR).empty()) { std::cout << "snap: node system vs QP: SKIPPED (no data)\n"; return; }
@@ -729,20 +714,17 @@ static void test_node_system_vs_qp()
     assert(s == SS::SUCCESS);
 
     // QP: min ||y - xbar||^2 s.t. C y = 0 over the node-system columns
-    CGAL::Quadratic_program<double> qp(CGAL::EQUAL, false, 0, false, 0);
-    for(std::size_t i = 0; i < rs.node_rows.size(); ++i) {
+    std::vector<SS_test::Qp_entry> C;
+    for(std::size_t i = 0; i < rs.node_rows.size(); ++i)
       for(std::size_t k = rs.node_rows.start[i]; k < rs.node_rows.start[i + 1]; ++k)
-        qp.set_a(column_of[rs.node_rows.col[k]], int(i), double(rs.node_rows.coef[k]));
-      qp.set_b(int(i), 0.);
-    }
-    for(std::size_t j = 0; j < vars.size(); ++j) { qp.set_d(int(j), int(j), 2.); qp.set_c(int(j), -2. * st.ubar[vars[j]]); }
+        C.push_back({ i, std::size_t(column_of[rs.node_rows.col[k]]), long(rs.node_rows.coef[k]) });
+    std::vector<double> xbar_nodes(vars.size());
+    for(std::size_t j = 0; j < vars.size(); ++j) xbar_nodes[j] = st.ubar[vars[j]];
     auto t0 = std::chrono::steady_clock::now();
-    CGAL::Quadratic_program_solution<CGAL::Gmpzf> sol = CGAL::solve_quadratic_program(qp, CGAL::Gmpzf());
-    const double qp_ms = ms_since(t0);
-    assert(sol.is_optimal());
     std::vector<CGAL::Gmpq> y;
-    for(auto it = sol.variable_values_begin(); it != sol.variable_values_end(); ++it) y.push_back(to_gmpq(*it));
-    assert(y.size() == vars.size());
+    const bool optimal = SS_test::l2_optimum_qp(rs.node_rows.size(), vars.size(), C, std::vector<long>(rs.node_rows.size(), 0), xbar_nodes, y);
+    const double qp_ms = ms_since(t0);
+    assert(optimal);
     CGAL::Gmpq d_opt(0), d_ours(0), d_min(0);
     for(std::size_t j = 0; j < vars.size(); ++j) {
       const CGAL::Gmpq xb(st.ubar[vars[j]]);
