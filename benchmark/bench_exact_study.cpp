@@ -30,6 +30,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/internal/surface/snap_pipeline.h>
 
+#include "obj_inputs.h"
 #include "../test/Seamless_snapping/mesh_test_support.h"
 #include "../test/Seamless_snapping/qp_reference.h"
 
@@ -216,24 +217,8 @@ int main(int argc, char** argv)
     if(std::strcmp(argv[i], "--qp-max-columns") == 0 && i + 1 < argc) { qp_max_columns = std::size_t(std::atol(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
-  if(inputs.empty()) {
-    const char* env = std::getenv("SS_SHARED_DATA_DIR");
-    if(env == nullptr) {
-      std::cerr << "usage: " << argv[0] << " [--qp-seconds S] [--qp-max-columns N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)\n";
-      return EXIT_FAILURE;
-    }
-    inputs.emplace_back(env);
-  }
   std::vector<fs::path> files;
-  for(const fs::path& p : inputs) {
-    if(fs::is_directory(p)) {
-      for(const auto& e : fs::recursive_directory_iterator(p))
-        if(e.is_regular_file() && e.path().extension() == ".obj") files.push_back(e.path());
-    } else {
-      files.push_back(p);
-    }
-  }
-  std::sort(files.begin(), files.end());
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--qp-seconds S] [--qp-max-columns N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
 
   std::printf("QP: CGAL::solve_quadratic_program with Gmpzf, limit %d s of CPU time per model. Times: ms (CPU; QP < 100 ms: wall clock).\n"
               "Distances |x - x*| relative to the UV diagonal; max viol.: largest exact |C_i x| of the naive Eq. 2.\n", qp_seconds);

@@ -30,6 +30,7 @@
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
+#include "obj_inputs.h"
 #include "../test/Seamless_snapping/connection_test_utils.h"
 #include "../test/Seamless_snapping/l2_optimum_reference.h"
 
@@ -240,24 +241,8 @@ int main(int argc, char** argv)
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
-  if(inputs.empty()) {
-    const char* env = std::getenv("SS_SHARED_DATA_DIR");
-    if(env == nullptr) {
-      std::cerr << "usage: " << argv[0] << " [--repeat N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)\n";
-      return EXIT_FAILURE;
-    }
-    inputs.emplace_back(env);
-  }
   std::vector<fs::path> files;
-  for(const fs::path& p : inputs) {
-    if(fs::is_directory(p)) {
-      for(const auto& e : fs::recursive_directory_iterator(p))
-        if(e.is_regular_file() && e.path().extension() == ".obj") files.push_back(e.path());
-    } else {
-      files.push_back(p);
-    }
-  }
-  std::sort(files.begin(), files.end());
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
   if(connections) return connection_study(files, repeat);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
   if(change_only) return change_study(files);
