@@ -545,7 +545,7 @@ void test_determinism()
 //     quantum and the whole chain rounds to 0 (the common grid's result is printed). Asserted:
 //     SUCCESS, every row exact in Gmpq, ||x - x̄||_2 <= 4 ||x* - x̄||_2 with x* the exact L2 optimum
 //     (the solution space is the line t v: t* = <x̄, v> / <v, v> in Gmpq), not flagged as a large
-//     change; and an exactly feasible x̄ of this kind comes back bit-identical.
+//     change; 2^j x̄ gives 2^j x bit for bit; and an exactly feasible x̄ of this kind comes back bit-identical.
 Linear_system doubling_sum_chain(int N)
 {
   std::vector<std::vector<std::pair<long, long>>> rows;     // x_i: column i (0..N), y_i: column N + 1 + i
@@ -592,6 +592,13 @@ void test_wide_range()
                 << "); one grid F_delta: max|x - x̄| = " << g.report.max_abs_change << ", " << zeros << "/" << s.n
                 << " zeros, large change " << (g.report.large_change ? "flagged" : "NOT flagged") << std::endl;
       assert(g.report.large_change == (g.report.max_abs_change > SS::Projection_report::large_change_factor * g.report.input_violation));
+      for(int j : { -300, 250 }) {                      // the per-row grids scale with x̄ by powers of two
+        std::vector<double> scaled(s.n);
+        for(std::size_t k = 0; k < s.n; ++k) scaled[k] = std::ldexp(xbar[k], j);
+        const Outcome sc = run(s, scaled);
+        check_success(s, scaled, sc);
+        for(std::size_t k = 0; k < s.n; ++k) assert(bit_identical(sc.x[k], std::ldexp(o.x[k], j)));
+      }
     }
     // exactly feasible: x_i = y_i = 2^(i-N) t in doubles
     std::vector<double> exact(s.n);
