@@ -104,10 +104,10 @@ std::size_t violated_rows(const I::Constraint_rows& rows, const std::vector<doub
   return bad;
 }
 
-// Eq. 2 in plain double arithmetic on the IRREF of [C | 0]
+// Eq. 2 in plain double arithmetic on the IRREF of [C | b]
 void naive_evaluation(const Node_system& ns, std::vector<double>& x, bool& ok)
 {
-  std::vector<long> b(ns.rows.size(), 0);
+  const std::vector<long>& b = ns.rows.rhs;
   I::Integer_system sys;
   std::string msg;
   ok = I::build_integer_system(ns.rows.size(), ns.n, b, [&](auto&& add) {
@@ -145,7 +145,7 @@ Qp_result solve_qp(const Node_system& ns, const std::vector<double>& ours)
       C.push_back({ i, std::size_t(ns.rows.col[k]), long(ns.rows.coef[k]) });
   std::vector<CGAL::Gmpq> xs;
   const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  r.optimal = SS_test::l2_optimum_qp(ns.rows.size(), ns.n, C, std::vector<long>(ns.rows.size(), 0), ns.xbar, xs);
+  r.optimal = SS_test::l2_optimum_qp(ns.rows.size(), ns.n, C, ns.rows.rhs, ns.xbar, xs);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();   // wall clock
   if(!r.optimal) return r;
   std::vector<double> rounded(ns.n);
@@ -238,7 +238,7 @@ int main(int argc, char** argv)
     std::vector<Eigen::Triplet<long> > triplets;
     for(std::size_t i = 0; i < ns.rows.size(); ++i)
       for(std::size_t k = ns.rows.start[i]; k < ns.rows.start[i + 1]; ++k) triplets.emplace_back(int(i), ns.rows.col[k], long(ns.rows.coef[k]));
-    const std::vector<long> b(ns.rows.size(), 0);
+    const std::vector<long>& b = ns.rows.rhs;
     std::vector<double> ours;
     double ours_ms = HUGE_VAL;
     SS::Status status = SS::SUCCESS;

@@ -722,7 +722,7 @@ static void test_node_system_vs_qp()
     for(std::size_t j = 0; j < vars.size(); ++j) xbar_nodes[j] = st.ubar[vars[j]];
     auto t0 = std::chrono::steady_clock::now();
     std::vector<CGAL::Gmpq> y;
-    const bool optimal = SS_test::l2_optimum_qp(rs.node_rows.size(), vars.size(), C, std::vector<long>(rs.node_rows.size(), 0), xbar_nodes, y);
+    const bool optimal = SS_test::l2_optimum_qp(rs.node_rows.size(), vars.size(), C, rs.node_rows.rhs, xbar_nodes, y);
     const double qp_ms = ms_since(t0);
     assert(optimal);
     CGAL::Gmpq d_opt(0), d_ours(0), d_min(0);
