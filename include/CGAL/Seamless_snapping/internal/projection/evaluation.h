@@ -374,7 +374,9 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
   flag(report);
   // a large change or no room on one grid: one quantum per IRREF row (b = 0, row_grids.h), kept if
   // it is exact and moves x̄ less
-  if(!ir.homogeneous || !(report.large_change || report.status == RANGE_EXCEEDED)) return;
+  // (not when the common grid itself lies outside the doubles: that refusal keeps the scale covariance)
+  if(!ir.homogeneous || !Fixed_point_grid(report.delta_exponent).in_range
+     || !(report.large_change || report.status == RANGE_EXCEEDED)) return;
   for(int margin : { 0, 2 }) {
     std::vector<double> y;
     int finest = 0;
