@@ -3,7 +3,7 @@
 # with one CTest run over three build directories, so that CTest's closing summary covers them all:
 #   $build        Release build (scripts/build.sh): tests compilation_of__*, execution___of__*, package_consumer
 #   $build/asan   the test executables with AddressSanitizer + UndefinedBehaviorSanitizer
-#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g1; surface tests in their --sanitizer-subset): sanitized__*
+#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g1; all but test_projection in their --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
 #                 60 s with a fixed seed on generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
 # Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves

@@ -19,6 +19,8 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 
+#include "test_arguments.h"
+
 #include <chrono>
 #include <cstdlib>
 #include <cstdint>
@@ -99,25 +101,6 @@ static inline bool load_shared_or_skip(const char* relative, const char* what, M
   return true;
 }
 
-// The sanitizer build (SEAMLESS_SNAPPING_SANITIZE) runs the surface tests with the argument
-// --sanitizer-subset: the loops over the shared data take only its files up to 600 kB, and main()
-// leaves out the slowest groups (ASan + UBSan make the code several times slower).
-static inline bool& sanitizer_subset()
-{
-  static bool on = false;
-  return on;
-}
-
-// reads the command line of a surface test: nothing, or --sanitizer-subset; exits on anything else
-static inline void parse_test_arguments(int argc, char** argv)
-{
-  for(int i = 1; i < argc; ++i) {
-    if(std::strcmp(argv[i], "--sanitizer-subset") == 0) sanitizer_subset() = true;
-    else { std::cerr << "usage: " << argv[0] << " [--sanitizer-subset]" << std::endl; std::exit(EXIT_FAILURE); }
-  }
-  if(sanitizer_subset()) std::cout << "sanitizer subset: shared data files up to 600 kB, slowest groups left out\n";
-}
-
 // Every .obj file below the shared data directory, sorted (under --sanitizer-subset only those up to
 // 600 kB); false (after a SKIPPED line naming `what`) when there is no shared data directory.
 static inline bool shared_obj_files_or_skip(const char* what, std::vector<fs::path>& files)
@@ -130,7 +113,7 @@ static inline bool shared_obj_files_or_skip(const char* what, std::vector<fs::pa
   files.clear();
   for(const auto& entry : fs::recursive_directory_iterator(dir))
     if(entry.is_regular_file() && entry.path().extension() == ".obj" &&
-       (!sanitizer_subset() || entry.file_size() <= 600 * 1000)) files.push_back(entry.path());
+       shared_data_file_in_subset(entry.file_size())) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return true;
 }
