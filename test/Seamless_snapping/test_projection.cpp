@@ -29,6 +29,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 
 #include "generators.h"
+#include "test_arguments.h"
 #include "qp_reference.h"
 
 #include <CGAL/Gmpq.h>
@@ -896,8 +897,9 @@ void test_eigen_vectors()
   std::cout << "same bits as std::vector; failure leaves the output untouched" << std::endl;
 }
 
-int main()
+int main(int argc, char** argv)
 {
+  parse_test_arguments(argc, argv);
   const Clock::time_point t0 = Clock::now();
   test_status_names();
   test_inhomogeneous_and_invalid();
@@ -905,7 +907,7 @@ int main()
   test_wide_range();
   test_determinism();
   test_generated_systems();
-  test_qp_reference();
+  if(!sanitizer_subset()) test_qp_reference();      // exact QP: minutes under ASan
   test_exact_input_unchanged();
   test_regressions();
   test_eigen_vectors();
