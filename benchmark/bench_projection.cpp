@@ -16,12 +16,14 @@
 //   bench_projection --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt]
 //                                        one system from files (Matrix Market coordinate, 1-based,
 //                                        integer or real entries with integral values; one number per line)
+//   bench_projection --real PATH ...     per-corner seam systems of OBJ files (PATH: a file or a directory of .obj;
+//                                        see real_seam_system()); x̄ = the file's UVs. Repeatable.
 //   --noise R                            relative noise of x̄ for generated systems (default 1e-9)
 //   --time-limit S                       skip the remaining sizes of a family once one took > S seconds (default 120)
 //   --repeat R                           run initialize + project R times per system (default 10; 3 from 100k
 //                                        rows; fewer once the runs of a system took 10 s)
 //
-// One row per system: m, n, nnz, rank, IRREF nnz (fill-in), max|coef| of the IRREF, integer type,
+// One row per system: m, n, nnz, rank, IRREF nnz (fill-in), eliminations (fraction-free row updates), max|coef| of the IRREF, integer type,
 // initialize ms, project ms and their total for the fastest of the R runs, the median total,
 // max |x - x̄|, and whether every row of C x = b holds exactly (each double converted exactly to
 // Gmpq, zero tolerance). Then the size of the change against the smallest exact change
@@ -39,17 +41,25 @@
 // about 15 ms for 20 000 rows and 1.7 s for 1 000 000 rows (initialize + project, one core).
 
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
+#include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 
 #include "../test/Seamless_snapping/generators.h"
 #include "../test/Seamless_snapping/l2_optimum_reference.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace SS = CGAL::Seamless_snapping;
@@ -64,12 +74,13 @@ struct Settings
   double time_limit_s = 120;
   int repeat = 0;                      // 0: 10 below 100k rows, else 3
   std::string write_dir, matrix, rhs, xbar, out;
+  std::vector<std::string> real;
 };
 
 void print_header()
 {
-  std::printf("%-36s %8s %8s %9s %8s %10s %6s %-5s %9s %10s %9s %9s %10s %9s %-6s %8s %8s %9s %s\n",
-              "system", "m", "n", "nnz", "rank", "irref_nnz", "fill", "int", "init_ms", "project_ms", "total_ms",
+  std::printf("%-36s %8s %8s %9s %8s %10s %6s %9s %-5s %9s %10s %9s %9s %10s %9s %-6s %8s %8s %9s %s\n",
+              "system", "m", "n", "nnz", "rank", "irref_nnz", "fill", "elim", "int", "init_ms", "project_ms", "total_ms",
               "median_ms", "max|x-x̄|", "max|coef|", "exact", "L2/opt", "paper", "opt(q)", "status");
 }
 
@@ -126,8 +137,8 @@ double bench(const Linear_system& s, const std::vector<double>& xbar, const Sett
     }
   }
   const double fill = s.triplets.empty() ? 0. : double(st.irref_nonzeros) / double(s.triplets.size());
-  std::printf("%-36s %8zu %8zu %9zu %8zu %10zu %6.2f %-5s %9.1f %10.1f %9.1f %9.1f %10.3g %9s %-6s %8s %8s %9s %s%s%s\n",
-              s.name.c_str(), s.m, s.n, s.triplets.size(), st.rank, st.irref_nonzeros, fill, st.integer_type(),
+  std::printf("%-36s %8zu %8zu %9zu %8zu %10zu %6.2f %9zu %-5s %9.1f %10.1f %9.1f %9.1f %10.3g %9s %-6s %8s %8s %9s %s%s%s\n",
+              s.name.c_str(), s.m, s.n, s.triplets.size(), st.rank, st.irref_nonzeros, fill, st.eliminations, st.integer_type(),
               st.initialize_ms, r.status == SS::SUCCESS ? r.project_ms : 0., total, median, r.status == SS::SUCCESS ? r.max_abs_change : 0.,
               short_coefficient(st.max_abs_coefficient).c_str(), exact, l2[0], l2[1], l2[2], SS::status_name(r.status),
               r.status == SS::SUCCESS ? "" : ": ", r.status == SS::SUCCESS ? "" : r.message.c_str());
@@ -168,10 +179,97 @@ int run_files(const Settings& set)
   return x.size() == s.n ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// The per-corner seam system of an OBJ file, as a generic solver sees it: one variable pair (u, v)
+// per `vt` of the file (columns 2t, 2t+1), and for each cut edge the two rows of Eq. 4,
+//   R^k (f_i(a) - f_i(b)) - (f_j(a) - f_j(b)) = 0,
+// with k the quarter turn that best maps the edge's UV vector in face i to the one in face j
+// (fitted per edge). A cut edge is an edge whose two faces use different vt at one of its ends, so
+// files with one vt per face corner (libQEx) have a cut edge at every edge, most of them with
+// identical UVs on both sides. Positions are welded when bit-identical (Directional's cut meshes
+// duplicate vertices along the seams: without it no seam is visible; elsewhere nothing changes),
+// vt are kept as in the file. x̄ = the file's UVs, b = 0.
+bool real_seam_system(const std::string& file, Linear_system& s, std::vector<double>& xbar, std::string& error)
+{
+  namespace IOi = SS::IO::internal;
+  IOi::Obj_soup soup;
+  std::ifstream is(file, std::ios::binary);
+  if(!is || IOi::parse_obj(is, soup, file, error) != SS::SUCCESS) { if(error.empty()) error = "cannot read " + file; return false; }
+  std::vector<std::size_t> rep(soup.points.size());
+  std::map<std::array<std::uint64_t, 3>, std::size_t> first;           // bit-identical positions
+  for(std::size_t i = 0; i < soup.points.size(); ++i) {
+    const std::array<double, 3>& p = soup.points[i];
+    rep[i] = first.emplace(std::array<std::uint64_t, 3>{IOi::double_bits(p[0]), IOi::double_bits(p[1]), IOi::double_bits(p[2])}, i).first->second;
+  }
+  s = Linear_system();
+  s.name = std::filesystem::path(file).stem().string();
+  s.n = 2 * soup.uvs.size();
+  xbar.resize(s.n);
+  for(std::size_t t = 0; t < soup.uvs.size(); ++t) { xbar[2 * t] = soup.uvs[t][0]; xbar[2 * t + 1] = soup.uvs[t][1]; }
+  std::unordered_map<std::uint64_t, std::size_t> open;                 // (a, b) -> face * 3 + corner of a -> b
+  for(std::size_t f = 0; f < soup.face_v.size(); ++f)
+    for(std::size_t c = 0; c < 3; ++c) {
+      const std::uint64_t a = rep[soup.face_v[f][c]], b = rep[soup.face_v[f][(c + 1) % 3]];
+      const auto other = open.find((b << 32) | a);
+      if(other == open.end()) { open.emplace((a << 32) | b, 3 * f + c); continue; }
+      const std::size_t g = other->second / 3, d = other->second % 3;   // face g runs b -> a
+      const std::size_t a1 = soup.face_vt[f][c], b1 = soup.face_vt[f][(c + 1) % 3];
+      const std::size_t b2 = soup.face_vt[g][d], a2 = soup.face_vt[g][(d + 1) % 3];
+      open.erase(other);
+      if(a1 == a2 && b1 == b2) continue;                                 // not a cut edge
+      const double d1[2] = { soup.uvs[a1][0] - soup.uvs[b1][0], soup.uvs[a1][1] - soup.uvs[b1][1] };
+      const double d2[2] = { soup.uvs[a2][0] - soup.uvs[b2][0], soup.uvs[a2][1] - soup.uvs[b2][1] };
+      int k = 0;
+      double best = -1;
+      for(int r = 0; r < 4; ++r) {
+        double x, y;
+        CGAL::Seamless_snapping::internal::rotate_quarter_turns(r, d1[0], d1[1], x, y);
+        const double dot = x * d2[0] + y * d2[1];
+        if(r == 0 || dot > best) { best = dot; k = r; }
+      }
+      const CGAL::Seamless_snapping::internal::Quarter_turn q(k);
+      for(int comp = 0; comp < 2; ++comp) {
+        const long row = long(s.m++);
+        s.triplets.emplace_back(row, long(2 * a1 + q.col[comp]), long(q.sign[comp]));
+        s.triplets.emplace_back(row, long(2 * b1 + q.col[comp]), long(-q.sign[comp]));
+        s.triplets.emplace_back(row, long(2 * a2 + comp), -1L);
+        s.triplets.emplace_back(row, long(2 * b2 + comp), 1L);
+      }
+    }
+  s.b.assign(s.m, 0);
+  SS_test::canonicalize(s);
+  return true;
+}
+
+int run_real(const Settings& set)
+{
+  std::vector<std::string> files;
+  for(const std::string& p : set.real) {
+    if(std::filesystem::is_directory(p)) {
+      std::vector<std::string> in_dir;
+      for(const auto& e : std::filesystem::directory_iterator(p))
+        if(e.path().extension() == ".obj") in_dir.push_back(e.path().string());
+      std::sort(in_dir.begin(), in_dir.end());
+      files.insert(files.end(), in_dir.begin(), in_dir.end());
+    } else files.push_back(p);
+  }
+  std::printf("per-corner seam systems (one variable pair per vt, Eq. 4 rows per cut edge, x̄ = the file's UVs)\n");
+  print_header();
+  int status = EXIT_SUCCESS;
+  for(const std::string& f : files) {
+    Linear_system s;
+    std::vector<double> xbar;
+    std::string error;
+    if(!real_seam_system(f, s, xbar, error)) { std::fprintf(stderr, "error: %s\n", error.c_str()); status = EXIT_FAILURE; continue; }
+    bench(s, xbar, set);
+  }
+  return status;
+}
+
 void usage(const char* prog)
 {
   std::fprintf(stderr, "usage: %s [--quick] [--no-check] [--noise R] [--time-limit S] [--repeat R] [--write-dir DIR]\n"
-                       "       %s --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt] [--no-check]\n", prog, prog);
+                       "       %s --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt] [--no-check]\n"
+                       "       %s --real FILE_OR_DIR [--real ...] [--repeat R] [--no-check]\n", prog, prog, prog);
 }
 
 } // namespace
@@ -195,10 +293,12 @@ int main(int argc, char** argv)
     else if(a == "--rhs") set.rhs = value();
     else if(a == "--xbar") set.xbar = value();
     else if(a == "--out") set.out = value();
+    else if(a == "--real") set.real.push_back(value());
     else if(a == "-h" || a == "--help") { usage(argv[0]); return EXIT_SUCCESS; }
     else { std::fprintf(stderr, "unknown option %s\n", a.c_str()); usage(argv[0]); return EXIT_FAILURE; }
   }
   if(!set.matrix.empty()) return run_files(set);
+  if(!set.real.empty()) return run_real(set);
 
   std::printf("Exact_constraint_projection benchmark (x̄ = exact solution + %.0e relative noise; exact = every row checked in Gmpq)\n",
               set.noise);
