@@ -25,6 +25,12 @@
 //     repeated projection, scale covariance by powers of two
 //  5. exact rational reference: the L2 optimum by CGAL's QP solver (Gmpzf), distances compared in Gmpq
 //  6. status names
+//  7. pivot order (fill-in): a per-corner seam system (one variable pair per corner, Eq. 4 rows for
+//     every edge, as in files with one vt per face corner) and a seamless-like system: the
+//     automatic choice, the pivot rule alone and the fill-reducing column order give the same rank;
+//     with COLAMD, the order fills in less than the pivot rule alone on the per-corner system and is
+//     what the automatic choice takes there, while on the seamless-like system the automatic choice
+//     is the pivot rule's IRREF, unchanged; the per-corner projection is SUCCESS and exact in Gmpq
 
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 
@@ -37,6 +43,7 @@
 
 #include <Eigen/Sparse>
 
+#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -46,6 +53,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -872,6 +880,78 @@ void test_regressions()
   }
 }
 
+// Per-corner seam system of a triangulated (g+1) x (g+1) vertex grid: every face has its own three
+// corners (one (u, v) variable pair each), every interior edge gives the two rows of Eq. 4 with
+// k = 0, (f_i(a) - f_i(b)) - (f_j(a) - f_j(b)) = 0. Solution: each corner at its vertex's grid point
+// plus an integer offset per face (exact doubles).
+Linear_system per_corner_grid_system(std::size_t g)
+{
+  Linear_system s;
+  s.name = "per_corner_grid_" + std::to_string(g);
+  const std::size_t faces = 2 * g * g;
+  s.n = 2 * 3 * faces;
+  s.solution.assign(s.n, 0.);
+  std::vector<std::array<std::size_t, 3> > fv(faces);        // vertex of each corner
+  for(std::size_t i = 0; i < g; ++i)
+    for(std::size_t j = 0; j < g; ++j) {
+      const std::size_t v00 = i * (g + 1) + j, v10 = v00 + 1, v01 = v00 + g + 1, v11 = v01 + 1;
+      fv[2 * (i * g + j)] = {v00, v10, v11};
+      fv[2 * (i * g + j) + 1] = {v00, v11, v01};
+    }
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> open;   // directed edge -> corner of its source
+  for(std::size_t f = 0; f < faces; ++f)
+    for(std::size_t c = 0; c < 3; ++c) {
+      const std::size_t corner = 3 * f + c, v = fv[f][c];
+      s.solution[2 * corner] = double(v % (g + 1)) / 64. + double(f % 7);
+      s.solution[2 * corner + 1] = double(v / (g + 1)) / 64. - double(f % 5);
+      const std::size_t a = v, b = fv[f][(c + 1) % 3];
+      const auto other = open.find({b, a});
+      if(other == open.end()) { open[{a, b}] = corner; continue; }
+      const std::size_t b2 = other->second, a2 = 3 * (b2 / 3) + (b2 % 3 + 1) % 3, b1 = 3 * f + (c + 1) % 3;
+      for(long comp = 0; comp < 2; ++comp) {
+        const long row = long(s.m++);
+        s.triplets.emplace_back(row, long(2 * corner) + comp, 1L);
+        s.triplets.emplace_back(row, long(2 * b1) + comp, -1L);
+        s.triplets.emplace_back(row, long(2 * a2) + comp, -1L);
+        s.triplets.emplace_back(row, long(2 * b2) + comp, 1L);
+      }
+    }
+  s.b.assign(s.m, 0);
+  s.has_solution = true;
+  SS_test::canonicalize(s);
+  return s;
+}
+
+void test_pivot_order()
+{
+  std::cout << "== 7. pivot order: pivot rule alone, fill-reducing column order (COLAMD: "
+            << (SS::internal::has_fill_reducing_column_order() ? "yes" : "not in this build") << "), automatic" << std::endl;
+  SS_test::Seamless_options so; so.target_rows = 2000; so.seed = 77;
+  for(const Linear_system& s : { per_corner_grid_system(24), SS_test::seamless_system(so) }) {
+    SS::internal::Integer_system sys;
+    std::string message;
+    auto visit = [&](auto add) { for(const Triplet& t : s.triplets) add(std::size_t(t.row()), std::size_t(t.col()), t.value()); };
+    assert(SS::internal::build_integer_system(s.m, s.n, s.b, visit, sys, message) == SS::SUCCESS);
+    SS::internal::Irref<std::int64_t> automatic, rule, ordered;
+    assert(SS::internal::compute_irref(sys, automatic, message) == SS::SUCCESS);
+    assert(SS::internal::compute_irref(sys, rule, message, SS::internal::PIVOT_RULE) == SS::SUCCESS);
+    assert(SS::internal::compute_irref(sys, ordered, message, SS::internal::FILL_REDUCING_ORDER) == SS::SUCCESS);
+    assert(rule.rank() == ordered.rank() && automatic.rank() == rule.rank());
+    assert(rule.rank() == SS_test::rank_mod_p(s));
+    const bool per_corner = s.name.rfind("per_corner", 0) == 0;
+    std::cout << "  " << s.name << " (" << s.m << " x " << s.n << ", " << s.triplets.size() << " nonzeros): IRREF nonzeros "
+              << "pivot rule " << rule.rank() + rule.col.size() << ", order " << ordered.rank() + ordered.col.size()
+              << ", automatic " << automatic.rank() + automatic.col.size() << std::endl;
+    const SS::internal::Irref<std::int64_t>& expected = per_corner && SS::internal::has_fill_reducing_column_order() ? ordered : rule;
+    assert(automatic.pivot_col == expected.pivot_col && automatic.col == expected.col && automatic.val == expected.val);
+    if(per_corner && SS::internal::has_fill_reducing_column_order()) assert(ordered.col.size() < rule.col.size());
+    if(per_corner) {
+      const std::vector<double> xbar = SS_test::noisy_input(s, 1e-9, 3);
+      check_success(s, xbar, run(s, xbar));
+    }
+  }
+}
+
 } // namespace
 
 // Eigen vectors in and out: the same result as with std::vector, bit for bit; on failure the output
@@ -911,6 +991,7 @@ int main(int argc, char** argv)
   test_exact_input_unchanged();
   test_regressions();
   test_eigen_vectors();
+  test_pivot_order();
   std::cout << "test_projection: all tests passed in " << ms_since(t0) / 1000. << " s" << std::endl;
   return EXIT_SUCCESS;
 }

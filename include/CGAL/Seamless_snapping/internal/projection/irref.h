@@ -52,6 +52,11 @@ namespace internal {
 
 enum Column_kind : unsigned char { UNCONSTRAINED_COLUMN = 0, FREE_COLUMN = 1, IMPLIED_COLUMN = 2 };
 
+// How pivots are chosen: automatically (the pivot rule on a budget of nonzeros, then the
+// fill-reducing order, see Irref_eliminator::run()), the pivot rule alone, or the order from the
+// start (the pivot rule alone when no order is available, see column_ordering.h).
+enum Pivot_order { AUTOMATIC_PIVOT_ORDER, PIVOT_RULE, FILL_REDUCING_ORDER };
+
 // The result: one row per pivot, x_{pivot_col} = (rhs - sum val * x_col) / pivot (Eq. 2'),
 // where every col of a row is a free column.
 template <typename Int>
@@ -145,27 +150,29 @@ class Irref_eliminator
   static constexpr std::uint32_t NIL = std::uint32_t(-1);
 
 public:
-  Status run(const Integer_system& sys, Irref<Int>& out, std::string& message)
+  Status run(const Integer_system& sys, Irref<Int>& out, std::string& message, Pivot_order order)
   {
     // With a fill-reducing column order available, the pivot rule alone goes first, on a budget of
     // nonzeros (those of the input plus one per row): within it (seamless-like systems numbered by
     // sectors, whose IRREF has fewer nonzeros than the input) it is the faster one and the order
     // would only cost; past it (per-corner seam systems, where the pivot rule alone fills in 8-16x)
     // the elimination starts over with the pivots taken in the order (see column_ordering.h).
-    const std::size_t input_nonzeros = sys.nonzeros();
-    const std::size_t budget = has_fill_reducing_column_order() ? input_nonzeros + sys.n_rows
-                                                                : std::numeric_limits<std::size_t>::max();
-    bool over_budget = false;
-    load(sys);
-    Status st = eliminate(out, message, budget, over_budget);
-    if(!over_budget) { if(st == SUCCESS) extract(sys, out); return st; }
+    const std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+    const bool ordered = has_fill_reducing_column_order() && order != PIVOT_RULE;
+    bool over_budget = true;
+    Status st = SUCCESS;
+    if(order != FILL_REDUCING_ORDER) {
+      load(sys);
+      st = eliminate(out, message, ordered ? sys.nonzeros() + sys.n_rows : unlimited, over_budget);
+      if(!over_budget) { if(st == SUCCESS) extract(sys, out); return st; }
+    }
     const std::size_t spent = out.eliminations;
     out = Irref<Int>();
     out.eliminations = spent;                          // every row update performed, both passes
     if(sys.fits_int64) fill_reducing_column_order(sys.rows64, sys.n_cols, m_position);   // none: the pivot rule alone
     else               fill_reducing_column_order(sys.rowsz, sys.n_cols, m_position);
     load(sys);
-    st = eliminate(out, message, std::numeric_limits<std::size_t>::max(), over_budget);
+    st = eliminate(out, message, unlimited, over_budget);
     if(st == SUCCESS) extract(sys, out);
     return st;
   }
@@ -577,12 +584,13 @@ private:
 
 // Computes the IRREF of the canonical system in Int. With Int = int64 an overflow throws
 // Integer_overflow (the caller then redoes it in Gmpz).
+// `order` is for tests and benchmarks: both rules give an exact IRREF of the same system.
 template <typename Int>
-Status compute_irref(const Integer_system& sys, Irref<Int>& out, std::string& message)
+Status compute_irref(const Integer_system& sys, Irref<Int>& out, std::string& message, Pivot_order order = AUTOMATIC_PIVOT_ORDER)
 {
   out = Irref<Int>();
   Irref_eliminator<Int> e;
-  return e.run(sys, out, message);
+  return e.run(sys, out, message, order);
 }
 
 } // namespace internal
