@@ -156,7 +156,10 @@ public:
     // nonzeros (those of the input plus one per row): within it (seamless-like systems numbered by
     // sectors, whose IRREF has fewer nonzeros than the input) it is the faster one and the order
     // would only cost; past it (per-corner seam systems, where the pivot rule alone fills in 8-16x)
-    // the elimination starts over with the pivots taken in the order (see column_ordering.h).
+    // the elimination starts over with the pivots taken in the order (see column_ordering.h). The
+    // order ignores the values: if an entry then grows beyond 2^20 or a pivot beyond 2 (random
+    // systems; large pivots make the divisibility of Alg. 4 costly), the pivot rule alone, which
+    // takes small pivots, redoes the elimination.
     const std::size_t unlimited = std::numeric_limits<std::size_t>::max();
     const bool ordered = has_fill_reducing_column_order() && order != PIVOT_RULE;
     bool over_budget = true;
@@ -172,7 +175,17 @@ public:
     if(sys.fits_int64) fill_reducing_column_order(sys.rows64, sys.n_cols, m_position);   // none: the pivot rule alone
     else               fill_reducing_column_order(sys.rowsz, sys.n_cols, m_position);
     load(sys);
+    m_growth_limit = !m_position.empty();
     st = eliminate(out, message, unlimited, over_budget);
+    m_growth_limit = false;
+    if(over_budget) {                                  // the order ignores values: on coefficient growth, the pivot rule alone
+      const std::size_t spent_too = out.eliminations;
+      out = Irref<Int>();
+      out.eliminations = spent_too;
+      m_position.clear();
+      load(sys);
+      st = eliminate(out, message, unlimited, over_budget);
+    }
     if(st == SUCCESS) extract(sys, out);
     return st;
   }
@@ -185,7 +198,7 @@ private:
     fill(window);
     over_budget = false;
     while(window.size > 0) {
-      if(m_nonzeros > budget) { over_budget = true; return SUCCESS; }
+      if(m_nonzeros > budget || m_too_large) { over_budget = true; return SUCCESS; }
       const Pending next = window.take();
       const std::uint32_t k = next.row;
       Row& row = m_rows[k];
@@ -208,6 +221,7 @@ private:
         continue;
       }
       const std::uint32_t c = choose_pivot(row);
+      if(m_growth_limit && Ops::less(Ops::from_int64(2), Ops::abs(*find(row, c)))) { over_budget = true; return SUCCESS; }
       eliminate_column(k, c, out.eliminations);
       m_rows[k].state = PIVOT;
       m_rows[k].pivot_col = c;
@@ -228,6 +242,7 @@ private:
     m_arena_block = std::max<std::size_t>(std::size_t(1) << 16, in.e.size() / 4);
     m_arena.clear(); m_arena_used = 0; m_arena_capacity = 0;
     m_nonzeros = in.e.size();
+    m_too_large = false;
     m_stamp = 0;
     // Rows are read backwards and pushed at once: the queue's buckets are stacks, so lower indices come out first.
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
@@ -484,6 +499,8 @@ private:
     }
     Entry* const dst = FLAT ? first : m_merged.data();
     const std::size_t size = FLAT ? std::size_t(w - first) : m_merged.size();
+    if(m_growth_limit)
+      for(std::size_t q = 0; q < size; ++q) m_too_large = m_too_large || Ops::less(GROWTH_LIMIT, Ops::abs(dst[q].val));
     row.b = Ops::sub(fi_one ? row.b : Ops::mul(fi, row.b), Ops::mul(fk, pr.b));
     Int g = Ops::abs(row.b);
     for(std::size_t q = 0; q < size && !Ops::is_unit(g); ++q) g = Ops::gcd(g, dst[q].val);
@@ -580,6 +597,8 @@ private:
   std::size_t m_arena_block = std::size_t(1) << 16;    // entries per block: a quarter of the input, at least 2^16
   std::size_t m_nonzeros = 0;                          // in the rows (active, pivot and zero)
   std::vector<std::uint32_t> m_position;               // fill-reducing column order, if any (column_ordering.h)
+  bool m_growth_limit = false, m_too_large = false;    // ordered pass: stop once an entry exceeds GROWTH_LIMIT (or a pivot 2)
+  const Int GROWTH_LIMIT = Ops::from_int64(std::int64_t(1) << 20);
 };
 
 // Computes the IRREF of the canonical system in Int. With Int = int64 an overflow throws
