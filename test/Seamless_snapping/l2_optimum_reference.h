@@ -161,11 +161,12 @@ Sector_system<TriangleMesh> sector_system(TriangleMesh& tm, UVMap uv)
     for(std::size_t k = S.full.start[i]; k < S.full.start[i + 1]; ++k) { r.col.push_back(S.full.col[k]); r.coef.push_back(S.full.coef[k]); }
     out.rows.push_back(r);
   }
-  out.ubar = S.st.ubar;
+  out.ubar = S.st.ubar;                           // the pipeline's UVs are normalized by 2^-uv_exponent:
+  for(double& v : out.ubar) v = S.cm.to_uv(v);    // back to the caller's units (exact), as the results are read
   out.corner.resize(std::size_t(S.st.n_sectors));
   for(int h = 0; h < S.cm.n_halfedges; ++h)
     if(S.st.sector_of[h] >= 0) out.corner[std::size_t(S.st.sector_of[h])] = S.desc.halfedges[std::size_t(h)];
-  out.quantum = S.grid.quantum;
+  out.quantum = S.cm.to_uv(S.grid.quantum);
   out.ok = true;
   return out;
 }

@@ -274,7 +274,8 @@ static void test_scale_covariance()
 // snap: reproducers of fuzzing (/work/shared/repro, inlined): seams of tiny and huge maps, a UV far
 // from the rest, a cut edge of zero length on one side
 // ---------------------------------------------------------------------------------------------
-static SS::Snap_report snap_obj_text(const std::string& text, Mesh& m, bool& untouched)
+// `paper`: the paper's mode (no minimal change) and no flip repair
+static SS::Snap_report snap_obj_text(const std::string& text, Mesh& m, bool& untouched, bool paper = false)
 {
   UV_map uv = uv_of(m);
   std::istringstream is(text);
@@ -282,7 +283,7 @@ static SS::Snap_report snap_obj_text(const std::string& text, Mesh& m, bool& unt
   const SS::Status read = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg);
   assert(read == SS::SUCCESS);
   const std::vector<std::uint64_t> before = uv_bits(m, uv);
-  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::minimal_change(!paper).repair_flips(!paper));
   untouched = uv_bits(m, uv) == before;
   std::printf("  %s: %s\n", SS::status_name(r.status), r.message.c_str());
   return r;
@@ -324,13 +325,20 @@ static void test_reproducers()
     assert(r.status == SS::RANGE_EXCEEDED && untouched);
     assert(r.message.find("-6698172297") != std::string::npos && r.message.find("lies inside") == std::string::npos);
   }
-  // a cut edge of zero UV length on one side (face 2 has v2 = v3 in UV): the transition collapses it
-  // in face 1 too; SUCCESS says so (it used to say nothing)
+  // a cut edge of zero UV length on one side (face 2 has v2 = v3 in UV): in the paper's mode without
+  // flip repair the transition collapses it in face 1 too, and SUCCESS says so (it used to say
+  // nothing); by default (minimal change, repair) the two sides meet in between: nothing collapses
   for(int collapsed = 0; collapsed <= 1; ++collapsed) {
     const std::string text = std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n") +
                              (collapsed ? "vt 1 1\nvt 1 1\n" : "vt 1 0.5\nvt 0 1.5\n") + "vt -0.5 0\nf 1/1 2/2 3/3\nf 3/4 2/5 4/6\n";
+    {
+      Mesh m; bool untouched = false;
+      const SS::Snap_report r = snap_obj_text(text, m, untouched);
+      assert(r.status == SS::SUCCESS && r.cut_edges == 1 && SS::is_exactly_seamless(m, uv_of(m)));
+      assert(r.collapsed_cut_edges == 0);
+    }
     Mesh m; bool untouched = false;
-    const SS::Snap_report r = snap_obj_text(text, m, untouched);
+    const SS::Snap_report r = snap_obj_text(text, m, untouched, true);
     assert(r.status == SS::SUCCESS && r.cut_edges == 1 && SS::is_exactly_seamless(m, uv_of(m)));
     assert(r.collapsed_cut_edges == std::size_t(collapsed));
     assert((r.message.find("zero UV length (1 of them already on one side in the input)") != std::string::npos) == (collapsed == 1));
