@@ -74,26 +74,24 @@ Status write_OBJ_matrices(const std::string& filename, const Eigen::MatrixBase<D
     return fail("expected V #V x 3, F #F x 3, UV #UV x 2, FUV #F x 3");
   std::string text;
   text.reserve(std::size_t(64 * (V.rows() + UV.rows() + F.rows())));
-  for(Eigen::Index i = 0; i < V.rows(); ++i) {
-    text += "v";
-    for(int c = 0; c < 3; ++c) {
-      const double x = double(V(i, c));
-      if(!std::isfinite(x)) return fail("V(" + std::to_string(i) + ", " + std::to_string(c) + ") is not finite");
-      text += ' ';
-      internal::append_double(text, x);
+  // one line per row of M: `record` and the row's values; false (with `message`) at a non-finite value
+  auto append_rows = [&](const char* record, const char* name, const auto& M) {
+    for(Eigen::Index i = 0; i < M.rows(); ++i) {
+      text += record;
+      for(Eigen::Index c = 0; c < M.cols(); ++c) {
+        const double x = double(M(i, c));
+        if(!std::isfinite(x)) {
+          fail(std::string(name) + "(" + std::to_string(i) + ", " + std::to_string(c) + ") is not finite");
+          return false;
+        }
+        text += ' ';
+        internal::append_double(text, x);
+      }
+      text += '\n';
     }
-    text += '\n';
-  }
-  for(Eigen::Index i = 0; i < UV.rows(); ++i) {
-    text += "vt";
-    for(int c = 0; c < 2; ++c) {
-      const double x = double(UV(i, c));
-      if(!std::isfinite(x)) return fail("UV(" + std::to_string(i) + ", " + std::to_string(c) + ") is not finite");
-      text += ' ';
-      internal::append_double(text, x);
-    }
-    text += '\n';
-  }
+    return true;
+  };
+  if(!append_rows("v", "V", V) || !append_rows("vt", "UV", UV)) return INVALID_INPUT;
   for(Eigen::Index f = 0; f < F.rows(); ++f) {
     text += "f";
     for(int k = 0; k < 3; ++k) {
