@@ -2,7 +2,7 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
@@ -27,6 +27,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -55,6 +56,12 @@ namespace fs = std::filesystem;
 // subdivision (corner UVs of a new corner = midpoint of its face's corner UVs, so every seam stays
 // approximately seamless and the cones stay), and the snap time (reduced pipeline, no IO) is printed
 // per level with the time per 1000 faces: linear growth keeps that column flat.
+
+// --integer-grid: instead, integer_grid_map(true) per model: cut edges with integer translations and
+// cones of the field on integer points, before -> after (exact counts), verified by
+// is_exact_integer_grid_map(); max change relative to the UV diagonal, flips input -> after repair
+// (and how many of those the snap introduced), ms (minimum over N runs). Models that are not near an
+// integer-grid map are listed with the status and reason (e.g. "not near an integer-grid map").
 
 // Reads a model; files under a "directional" folder are cut meshes (Directional) and get welded.
 // On failure, prints a "cannot read" table row, counts it in `failures` and returns false.
@@ -228,22 +235,61 @@ static int change_study(const std::vector<fs::path>& files)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
+{
+  std::printf("%-44s %7s | %18s | %16s | %9s | %15s | %8s | %s\n", "model (integer_grid_map)", "#F",
+              "int. translations", "cones on integers", "max du/d", "flips (new)", "ms", "exact IGM");
+  int failures = 0;
+  for(const fs::path& p : files) {
+    Mesh input;
+    UV_map uv_in;
+    if(!read_model(p, input, uv_in, failures)) continue;
+    SS::Snap_report best;
+    Mesh out;
+    for(int r = 0; r < repeat; ++r) {
+      Mesh m = input;
+      UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+      if(r == 0 || rep.total_ms < best.total_ms) { best = rep; out = m; }
+    }
+    const std::string name = fs::relative(p, p.parent_path().parent_path()).string();
+    if(best.status != SS::SUCCESS) {
+      std::printf("%-44s %7zu | %s: %.150s\n", name.c_str(), best.faces, SS::status_name(best.status), best.message.c_str());
+      continue;
+    }
+    UV_map uv = out.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+    const bool exact = SS::is_exact_integer_grid_map(out, uv);
+    if(!exact) ++failures;
+    std::printf("%-44s %7zu | %4zu -> %4zu /%4zu | %3zu -> %3zu /%4zu | %9.2e | %4zu -> %4zu (%2zu) | %8.1f | %s\n",
+                name.c_str(), best.faces, best.integer_translations_before, best.integer_translations_after, best.cut_edges,
+                best.cones_on_integer_points_before, best.cones_on_integer_points_after, best.field_cones, best.max_change,
+                best.flips_before, best.flips_after_repair, best.flips_unrepaired, best.total_ms, exact ? "yes" : "NO");
+  }
+  std::printf("\ncolumns: cut edges whose translation is exactly an integer vector, and cones of the field (rotation sum\n"
+              "not 0 mod 4) exactly on integer points, input -> result / total; max du/d = max change relative to the UV\n"
+              "diagonal; flips = UV fold-overs input -> after repair (new = introduced by snapping, left after repair);\n"
+              "exact IGM = is_exact_integer_grid_map() (Gmpq) on the result.\n");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   int repeat = 3;
-  bool connections = false, change_only = false;
+  bool connections = false, change_only = false, integer_grid = false;
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) { repeat = (std::max)(1, std::atoi(argv[++i])); continue; }
     if(std::strcmp(argv[i], "--connections") == 0) { connections = true; continue; }
     if(std::strcmp(argv[i], "--change") == 0) { change_only = true; continue; }
+    if(std::strcmp(argv[i], "--integer-grid") == 0) { integer_grid = true; continue; }
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
   std::vector<fs::path> files;
   if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
   if(connections) return connection_study(files, repeat);
+  if(integer_grid) return integer_grid_study(files, repeat);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
   if(change_only) return change_study(files);
 

@@ -15,6 +15,21 @@
 //                                                        of a cone (holonomy), reduced and unreduced
 //   connections: invalid paths                           empty, disconnected, foreign halfedge, bad component:
 //                                                        INVALID_INPUT naming the constraint, map bit-identical
+//   integer grid: torus, cones                           integer_grid_map(true): a flat torus with period
+//                                                        3.0000000001 snaps to 3 exactly (also at grid scale 4,
+//                                                        bit for bit /4; scale 3 refused); period 3.4 is refused
+//                                                        as not near an IGM; a 180-degree cone whose integer
+//                                                        translation forces the fixed point (0.5, 0) is INFEASIBLE
+//                                                        naming the cone; near (1, 0) it is pinned there exactly
+//   integer grid: data                                   libQEx ducks/fandisk, Directional horse/dragon
+//                                                        (full-seamless): SUCCESS, is_exact_integer_grid_map()
+//                                                        (independent Gmpq check), change < 1e-5, no more flips
+//                                                        than the input; no new flips except on the dragon (a
+//                                                        stress case: 239 zero-length seam edges; the default
+//                                                        mode leaves 40 new flips there)
+//   integer grid: orbifold                               CGAL Orbifold Tutte square map (cones on the unit square's
+//                                                        corners): an exact IGM after; scaled by 0.3: INVALID_INPUT
+//                                                        with advice, map bit-identical
 //   right-hand sides                                     Constraint_rows with b != 0: the exact residual is
 //                                                        C x - b, 0 = b != 0 is recorded as a contradiction,
 //                                                        project_rows() solves C x = b exactly (scale 2^j too)
@@ -30,6 +45,7 @@
 
 #include <CGAL/Seamless_snapping/Connection_constraint.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
@@ -420,6 +436,172 @@ static void test_invalid()
   std::cout << "connections: invalid paths: OK\n";
 }
 
+// ---------------------------------------------------------------------------------------------
+// integer-grid maps (integer_grid_map(true), is_exact_integer_grid_map())
+// ---------------------------------------------------------------------------------------------
+
+// a flat n x n torus of unit squares (vertex (i, j), i, j mod n), corner UVs (i, j) unwrapped in each
+// face: the seams of the cut i = 0 and j = 0 translate by (period_u, 0) and (0, n)
+static void make_flat_torus(Mesh& m, UV_map& uv, int n, double period_u)
+{
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const double a = 2 * CGAL_PI * i / n, b = 2 * CGAL_PI * j / n;
+      vs.push_back(m.add_vertex(Point_3((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b))));
+    }
+  uv = uv_of(m);
+  auto V = [&](int i, int j) { return vs[(j % n) * n + (i % n)]; };
+  auto add = [&](int i0, int j0, int i1, int j1, int i2, int j2) {
+    const int I[3] = {i0, i1, i2}, J[3] = {j0, j1, j2};
+    const auto f = m.add_face(V(i0, j0), V(i1, j1), V(i2, j2));
+    assert(f != Mesh::null_face());
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      for(int c = 0; c < 3; ++c)
+        if(m.target(h) == V(I[c], J[c]))
+          put(uv, h, Point_2(I[c] == n ? period_u : double(I[c]), double(J[c])));
+  };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) { add(i, j, i + 1, j, i + 1, j + 1); add(i, j, i + 1, j + 1, i, j + 1); }
+}
+
+// a fan of 4 triangles around an interior vertex c, spanning 180 degrees in UV (a cone with k = 2
+// across the cut edge c-w0), apex at `apex`; the translation of the cut is (2 apex_u, 2 apex_v)
+static void make_half_turn_cone(Mesh& m, UV_map& uv, double apex_u, double apex_v)
+{
+  const vertex_descriptor c = m.add_vertex(Point_3(0, 0, 1));
+  std::vector<vertex_descriptor> w;
+  for(int i = 0; i < 4; ++i) w.push_back(m.add_vertex(Point_3(std::cos(CGAL_PI * i / 2), std::sin(CGAL_PI * i / 2), 0)));
+  uv = uv_of(m);
+  for(int i = 0; i < 4; ++i) {
+    const auto f = m.add_face(c, w[i], w[(i + 1) % 4]);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+      int a = -1;   // angle index of the target in the fan: 0 .. 4 (w0 is 0 in the first face, 4 in the last)
+      if(m.target(h) == w[i]) a = i;
+      else if(m.target(h) == w[(i + 1) % 4]) a = i + 1;
+      if(a < 0) { put(uv, h, Point_2(apex_u, apex_v)); continue; }
+      const double du[5] = {2, 1.5, 0, -1.5, -2}, dv[5] = {0, 1.5, 2, 1.5, 0};   // counter-clockwise, exact
+      put(uv, h, Point_2(apex_u + du[a], apex_v + dv[a]));
+    }
+  }
+}
+
+static void test_integer_grid_analytic()
+{
+  // torus: translation 3.0000000001 -> exactly 3; the default mode keeps it (already exactly seamless)
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 3.0000000001);
+    assert(SS::is_exactly_seamless(m, uv) && !SS::is_exact_integer_grid_map(m, uv));
+    Mesh d = m; UV_map uvd = uv_of(d);
+    const SS::Snap_report rd = SS::snap_seamless_parameterization(d, uvd);
+    assert(rd.status == SS::SUCCESS && uv_bits(d, uvd) == uv_bits(m, uv));
+    assert(rd.integer_translations_before == rd.integer_translations_after && rd.integer_translations_before < rd.cut_edges);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
+    assert(r.status == SS::SUCCESS);
+    assert(SS::is_exact_integer_grid_map(m, uv) && SS::is_exactly_seamless(m, uv));
+    assert(r.integer_translations_after == r.cut_edges && r.cut_edges > 0);
+    assert(r.max_change > 0 && r.max_change < 1e-10);
+    // the same map at grid scale 4 (UVs / 4): grid_scale(4) gives the result / 4, bit for bit
+    Mesh q; UV_map uvq;
+    make_flat_torus(q, uvq, 3, 3.0000000001);
+    for(halfedge_descriptor h : q.halfedges()) put(uvq, h, Point_2(get(uvq, h).x() / 4, get(uvq, h).y() / 4));
+    const SS::Snap_report r4 = SS::snap_seamless_parameterization(q, uvq, SS::parameters::integer_grid_map(true,
+                                                                  SS::parameters::grid_scale(4.)));
+    assert(r4.status == SS::SUCCESS && SS::is_exact_integer_grid_map(q, uvq, SS::parameters::grid_scale(4.)));
+    assert(!SS::is_exact_integer_grid_map(q, uvq));
+    for(halfedge_descriptor h : q.halfedges()) assert(get(uvq, h).x() * 4 == get(uv, h).x() && get(uvq, h).y() * 4 == get(uv, h).y());
+    // a grid scale that is not a power of two is refused, map untouched
+    const std::vector<std::uint64_t> bits = uv_bits(q, uvq);
+    const SS::Snap_report r3 = SS::snap_seamless_parameterization(q, uvq, SS::parameters::integer_grid_map(true,
+                                                                  SS::parameters::grid_scale(3.)));
+    assert(r3.status == SS::INVALID_INPUT && uv_bits(q, uvq) == bits);
+    std::cout << "integer grid: torus translation 3.0000000001 -> 3: OK (" << r.message << ")\n";
+  }
+  // torus whose period is far from an integer: refused with advice, map untouched
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 3.4);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
+    assert(r.message.find("not near an integer-grid map") != std::string::npos);
+    assert(r.message.find("grid-scale") != std::string::npos);
+    std::cout << "integer grid: far from integers refused: " << r.message << "\n";
+  }
+  // half-turn cone: apex (0.5, 0) and translation (1, 0) = integer, but the fixed point is half-integer
+  {
+    Mesh m; UV_map uv;
+    make_half_turn_cone(m, uv, 0.5, 0);
+    assert(SS::is_exactly_seamless(m, uv) && !SS::is_exact_integer_grid_map(m, uv));
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    if(r.status != SS::INFEASIBLE) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+    assert(r.status == SS::INFEASIBLE && uv_bits(m, uv) == bits);
+    assert(r.message.find("cone at vertex 0") != std::string::npos && r.message.find("(0.5, 0)") != std::string::npos);
+    std::cout << "integer grid: half-integer cone refused: " << r.message << "\n";
+  }
+  // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)
+  {
+    Mesh m; UV_map uv;
+    make_half_turn_cone(m, uv, 1 + 1e-9, -2e-9);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    if(r.status != SS::SUCCESS) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+    assert(r.status == SS::SUCCESS && r.pinned_cones == 1 && r.field_cones == 1);
+    assert(r.cones_on_integer_points_before == 0 && r.cones_on_integer_points_after == 1);
+    assert(SS::is_exact_integer_grid_map(m, uv));
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h) && m.target(h) == vertex_descriptor(0)) assert(get(uv, h) == Point_2(1, 0));
+    std::cout << "integer grid: near-integer cone pinned: OK\n";
+  }
+}
+
+// every near-IGM file of the shared data: SUCCESS, exact IGM (checked independently), small change, no new flips
+static void test_integer_grid_data()
+{
+  const char* files[] = {"libqex/duck_miq_8_param.obj", "libqex/duck_qc_8_param.obj", "libqex/fandisk_param.obj",
+                         "directional/horsers-param-full-seamless.obj", "directional/dragon-param-full-seamless.obj"};
+  for(const char* f : files) {
+    Mesh m;
+    if(!load_shared_or_skip(f, "integer grid: data", m)) continue;
+    UV_map uv = uv_of(m);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    if(r.status != SS::SUCCESS) std::cerr << f << ": " << SS::status_name(r.status) << " " << r.message << std::endl;
+    std::printf("integer grid: %-44s translations %4zu -> %4zu of %4zu, cones on integers %3zu -> %3zu of %3zu"
+                " (not field cones %zu), change %.3g, flips %zu -> %zu (new %zu), %.0f ms\n",
+                f, r.integer_translations_before, r.integer_translations_after, r.cut_edges,
+                r.cones_on_integer_points_before, r.cones_on_integer_points_after, r.field_cones, r.not_field_cones.size(),
+                r.max_change, r.flips_before, r.flips_after_repair, r.flips_unrepaired, r.total_ms);
+    assert(r.status == SS::SUCCESS);
+    assert(SS::is_exact_integer_grid_map(m, uv) && SS::is_exactly_seamless(m, uv));
+    assert(r.integer_translations_after == r.cut_edges && r.cones_on_integer_points_after == r.field_cones);
+    assert(r.max_change < 1e-5);
+    assert(r.flips_after_repair <= r.flips_before);
+    if(std::strstr(f, "dragon") == nullptr) assert(r.flips_unrepaired == 0);
+  }
+}
+
+// CGAL's Orbifold Tutte Square map puts its cones on the corners of the unit square, with integer
+// translations: it is near an integer-grid map and snaps to an exact one. The same map scaled by 0.3
+// is not near one: refused with advice, map untouched.
+static void test_integer_grid_orbifold()
+{
+  Mesh m;
+  if(!load_shared_or_skip("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", "integer grid: orbifold", m)) return;
+  Mesh scaled = m;
+  UV_map uv = uv_of(m), uvs = uv_of(scaled);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+  assert(r.status == SS::SUCCESS && SS::is_exact_integer_grid_map(m, uv) && r.max_change < 1e-10);
+  for(halfedge_descriptor h : scaled.halfedges()) put(uvs, h, Point_2(0.3 * get(uvs, h).x(), 0.3 * get(uvs, h).y()));
+  const std::vector<std::uint64_t> bits = uv_bits(scaled, uvs);
+  const SS::Snap_report rs = SS::snap_seamless_parameterization(scaled, uvs, SS::parameters::integer_grid_map(true));
+  assert(rs.status == SS::INVALID_INPUT && uv_bits(scaled, uvs) == bits);
+  assert(rs.message.find("not near an integer-grid map") != std::string::npos);
+  std::cout << "integer grid: orbifold Tutte square map: " << r.integer_translations_before << " -> " << r.integer_translations_after
+            << " of " << r.cut_edges << " integer translations; scaled by 0.3 refused: " << rs.message << "\n";
+}
+
 // Constraint_rows with integer right-hand sides, through the exact check and project_rows()
 static void test_right_hand_sides()
 {
@@ -451,6 +633,9 @@ int main(int argc, char** argv)
 {
   parse_test_arguments(argc, argv);
   test_right_hand_sides();
+  test_integer_grid_analytic();
+  test_integer_grid_orbifold();
+  test_integer_grid_data();
   test_invalid();
   test_cycles();
   test_data_meshes();

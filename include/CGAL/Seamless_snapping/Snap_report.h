@@ -16,6 +16,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Seamless_snapping {
@@ -75,6 +76,18 @@ struct Snap_report
   std::size_t repair_node_moves = 0;   ///< of which moves of node vertices (with their branches) in the null space of the node system
   /// @}
 
+  /// \name Integer-grid structure (both modes; grid units: UVs times the grid scale)
+  /// @{
+  std::size_t integer_translations_before = 0; ///< cut edges whose translation (Eq. 3/7) is exactly an integer vector at both ends, in the input
+  std::size_t integer_translations_after = 0;  ///< the same in the result
+  std::size_t field_cones = 0;                 ///< interior vertices whose rotations k sum to a non-multiple of 4 (cones of the field)
+  std::size_t cones_on_integer_points_before = 0; ///< field cones with integer UVs in every corner, in the input
+  std::size_t cones_on_integer_points_after = 0;  ///< the same in the result
+  bool near_integer_grid_map = false;         ///< the input's translations and field cones are all within 1e-6 of integers (it looks like an IGM)
+  std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
+  std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
+  /// @}
+
   /// \name Timings (milliseconds, wall clock)
   /// @{
   double extract_ms = 0, reduce_ms = 0, irref_ms = 0, evaluate_ms = 0, propagate_ms = 0, verify_ms = 0, total_ms = 0;
@@ -114,6 +127,13 @@ struct Snap_report
     num("flips_unrepaired", double(flips_unrepaired)); num("degenerate_unrepaired", double(degenerate_unrepaired));
     num("degenerate_forced", double(degenerate_forced));
     num("repair_moves", double(repair_moves)); num("repair_node_moves", double(repair_node_moves));
+    num("integer_translations_before", double(integer_translations_before));
+    num("integer_translations_after", double(integer_translations_after));
+    num("field_cones", double(field_cones));
+    num("cones_on_integer_points_before", double(cones_on_integer_points_before));
+    num("cones_on_integer_points_after", double(cones_on_integer_points_after));
+    o << "  \"near_integer_grid_map\": " << (near_integer_grid_map ? "true" : "false") << ",\n";
+    num("pinned_cones", double(pinned_cones)); num("not_field_cones", double(not_field_cones.size()));
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
     num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms);

@@ -13,6 +13,7 @@
 #include <CGAL/Seamless_snapping/diagnose_seamlessness.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/surface/snap_inputs.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -26,6 +27,30 @@
 
 namespace CGAL {
 namespace Seamless_snapping {
+
+namespace internal {
+
+// Reads the parameters of `np` (Snap_inputs: seam_edge_map, rotation_map, edge_is_constrained_map, the
+// options), builds the corner mesh and returns `check(cm, seam_override, given_k, aligned, options)`; false if the corner mesh
+// cannot be built (empty mesh, non-triangle face, non-finite UV).
+template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters, class Check>
+bool check_with_overrides(const TriangleMesh& tm, HalfedgeUVMap uv, const NamedParameters& np, const Check& check)
+{
+  const Snap_inputs<TriangleMesh, NamedParameters> in(tm, np);
+  typedef boost::graph_traits<TriangleMesh> GT;
+  Corner_mesh cm;
+  std::vector<signed char> seam_override;
+  std::vector<int> given_k;
+  std::vector<char> aligned;
+  return corner_mesh_and_overrides(tm, uv,
+                                   [&](typename GT::edge_descriptor e) { return in.seam_of(e); }, in.has_seams,
+                                   [&](typename GT::halfedge_descriptor h) { return in.rotation_of(h); }, in.has_rotations,
+                                   [&](typename GT::edge_descriptor e) { return in.constrained_of(e); }, in.has_constrained,
+                                   cm, seam_override, given_k, aligned) &&
+         check(cm, seam_override, given_k, aligned, in.options);
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
@@ -91,36 +116,13 @@ template <class TriangleMesh, class HalfedgeUVMap,
 bool is_exactly_seamless(const TriangleMesh& tm, HalfedgeUVMap uv,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-
-  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_seam_map;
-  typedef typename internal_np::Lookup_named_param_def<snap_np::seam_edge_map_t, NamedParameters,
-                                                       Default_seam_map>::type Seam_map;
-  const Seam_map seams = choose_parameter<Seam_map>(get_parameter(np, snap_np::seam_edge_map), Default_seam_map(false));
-  const bool has_seams = !is_default_parameter<NamedParameters, snap_np::seam_edge_map_t>::value;
-  typedef CGAL::Constant_property_map<halfedge_descriptor, int> Default_rotation_map;
-  typedef typename internal_np::Lookup_named_param_def<snap_np::rotation_map_t, NamedParameters,
-                                                       Default_rotation_map>::type Rotation_map;
-  const Rotation_map rotations = choose_parameter<Rotation_map>(get_parameter(np, snap_np::rotation_map), Default_rotation_map(0));
-  const bool has_rotations = !is_default_parameter<NamedParameters, snap_np::rotation_map_t>::value;
-  typedef CGAL::Constant_property_map<edge_descriptor, bool> Default_constrained_map;
-  typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
-                                                       Default_constrained_map>::type Constrained_map;
-  const Constrained_map constrained = choose_parameter<Constrained_map>(get_parameter(np, internal_np::edge_is_constrained),
-                                                                        Default_constrained_map(false));
-  const bool has_constrained = !is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
-
-  if(!internal::is_exactly_seamless_impl(tm, uv,
-                                            [&](edge_descriptor e) { return bool(get(seams, e)); }, has_seams,
-                                            [&](halfedge_descriptor h) { return int(get(rotations, h)); }, has_rotations,
-                                            [&](edge_descriptor e) { return bool(get(constrained, e)); }, has_constrained))
+  if(!internal::check_with_overrides(tm, uv, np,
+         [](const internal::Corner_mesh& cm, const std::vector<signed char>& seam_override, const std::vector<int>& given_k,
+            const std::vector<char>& aligned, const internal::Snap_options&) {
+           return internal::is_exactly_seamless_impl(cm, seam_override, given_k, aligned);
+         }))
     return false;
-  if(is_default_parameter<NamedParameters, snap_np::connection_constraints_t>::value) return true;
+  if(CGAL::parameters::is_default_parameter<NamedParameters, snap_np::connection_constraints_t>::value) return true;
   // connection and cycle constraints (Eq. 6-8): their rows as the snap states them, exactly
   const Seamless_diagnosis<TriangleMesh> d = diagnose_seamlessness(tm, uv, np);
   return d.status == SUCCESS && d.violated_connections == 0;

@@ -188,6 +188,37 @@ namespace Seamless_snapping {
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::connection_constraints()`; wrap a large range
  *                     in `std::cref()` to avoid a copy}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{integer_grid_map}
+ *     \cgalParamDescription{snap to an exact integer-grid map (IGM, Bommes et al. 2009/2013), the input of quad
+ *                           extractors such as libQEx: the translation `t` of every cut edge (`u -> R^k u + t`,
+ *                           Eq. 3/7) is fixed to the integer vector nearest the input's, so that every cone of the
+ *                           field (an interior vertex whose rotations `k` do not sum to a multiple of 4) sits on the
+ *                           integer fixed point of its transitions, and every align edge lies on an integer isoline
+ *                           (`u|c` = the integer nearest the input's). The rows have integer right-hand sides
+ *                           (`C x = b`, the addendum's Eq. 2'); they join the system and the reduction like
+ *                           connection constraints. Checks, each failing with nothing written: every translation
+ *                           and isoline value must be within 1e-3 grid units of an integer (`INVALID_INPUT`, "not
+ *                           near an integer-grid map", with advice: set `grid_scale`, or snap without this
+ *                           parameter); around every interior vertex the rounded transitions must compose to the
+ *                           identity when the rotations do (`INFEASIBLE`, naming the vertex); the fixed point of a
+ *                           cone's rounded transitions must be an integer point within 1e-3 of the input
+ *                           (`INFEASIBLE`, naming the cone and the half-integer point). Vertices whose UV angle
+ *                           sum is not 2 pi only because of fold-overs (their rotations compose to the identity)
+ *                           are not pinned and are listed in `Snap_report::not_field_cones`.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::integer_grid_map()`; check the result with
+ *                     `is_exact_integer_grid_map()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{grid_scale}
+ *     \cgalParamDescription{`S`: the integer grid of the map is at multiples of `1/S` in UV units (e.g. MIQ maps with a
+ *                           gradient size of 1/8). The UVs are multiplied by `S` inside and divided by it on output;
+ *                           both are exact because `S` must be a power of two (otherwise `INVALID_INPUT`).
+ *                           `RANGE_EXCEEDED` if a UV or a result would overflow or underflow.}
+ *     \cgalParamType{`double`, a power of two}
+ *     \cgalParamDefault{1}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::grid_scale()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
  *     \cgalParamType{Boolean}

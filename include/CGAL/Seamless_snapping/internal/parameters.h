@@ -29,6 +29,9 @@ enum connection_constraints_t{ connection_constraints };// range of Connection_c
 enum repair_flips_t      { repair_flips };      // bool: repair UV flips introduced by snapping (Sec. 5.4, default true)
 enum minimal_change_t    { minimal_change };    // bool: snap the L2-closest point of the full system (default true)
 enum vertex_weight_map_t { vertex_weight_map }; // vertex -> double > 0: weight of the vertex's UVs in the L2 change
+enum integer_grid_map_t  { integer_grid_map };  // bool: integer translations, cones on integer points (default false)
+enum grid_scale_t        { grid_scale };        // double, a power of two: grid lines at multiples of 1/S (default 1)
+enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per face corner (libQEx's layout)
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -44,7 +47,10 @@ enum vertex_weight_map_t { vertex_weight_map }; // vertex -> double > 0: weight 
   SS_NP(connection_constraints_t,  connection_constraints)   \
   SS_NP(repair_flips_t,            repair_flips)             \
   SS_NP(minimal_change_t,          minimal_change)           \
-  SS_NP(vertex_weight_map_t,       vertex_weight_map)
+  SS_NP(vertex_weight_map_t,       vertex_weight_map)        \
+  SS_NP(integer_grid_map_t,        integer_grid_map)         \
+  SS_NP(grid_scale_t,              grid_scale)               \
+  SS_NP(vt_per_corner_t,           vt_per_corner)
 
 namespace parameters {
 

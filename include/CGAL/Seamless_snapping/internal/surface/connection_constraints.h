@@ -57,6 +57,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,6 +105,13 @@ void connection_paths_from_parameter(const TriangleMesh& tm, const ConnectionRan
 }
 
 inline std::string connection_name(std::size_t j) { return "connection constraint " + std::to_string(j); }
+
+// what a row of the full system comes from: Constraint_rows::edge, e >= 0 a mesh edge, e < 0 the
+// connection constraint -1 - e
+inline std::string row_origin_name(const Corner_mesh& cm, int e)
+{
+  return e >= 0 ? "edge " + vertex_pair_name(cm, cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e));
+}
 
 // Turns around vertex target(from) from corner `from` to corner `to` (see the header comment),
 // updating the quarter turns q. Returns false if both directions meet the border (non-manifold).
@@ -202,10 +210,13 @@ inline Status add_connection_rows(const Corner_mesh& cm, const Seam_topology& st
   return SUCCESS;
 }
 
-// Appends to rs.node_rows the rows [first, rows.size()) of the full system `rows` (the connection
-// rows) with every implied sector u^- of a cut branch replaced by u_0^- - R^k u_0^+ + R^k u^+
-// (Eq. 9). `build_reduced_system` must have been called with the path endpoints as forced nodes.
-// Fails (an internal error) if a non-node variable is left over.
+// Appends to rs.node_rows the rows [first, rows.size()) of the full system `rows` (connection and
+// cycle rows, integer-grid rows) with every implied sector u^- of a cut branch replaced by
+// u_0^- - R^k u_0^+ + R^k u^+ (Eq. 9), and the aligned component of every inner sector of an align
+// branch by that of u_0. Rows that become identical (e.g. the translation rows of the edges of one
+// branch) are added once; a row that becomes 0 = b != 0 is INFEASIBLE. The non-node variables of
+// the rows must be implied ones (path endpoints are forced nodes in `build_reduced_system`);
+// fails (an internal error) if a non-node variable is left over.
 inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows,
                                           std::size_t first, Reduced_system& rs, std::string& message)
 {
@@ -215,6 +226,11 @@ inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topo
   for(std::size_t b = 0; b < rs.cut_branches.size(); ++b)
     for(std::size_t t = 0; t < rs.cut_branches[b].inner.size(); ++t)
       implied[rs.cut_branches[b].inner[t].second] = std::make_pair(int(b), int(t));
+  // aligned[2s + c] = the variable u_0|c of the align branch with inner sector s and component c
+  std::vector<int> aligned(2 * std::size_t(st.n_sectors), -1);
+  for(const Align_branch_plan& p : rs.align_branches)
+    for(int s : p.inner) aligned[2 * s + p.component] = 2 * p.u0 + p.component;
+  std::set<std::vector<long> > seen;   // reduced rows added so far: (col, coef)..., rhs
 
   for(std::size_t i = first; i < rows.size(); ++i) {
     std::map<int, long long> row;
@@ -222,7 +238,7 @@ inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topo
     for(std::size_t e = rows.start[i]; e < rows.start[i + 1]; ++e) {
       const int var = rows.col[e];
       if(implied[var / 2].first >= 0) substitute.emplace_back(var, rows.coef[e]);
-      else row[var] += rows.coef[e];
+      else row[aligned[var] >= 0 ? aligned[var] : var] += rows.coef[e];
     }
     for(const std::pair<int, long long>& sv : substitute) {
       const int s = sv.first / 2, c = sv.first % 2;
@@ -240,19 +256,23 @@ inline Status add_reduced_connection_rows(const Corner_mesh& cm, const Seam_topo
       if(t.second == 0) continue;
       const int v = st.sector_vertex(cm, t.first / 2);
       if(!rs.is_node[v]) {
-        message = connection_name(std::size_t(-1 - rows.edge[i])) + ": after the substitution of Eq. (9) the row still has " +
+        message = row_origin_name(cm, rows.edge[i]) + ": after the substitution of Eq. (9) the row still has " +
                   "the non-node sector " + std::to_string(t.first / 2) + " (vertex " + std::to_string(v) +
                   "): internal error of the reduction";
         return EXACTNESS_CHECK_FAILED;
       }
       if(t.second > (std::numeric_limits<int>::max)() || t.second < -(std::numeric_limits<int>::max)()) {
-        message = connection_name(std::size_t(-1 - rows.edge[i])) + ": coefficient overflow in the reduced row";
+        message = row_origin_name(cm, rows.edge[i]) + ": coefficient overflow in the reduced row";
         return RANGE_EXCEEDED;
       }
       terms.emplace_back(t.first, int(t.second));
     }
+    std::vector<long> key;
+    for(const std::pair<int, int>& t : terms) { key.push_back(t.first); key.push_back(t.second); }
+    key.push_back(rows.rhs[i]);
+    if(!seen.insert(key).second) continue;
     if(!rs.node_rows.add(terms, rows.edge[i], rows.rhs[i]) && rows.rhs[i] != 0) {
-      message = connection_name(std::size_t(-1 - rows.edge[i])) + ": after the substitution of Eq. (9) the row reads 0 = " +
+      message = row_origin_name(cm, rows.edge[i]) + ": after the substitution of Eq. (9) the row reads 0 = " +
                 std::to_string(rows.rhs[i]) + ": the constraints contradict each other";
       return INFEASIBLE;
     }

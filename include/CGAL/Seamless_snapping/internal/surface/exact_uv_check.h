@@ -110,19 +110,19 @@ inline bool is_exactly_seamless_impl(const Corner_mesh& cm, const std::vector<si
   return true;
 }
 
-// Builds the corner mesh of `tm` and evaluates the overrides (callables on descriptors) per edge.
+// Builds the corner mesh of `tm` and evaluates the overrides (callables on descriptors) per edge,
+// in the form is_exactly_seamless_impl() takes them. False if the corner mesh cannot be built.
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>
-bool is_exactly_seamless_impl(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
-                              const RotationOf& rotation_of, bool has_rotations,
-                              const ConstrainedOf& constrained_of, bool has_constrained)
+bool corner_mesh_and_overrides(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
+                               const RotationOf& rotation_of, bool has_rotations,
+                               const ConstrainedOf& constrained_of, bool has_constrained, Corner_mesh& cm,
+                               std::vector<signed char>& seam_override, std::vector<int>& given_k,
+                               std::vector<char>& aligned)
 {
-  Corner_mesh cm;
   Corner_mesh_descriptors<TriangleMesh> desc;
   std::string message;
   if(build_corner_mesh(tm, uvmap, cm, desc, message) != SUCCESS) return false;
-  std::vector<signed char> seam_override;
-  std::vector<int> given_k;
-  std::vector<char> aligned;
+  seam_override.clear(); given_k.clear(); aligned.clear();
   if(has_seams) {
     seam_override.resize(cm.n_edges);
     for(int e = 0; e < cm.n_edges; ++e) seam_override[e] = seam_of(desc.edges[e]) ? 1 : 0;
@@ -135,7 +135,7 @@ bool is_exactly_seamless_impl(const TriangleMesh& tm, HalfedgeUVMap uvmap, const
     aligned.resize(cm.n_edges);
     for(int e = 0; e < cm.n_edges; ++e) aligned[e] = constrained_of(desc.edges[e]) ? 1 : 0;
   }
-  return is_exactly_seamless_impl(cm, seam_override, given_k, aligned);
+  return true;
 }
 
 } // namespace internal

@@ -82,6 +82,8 @@ struct Snap_inputs
     options.repair_flips = choose_parameter(get_parameter(np, snap_np::repair_flips), defaults.repair_flips);
     options.minimal_change = choose_parameter(get_parameter(np, snap_np::minimal_change), defaults.minimal_change);
     options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
+    options.integer_grid_map = choose_parameter(get_parameter(np, snap_np::integer_grid_map), defaults.integer_grid_map);
+    options.grid_scale = choose_parameter(get_parameter(np, snap_np::grid_scale), defaults.grid_scale);
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),
                                     options.connections);

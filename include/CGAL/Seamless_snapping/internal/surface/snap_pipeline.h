@@ -12,7 +12,7 @@
 
 // The surface pipeline behind snap_seamless_parameterization() (Sec. 5):
 //   1. extract   corner mesh, cut edges, sectors, cones, rotations k, align edges,
-//                the full system of rows                        (Sec. 5, 5.1)   extract_seams, build_constraints
+//                the full system of rows (+ integer-grid rows)  (Sec. 5, 5.1)   extract_seams, build_constraints
 //   2. reduce    nodes, branches, node system C                  (Sec. 5.3)      reduce_stage
 //   3a. spread   the L2-closest point of the FULL system, in floating point     least_squares_stage
 //                (all constrained sectors move, weighted; beyond Sec. 4.2)
@@ -41,6 +41,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
 #include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
 #include <CGAL/Seamless_snapping/internal/surface/flip_repair.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/propagation.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
@@ -75,6 +76,9 @@ struct Snap_options
   bool repair_flips = true;            // Sec. 5.4: move one vertex of a flipped triangle into its 1-ring kernel
   bool minimal_change = true;          // step 3a: snap the L2-closest point of the full system instead of ubar
   std::vector<Connection_path> connections;  // connection (Eq. 6) and cycle (Eq. 8) constraints
+  bool integer_grid_map = false;       // integer translations, cones on integer points, integer isolines
+  double integer_grid_tolerance = default_integer_grid_tolerance;   // grid units
+  double grid_scale = 1;               // S = 2^s: the integer grid of the map is at multiples of 1/S; UVs are scaled by S inside
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -175,6 +179,7 @@ struct Snap_state
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
+  int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units)
   // 2. reduce
   Reduced_system rs;
   // 3a. the floating-point L2-closest point of the full system (= ubar without minimal_change)
@@ -186,6 +191,19 @@ struct Snap_state
   std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
+
+// sector values x (corner-mesh scale) in grid units (the caller's UVs times the grid scale 2^s), for
+// the integer-grid counts: x itself when the corner mesh is in grid units (uv_exponent = -s), else
+// x * 2^(uv_exponent + s) (exact within the double range; the counts are diagnostics)
+template <class TriangleMesh>
+std::vector<double> in_grid_units(const Snap_state<TriangleMesh>& S, const std::vector<double>& x)
+{
+  const int e = S.cm.uv_exponent + S.grid_exponent;
+  if(e == 0) return x;
+  std::vector<double> g(x.size());
+  for(std::size_t i = 0; i < x.size(); ++i) g[i] = std::ldexp(x[i], e);
+  return g;
+}
 
 typedef std::chrono::steady_clock Snap_clock;
 inline double ms_since(Snap_clock::time_point t)
@@ -200,8 +218,18 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
                      const ConstrainedOf& constrained_of, bool has_constrained, const Snap_options& opt,
                      Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
+  int& grid_exponent = S.grid_exponent;   // the grid scale is 2^grid_exponent
+  if(!grid_scale_exponent(opt.grid_scale, grid_exponent)) {
+    message = "the grid scale " + format_double(opt.grid_scale, 17) + " is not a power of two, so it cannot be applied " +
+              "exactly; use 2^j, or scale the map yourself";
+    return INVALID_INPUT;
+  }
   Status s = build_corner_mesh(tm, uvmap, S.cm, S.desc, message);
-  if(s == SUCCESS) s = normalize_uv_scale(S.cm, message);   // from here on: UVs times 2^-uv_exponent
+  // from here on: UVs times 2^-uv_exponent; for integer-grid maps (and any grid scale 2^s other than 1)
+  // uv_exponent = -s, so the corner mesh holds the UVs in grid units and integer right-hand sides stay integers
+  const int forced_exponent = -grid_exponent;
+  const bool grid_units = opt.integer_grid_map || grid_exponent != 0;
+  if(s == SUCCESS) s = normalize_uv_scale(S.cm, message, grid_units ? &forced_exponent : nullptr);
   if(s != SUCCESS) return s;
   const Corner_mesh& cm = S.cm;
   report.faces = std::size_t(cm.n_faces);
@@ -244,6 +272,24 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   S.first_connection_row = S.full.size();
   Status s = add_connection_rows(S.cm, S.st, S.rot, opt.connections, S.full, S.path_endpoints, message);
   if(s != SUCCESS) return s;
+  const std::vector<double> ubar_grid = in_grid_units(S, S.st.ubar);
+  const Integer_grid_counts before = count_integer_structure(S.cm, S.st, S.rot, ubar_grid);
+  report.integer_translations_before = before.integer_translations;
+  report.field_cones = before.field_cones;
+  report.cones_on_integer_points_before = before.cones_on_integer_points;
+  report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
+  if(opt.integer_grid_map) {
+    Integer_grid_rows_result igm;
+    s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, opt.integer_grid_tolerance, S.full, igm, message);
+    if(s != SUCCESS) return s;
+    if(!S.full.contradictions.empty()) {
+      message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
+                " reads 0 = b != 0 (both sides of the cut edge are one sector); nothing was written";
+      return INFEASIBLE;
+    }
+    report.pinned_cones = igm.cones.size();
+    report.not_field_cones.assign(igm.not_field_cones.begin(), igm.not_field_cones.end());
+  }
   report.constraints = S.full.size();
   std::vector<int> column_of;
   used_variables(S.full, 2 * std::size_t(S.st.n_sectors), S.constrained_vars, column_of);
@@ -448,8 +494,7 @@ Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std:
   const long bad = first_violated_row(S.full, S.x);
   if(bad >= 0) {
     const int e = S.full.edge[std::size_t(bad)];
-    message = "row " + std::to_string(bad) + " of the full system (" +
-              (e >= 0 ? "edge " + vertex_pair_name(S.cm, S.cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e))) +
+    message = "row " + std::to_string(bad) + " of the full system (" + row_origin_name(S.cm, e) +
               ") does not hold exactly after snapping; nothing was written";
     return EXACTNESS_CHECK_FAILED;
   }
@@ -468,6 +513,9 @@ Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std:
   for(std::size_t i = 0; i < S.x.size(); ++i) max_change = (std::max)(max_change, std::fabs(S.x[i] - ubar[i]));
   for(int v : S.constrained_vars) sum_change += std::fabs(S.x[v] - ubar[v]);
   report.max_change = relative(max_change);
+  const Integer_grid_counts after = count_integer_structure(S.cm, S.st, S.rot, in_grid_units(S, S.x));
+  report.integer_translations_after = after.integer_translations;
+  report.cones_on_integer_points_after = after.cones_on_integer_points;
   report.mean_change = S.constrained_vars.empty() ? 0. : relative(sum_change / double(S.constrained_vars.size()));
   return SUCCESS;
 }
@@ -512,6 +560,18 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
     summary += "; " + std::to_string(report.collapsed_cut_edges) + " cut edge(s) have zero UV length (" +
                std::to_string(S.collapsed_in_input) + " of them already on one side in the input): the transition "
                "collapses them on both sides, so their faces are degenerate in UV";
+  if(opt.integer_grid_map) {
+    summary += "; integer-grid map: " + std::to_string(report.integer_translations_after) + " of " +
+               std::to_string(report.cut_edges) + " cut edges with integer translations, " +
+               std::to_string(report.cones_on_integer_points_after) + " of " + std::to_string(report.field_cones) +
+               " cones on integer points";
+    if(!report.not_field_cones.empty()) {
+      summary += "; not pinned: " + std::to_string(report.not_field_cones.size()) + " vertices whose UV angle sum is not " +
+                 "2 pi but whose rotations compose to the identity (fold-overs next to them, not cones of the field):";
+      for(std::size_t i = 0; i < report.not_field_cones.size() && i < 10; ++i) summary += " " + std::to_string(report.not_field_cones[i]);
+      if(report.not_field_cones.size() > 10) summary += " ...";
+    }
+  }
   return summary + S.flip_note;
 }
 

@@ -1,0 +1,359 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_INTEGER_GRID_CONSTRAINTS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_INTEGER_GRID_CONSTRAINTS_H
+
+// Integer-grid map (IGM) constraints (Bommes et al. 2009/2013): every transition u -> R^k u + t has
+// an integer t, every cone of the field sits on an integer point, aligned edges lie on integer
+// isolines. Rows with integer right-hand sides, appended to the full system after the homogeneous
+// rows of Eq. (4)/(5); the reduction substitutes Eq. (9) (connection_constraints.h).
+//
+// Translation of the cut edge e, h = halfedge(e), o = opposite(h), a = source(h), k = k(h): with
+// U^i the sector of a in face(h) (corner prev(h)) and U^j the sector of a in face(o) (corner o),
+//   t_e = U^j - R^k U^i                     (Eq. 3/7; the rows of Eq. 4 make it the same at target(h))
+// Rows: (U^j)_c - sign_c (U^i)_{col_c} = round(t_e)_c, c = 0, 1.
+// Alignment edge e with component c, face of its halfedge g: (U_{prev g})_c = round(ubar)_c.
+//
+// Checks, before any row is built (nothing is written on failure):
+// - "near an integer": |t - round(t)| <= tolerance in grid units (both ends of the edge) for every
+//   cut edge, and for every align edge its isoline value at both ends; otherwise INVALID_INPUT
+//   with advice (the input is not near an IGM: scale it, or snap without the integer-grid mode).
+// - around every interior vertex with cut edges, the rounded transitions, composed in turn
+//   (crossing halfedge g' from face(g') to face(opposite(g')): p -> R^k(g') p + t(g')), give
+//   p -> R^K p + T. K = 0 mod 4 (not a cone of the field): T must be 0, else the rounded
+//   translations contradict each other (INFEASIBLE). K != 0: the unique fixed point
+//   p = (I - R^K)^{-1} T (a cone) must be an integer point (INFEASIBLE otherwise, e.g. a
+//   half-integer forced by an odd translation around a 180 degree cone).
+// The rows of the cone's sectors then force it onto that integer point exactly; no separate cone
+// rows are needed. Vertices whose UV angle sum is not 2*pi but whose rotations compose to the
+// identity (fold-overs next to them) are not cones of the field: they are not pinned, and are
+// reported by vertex.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// default of Snap_options::integer_grid_tolerance: max distance (grid units) of a translation or
+// isoline value from an integer
+constexpr double default_integer_grid_tolerance = 1e-3;
+
+// the sectors i (face(h) side) and j (face(opposite(h)) side) of the source of h (front = true) or
+// of its target (front = false)
+inline void translation_corners(const Corner_mesh& cm, const Seam_topology& st, int h, bool front, int& si, int& sj)
+{
+  const int o = cm.opp[h];
+  si = st.sector_of[front ? cm.prev[h] : h];
+  sj = st.sector_of[front ? o : cm.prev[o]];
+}
+
+// t = U^j - R^k U^i at the source (front) or target of h, from the sector values x (2 per sector),
+// in doubles (rounded; for rounding to integers and for tolerances only)
+inline void translation(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, int h, bool front,
+                        const std::vector<double>& x, double t[2])
+{
+  int si, sj;
+  translation_corners(cm, st, h, front, si, sj);
+  const Quarter_turn R(rot.k[h]);
+  for(int c = 0; c < 2; ++c) t[c] = x[2 * sj + c] - R.sign[c] * x[2 * si + R.col[c]];
+}
+
+inline bool is_integer(const CGAL::Gmpq& q) { return q.denominator() == 1; }
+
+// true iff t of h at the given end is an integer vector, exactly
+inline bool exact_integer_translation(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, int h,
+                                      bool front, const std::vector<double>& x)
+{
+  int si, sj;
+  translation_corners(cm, st, h, front, si, sj);
+  const Quarter_turn R(rot.k[h]);
+  for(int c = 0; c < 2; ++c) {
+    const CGAL::Gmpq t = CGAL::Gmpq(x[2 * sj + c]) - CGAL::Gmpq(double(R.sign[c])) * CGAL::Gmpq(x[2 * si + R.col[c]]);
+    if(!is_integer(t)) return false;
+  }
+  return true;
+}
+
+// Integer structure of sector values x: cut edges whose translation is an integer vector at both
+// ends, and cones of the field (rotation sum K != 0 mod 4) whose every sector is an integer point.
+struct Integer_grid_counts
+{
+  std::size_t integer_translations = 0;
+  std::size_t field_cones = 0;
+  std::size_t cones_on_integer_points = 0;
+};
+
+// per interior vertex: the sum of the rotations k crossed once around it (mod 4), -1 elsewhere
+inline std::vector<int> field_rotation_sums(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot)
+{
+  std::vector<int> K(cm.n_vertices, -1);
+  for(int v = 0; v < cm.n_vertices; ++v) if(!cm.vertex_on_border[v]) K[v] = 0;
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(K[cm.source(h)] >= 0 && st.is_cut[cm.edge[h]]) K[cm.source(h)] += rot.k[h];
+  for(int& k : K) if(k >= 0) k = ((k % 4) + 4) % 4;
+  return K;
+}
+
+inline Integer_grid_counts count_integer_structure(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                                   const std::vector<double>& x)
+{
+  Integer_grid_counts n;
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[e];
+    if(exact_integer_translation(cm, st, rot, h, true, x) && exact_integer_translation(cm, st, rot, h, false, x))
+      ++n.integer_translations;
+  }
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  std::vector<char> on_integer(cm.n_vertices, 1);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h) || K[cm.target[h]] <= 0) continue;
+    const int s = st.sector_of[h];
+    if(!is_integer(CGAL::Gmpq(x[2 * s])) || !is_integer(CGAL::Gmpq(x[2 * s + 1]))) on_integer[cm.target[h]] = 0;
+  }
+  for(int v = 0; v < cm.n_vertices; ++v)
+    if(K[v] > 0) { ++n.field_cones; if(on_integer[v]) ++n.cones_on_integer_points; }
+  return n;
+}
+
+// true iff every cut-edge translation (at both ends) and every corner of every cone of the field is
+// within `tolerance` of an integer (the input "looks like" an integer-grid map)
+inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                   const std::vector<double>& x, double tolerance)
+{
+  auto near = [tolerance](double a) { return std::fabs(a - std::nearbyint(a)) <= tolerance; };
+  for(int e : st.cut_edges)
+    for(bool front : {true, false}) {
+      double t[2];
+      translation(cm, st, rot, cm.edge_halfedge[e], front, x, t);
+      if(!near(t[0]) || !near(t[1])) return false;
+    }
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h) || K[cm.target[h]] <= 0) continue;
+    const int s = st.sector_of[h];
+    if(!near(x[2 * s]) || !near(x[2 * s + 1])) return false;
+  }
+  return true;
+}
+
+struct Integer_grid_rows_result
+{
+  std::vector<int> cones;                 // vertices pinned to integer points (cones of the field)
+  std::vector<int> not_field_cones;       // UV angle sum != 2*pi, rotations compose to the identity
+};
+
+inline std::string point_name(double a, double b)
+{
+  return "(" + format_double(a, 17) + ", " + format_double(b, 17) + ")";
+}
+
+// Rounds, checks (see the header comment) and appends the integer-grid rows to `rows`.
+// On failure nothing is appended.
+inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                    const Align_edges& al, double tolerance, Constraint_rows& rows,
+                                    Integer_grid_rows_result& result, std::string& message)
+{
+  result = Integer_grid_rows_result();
+  const std::vector<double>& ubar = st.ubar;
+  // rounded translation per halfedge (cut edges), at the source of the halfedge
+  std::vector<long> t(2 * std::size_t(cm.n_halfedges), 0);
+  std::size_t far = 0;
+  std::string first_far;
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[e];
+    double ta[2], tb[2];
+    translation(cm, st, rot, h, true, ubar, ta);
+    translation(cm, st, rot, h, false, ubar, tb);
+    bool near = true;
+    for(int c = 0; c < 2; ++c) {
+      const double r = std::nearbyint(ta[c]);
+      near = near && std::fabs(r) < 0x1p52 && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
+      t[2 * h + c] = long(r);
+    }
+    if(!near) {
+      if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + point_name(ta[0], ta[1]);
+      continue;
+    }
+    // the opposite halfedge: t(o) = -R^{-k} t(h), k(o) = -k(h)
+    const int o = cm.opp[h];
+    const Quarter_turn Ri(-rot.k[h]);
+    for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
+  }
+  if(far > 0) {
+    message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
+              std::to_string(st.cut_edges.size()) + " cut-edge translations are farther than " + format_double(tolerance) +
+              " from integers (first: " + first_far + "); scale the map so that its grid lines fall on integers " +
+              "(grid_scale / --grid-scale, a power of two), or snap without integer_grid_map (--integer-grid)";
+    return INVALID_INPUT;
+  }
+  std::vector<long> isoline(cm.n_edges, 0);
+  for(int e : al.edges) {
+    const int g = al.halfedge[e], c = al.component[e];
+    const double a = ubar[2 * st.sector_of[cm.prev[g]] + c], b = ubar[2 * st.sector_of[g] + c];
+    const double r = std::nearbyint(a);
+    if(!(std::fabs(r) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
+      message = "the input is not near an integer-grid map: align edge " + vertex_pair_name(cm, g) + " lies on the isoline " +
+                std::string(c == 0 ? "u" : "v") + " = " + format_double(a, 17) + ", farther than " + format_double(tolerance) +
+                " from an integer; scale the map (grid_scale / --grid-scale), or snap without integer_grid_map (--integer-grid)";
+      return INVALID_INPUT;
+    }
+    isoline[e] = long(r);
+  }
+
+  // the rotations and rounded translations composed around every interior vertex with cut edges
+  std::vector<int> corner_of(cm.n_vertices, -1);
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && corner_of[cm.target[h]] < 0) corner_of[cm.target[h]] = h;
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    if(cm.vertex_on_border[v] || corner_of[v] < 0) continue;
+    if(st.cut_degree[v] == 0) {           // no transition around it: not a cone of the field
+      if(st.is_cone[v]) result.not_field_cones.push_back(v);
+      continue;
+    }
+    int K = 0;
+    long T[2] = {0, 0};
+    const int g0 = corner_of[v];
+    int g = g0;
+    do {
+      const int crossed = cm.next[g];          // source(crossed) = v
+      if(st.is_cut[cm.edge[crossed]]) {
+        const Quarter_turn R(rot.k[crossed]);
+        const long T0 = R.sign[0] * T[R.col[0]] + t[2 * crossed], T1 = R.sign[1] * T[R.col[1]] + t[2 * crossed + 1];
+        T[0] = T0; T[1] = T1;
+        K += rot.k[crossed];
+      }
+      g = cm.opp[crossed];
+    } while(g != g0);
+    K = ((K % 4) + 4) % 4;
+    if(K == 0) {
+      if(T[0] != 0 || T[1] != 0) {
+        message = "the rounded translations around vertex " + std::to_string(v) + " contradict each other: composed once " +
+                  "around it they translate by (" + std::to_string(T[0]) + ", " + std::to_string(T[1]) +
+                  ") instead of 0 (face " + std::to_string(cm.face[g0]) + "); nothing was written";
+        return INFEASIBLE;
+      }
+      if(st.is_cone[v]) result.not_field_cones.push_back(v);
+      continue;
+    }
+    // (I - R^K) p = T: p = T/2 (K = 2), ((T0 - T1)/2, (T0 + T1)/2) (K = 1), ((T0 + T1)/2, (T1 - T0)/2) (K = 3)
+    long num[2];
+    if(K == 2) { num[0] = T[0]; num[1] = T[1]; }
+    else if(K == 1) { num[0] = T[0] - T[1]; num[1] = T[0] + T[1]; }
+    else { num[0] = T[0] + T[1]; num[1] = T[1] - T[0]; }
+    if(num[0] % 2 != 0 || num[1] % 2 != 0) {
+      message = "cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * K) + " degrees): the rounded " +
+                "transitions around it have the fixed point " + point_name(num[0] / 2., num[1] / 2.) + " (frame of face " +
+                std::to_string(cm.face[g0]) + "), not an integer point; nothing was written";
+      return INFEASIBLE;
+    }
+    const int s = st.sector_of[g0];
+    if(std::fabs(ubar[2 * s] - double(num[0] / 2)) > tolerance || std::fabs(ubar[2 * s + 1] - double(num[1] / 2)) > tolerance) {
+      message = "cone at vertex " + std::to_string(v) + " sits at " + point_name(ubar[2 * s], ubar[2 * s + 1]) +
+                " (face " + std::to_string(cm.face[g0]) + ") but its rounded transitions force it to (" +
+                std::to_string(num[0] / 2) + ", " + std::to_string(num[1] / 2) + "), farther than " + format_double(tolerance) +
+                "; nothing was written";
+      return INFEASIBLE;
+    }
+    result.cones.push_back(v);
+  }
+
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[e], o = cm.opp[h];
+    const int si = st.sector_of[cm.prev[h]], sj = st.sector_of[o];
+    const Quarter_turn R(rot.k[h]);
+    for(int c = 0; c < 2; ++c) rows.add({ {2 * sj + c, 1}, {2 * si + R.col[c], -R.sign[c]} }, e, t[2 * h + c]);
+  }
+  for(int e : al.edges) {
+    const int g = al.halfedge[e];
+    rows.add({ {2 * st.sector_of[cm.prev[g]] + al.component[e], 1} }, e, isoline[e]);
+  }
+  return SUCCESS;
+}
+
+// grid scale S (UV units per grid unit: the integer grid of the map is at multiples of 1/S) -> s with
+// S = 2^s; false if S is not a power of two (a non-dyadic scale cannot be applied exactly)
+inline bool grid_scale_exponent(double S, int& s)
+{
+  if(!(S > 0) || !std::isfinite(S)) return false;
+  int e;
+  const double m = std::frexp(S, &e);
+  if(m != 0.5) return false;
+  s = e - 1;
+  return true;
+}
+
+// The exact test behind is_exact_integer_grid_map(): the map is exactly seamless
+// (is_exactly_seamless_impl) and, with every UV multiplied by 2^scale_exponent (exact in Gmpq),
+// - every cut edge has, for its rotation k (given, or among the k for which the transition holds
+//   exactly: several only for a zero-length cut edge), an integer translation t = U^j - R^k U^i;
+// - every interior vertex around which these k sum to K != 0 mod 4 (a cone of the field) has
+//   integer UVs in all its corners;
+// - every edge of `aligned` lies on an integer isoline (its constant coordinate is an integer).
+inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
+                                           const std::vector<int>& given_k, const std::vector<char>& aligned,
+                                           int scale_exponent)
+{
+  if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned)) return false;
+  const CGAL::Gmpq scale = scale_exponent >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << scale_exponent)
+                                               : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -scale_exponent);
+  auto U = [&](int h, int c) { return CGAL::Gmpq(c == 0 ? cm.u[h] : cm.v[h]) * scale; };
+  std::vector<int> K(cm.n_vertices, 0);
+  for(int e = 0; e < cm.n_edges; ++e) {
+    if(cm.is_border_edge(e)) continue;
+    const int h = cm.edge_halfedge[e], o = cm.opp[h];
+    if(!aligned.empty() && aligned[e]) {
+      const int g = cm.is_border_halfedge(h) ? o : h;
+      const int c = cm.u[g] == cm.u[cm.prev[g]] ? 0 : 1;   // exactly axis-parallel (checked above)
+      if(!is_integer(U(g, c))) return false;
+    }
+    const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
+    const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
+    if(!seam) continue;
+    int found = -1;
+    for(int k = 0; k < 4 && found < 0; ++k) {
+      if(!given_k.empty() && ((k - given_k[e]) % 4 + 4) % 4 != 0) continue;
+      if(!exact_transition_holds(cm, h, k)) continue;
+      const Quarter_turn R(k);
+      bool integral = true;      // t at source(h): U(o) - R^k U(prev h)
+      for(int c = 0; c < 2 && integral; ++c)
+        integral = is_integer(U(o, c) - CGAL::Gmpq(double(R.sign[c])) * U(cm.prev[h], R.col[c]));
+      if(integral) found = k;
+    }
+    if(found < 0) return false;
+    K[cm.source(h)] += found;
+    K[cm.target[h]] -= found;   // k(opposite(h)) = -k, seen from the other end
+  }
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    const int v = cm.target[h];
+    if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || (K[v] % 4 + 4) % 4 == 0) continue;
+    if(!is_integer(U(h, 0)) || !is_integer(U(h, 1))) return false;
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_INTEGER_GRID_CONSTRAINTS_H
