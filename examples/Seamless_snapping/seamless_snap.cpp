@@ -1,6 +1,8 @@
 // seamless_snap: the command-line program of the package.
 //
-//   seamless_snap IN.obj OUT.obj [--weld] [--no-align-boundary] [--unreduced] [--report FILE.json] [--quiet]
+//   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
+//                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
+//                 [--sharp-angle DEG] [--vt-per-corner] [--report FILE.json] [--quiet]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
 // UVs to nearby doubles that are exactly seamless (Mandad & Campen 2019), checks the result in
@@ -13,14 +15,19 @@
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/version.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 
@@ -36,7 +43,9 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary]\n"
-  "                     [--unreduced] [--fail-on-new-flips] [--report FILE.json] [--quiet]\n";
+  "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
+  "                     [--features FILE] [--sharp-angle DEG] [--vt-per-corner]\n"
+  "                     [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
   "Makes an approximately seamless UV map exactly seamless (Mandad & Campen 2019, \"Exact\n"
@@ -56,26 +65,90 @@ static const char* help_text =
   "  --no-weld            never weld; an input whose seams are then invisible is an error (exit 1)\n"
   "                       instead of 'already exactly seamless'\n"
   "  --keep-layout        write OUT.obj in the input's own layout: the same 'v' and 'vt' lines in the\n"
-  "                       same order (only moved UVs change) and the same face indices\n"
+  "                       same order (only moved UVs change) and the same face indices; not with\n"
+  "                       --integer-grid, --grid-scale, --features, --sharp-angle, --vt-per-corner\n"
   "  --fail-on-new-flips  exit 1 without writing OUT.obj when the snap leaves UV triangles flipped or\n"
   "                       degenerate that were positively oriented in the input\n"
   "  --no-align-boundary  do not make axis-parallel border edges exactly axis-parallel\n"
   "                       (by default, border edges within 1e-3 degrees of the u or v axis are aligned)\n"
   "  --unreduced          project the full sector system instead of the reduced node system\n"
   "                       (Sec. 5.3); much slower, for comparisons\n"
+  "  --integer-grid       make it an exact integer-grid map (quad meshing, e.g. libQEx): every seam\n"
+  "                       translation becomes the nearest integer vector, so every cone lands on\n"
+  "                       an integer point, and aligned border edges lie on integer isolines.\n"
+  "                       Refused (nothing written) when a translation is more than 1e-3 from an\n"
+  "                       integer (use --grid-scale), when rounded translations contradict each\n"
+  "                       other around a vertex, or when a cone's fixed point is not an integer\n"
+  "                       point. The result is checked with is_exact_integer_grid_map().\n"
+  "  --grid-scale S       the map's integer grid is at multiples of 1/S in UV (S a power of two,\n"
+  "                       applied exactly); with --integer-grid\n"
+  "  --features FILE      feature edges to align (made exactly parallel to the u or v axis; with\n"
+  "                       --integer-grid on integer isolines): one edge per line, two vertex indices\n"
+  "                       separated by blanks, 0-based in the order of the mesh's vertices (the file's\n"
+  "                       'v' lines when every vertex is used and --weld merges nothing); '#' starts a\n"
+  "                       comment. Each edge must be within 1e-3 degrees of an axis in UV.\n"
+  "  --sharp-angle DEG    also align every interior edge whose faces meet at a dihedral angle of more\n"
+  "                       than DEG degrees (angle between the face normals)\n"
+  "  --vt-per-corner      write one 'vt' per face corner (the layout libQEx's test meshes use)\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
   "\n"
   "Output: OUT.obj has one 'v' per vertex (after welding, if any), one 'vt' per vertex and\n"
-  "distinct UV, and 'f v/vt' faces (with --keep-layout: the input's layout); numbers have 17\n"
-  "significant digits, so the doubles are exact. OUT.obj is written atomically (temporary file +\n"
-  "rename): it is never left half written. Normals, groups and materials are not carried over.\n"
+  "distinct UV (or one per face corner, --vt-per-corner), and 'f v/vt' faces (with --keep-layout:\n"
+  "the input's layout); numbers have 17 significant digits, so the doubles are exact. OUT.obj is\n"
+  "written atomically (temporary file + rename): it is never left half written. Normals, groups\n"
+  "and materials are not carried over.\n"
   "The JSON report has the snap report's fields plus 'input', 'output' and 'version'.\n"
   "\n"
   "Exit status: 0 when OUT.obj was written and verified exactly seamless; 1 when reading,\n"
   "snapping, verifying or writing failed (one line on stderr says why; OUT.obj is then not\n"
   "created or changed); 2 for a command-line error.\n";
+
+typedef Mesh::Property_map<Mesh::Edge_index, bool>       Edge_flags;
+
+// --features FILE: one edge per line, "i j" (0-based vertex indices), '#' comments. False with a
+// message naming the line for a malformed line, an index out of range or a pair that is no edge.
+static bool read_feature_edges(const std::string& file, const Mesh& m, Edge_flags features, std::size_t& count,
+                               std::string& message)
+{
+  std::ifstream is(file);
+  if(!is) { message = "cannot open the feature file '" + file + "'"; return false; }
+  std::string line;
+  count = 0;
+  for(std::size_t no = 1; std::getline(is, line); ++no) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream ls(line);
+    long long a, b;
+    std::string rest;
+    if(!(ls >> a)) continue;   // blank or comment line
+    const std::string where = file + ":" + std::to_string(no) + ": ";
+    if(!(ls >> b) || (ls >> rest)) { message = where + "expected two vertex indices"; return false; }
+    if(a < 0 || b < 0 || a >= (long long)m.number_of_vertices() || b >= (long long)m.number_of_vertices()) {
+      message = where + "vertex index out of range (the mesh has " + std::to_string(m.number_of_vertices()) + " vertices)";
+      return false;
+    }
+    const auto h = m.halfedge(Mesh::Vertex_index(Mesh::size_type(a)), Mesh::Vertex_index(Mesh::size_type(b)));
+    if(h == Mesh::null_halfedge()) { message = where + "vertices " + std::to_string(a) + " and " + std::to_string(b) + " are not joined by an edge"; return false; }
+    put(features, m.edge(h), true);
+    ++count;
+  }
+  return true;
+}
+
+// --sharp-angle DEG: interior edges whose face normals differ by more than DEG degrees
+static std::size_t mark_sharp_edges(const Mesh& m, double degrees, Edge_flags features)
+{
+  std::size_t n = 0;
+  const double cos_limit = std::cos(degrees * CGAL_PI / 180);
+  for(Mesh::Edge_index e : m.edges()) {
+    if(m.is_border(e)) continue;
+    const K::Vector_3 a = CGAL::Polygon_mesh_processing::compute_face_normal(m.face(m.halfedge(e, 0)), m);
+    const K::Vector_3 b = CGAL::Polygon_mesh_processing::compute_face_normal(m.face(m.halfedge(e, 1)), m);
+    if(a * b < cos_limit && !get(features, e)) { put(features, e, true); ++n; }
+  }
+  return n;
+}
 
 static std::string one_line(std::string s)
 {
@@ -137,6 +210,11 @@ int main(int argc, char** argv)
   std::string in, out, report_file;
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
   bool align_boundary = true, reduced = true, quiet = false, has_report = false;
+  bool integer_grid = false;
+  double grid_scale = 1;
+  bool vt_per_corner = false;
+  std::string features_file;
+  double sharp_angle = -1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
@@ -147,6 +225,27 @@ int main(int argc, char** argv)
     else if(a == "--no-align-boundary") align_boundary = false;
     else if(a == "--unreduced") reduced = false;
     else if(a == "--quiet") quiet = true;
+    else if(a == "--integer-grid") integer_grid = true;
+    else if(a == "--vt-per-corner") vt_per_corner = true;
+    else if(a == "--features") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
+      features_file = argv[++i];
+    }
+    else if(a == "--sharp-angle") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (sharp_angle = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !(sharp_angle >= 0 && sharp_angle <= 180)) {
+        std::cerr << "seamless_snap: --sharp-angle needs an angle in degrees in [0, 180]\n" << usage_text; return 2;
+      }
+      ++i;
+    }
+    else if(a == "--grid-scale") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
+        std::cerr << "seamless_snap: --grid-scale needs a number\n" << usage_text; return 2;
+      }
+      ++i;
+    }
     else if(a == "--report") {
       if(i + 1 >= argc) { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
       report_file = argv[++i]; has_report = true;
@@ -157,6 +256,11 @@ int main(int argc, char** argv)
     else { std::cerr << "seamless_snap: unexpected argument '" << a << "'\n" << usage_text; return 2; }
   }
   if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
+  if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner)) {
+    std::cerr << "seamless_snap: --keep-layout does not combine with --integer-grid, --grid-scale, --features, "
+                 "--sharp-angle or --vt-per-corner (not supported yet)\n" << usage_text;
+    return 2;
+  }
   if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
 
   // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
@@ -174,15 +278,28 @@ int main(int argc, char** argv)
   }
   if(!quiet) std::cout << message << "\n";
 
+  // feature edges (aligned like border edges; an empty map aligns nothing more)
+  Edge_flags features = mesh.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+  if(!features_file.empty()) {
+    std::size_t n = 0;
+    if(!read_feature_edges(features_file, mesh, features, n, message)) return fail(message);
+    if(!quiet) std::cout << n << " feature edges read from " << features_file << "\n";
+  }
+  if(sharp_angle >= 0) {
+    const std::size_t n = mark_sharp_edges(mesh, sharp_angle, features);
+    if(!quiet) std::cout << n << " sharp edges (dihedral angle > " << sharp_angle << " degrees) to align\n";
+  }
+
   // 2. snap (writes the UVs only on success); with --keep-layout through the matrix entry point,
   //    which keeps the input's v/vt layout
   Eigen::MatrixXd V, UV, UV_out;
   Eigen::MatrixXi F, FUV, FUV_out;
   if(keep_layout && SS::IO::read_OBJ_matrices(in, V, F, UV, FUV, message) != SS::SUCCESS)
     return fail("cannot read input: " + message);
-  const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary);
+  const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
+                     .integer_grid_map(integer_grid).grid_scale(grid_scale);
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
-                                             : SS::snap_seamless_parameterization(mesh, uv, np);
+                                             : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features));
   if(!quiet) {
     std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms,
                 report.message.empty() ? "" : ": ", one_line(report.message).c_str());
@@ -197,7 +314,19 @@ int main(int argc, char** argv)
                 " introduced and left %zu / %zu\n", report.flips_before, report.degenerate_before, report.flips_after,
                 report.degenerate_after, report.flips_after_repair, report.degenerate_after_repair,
                 report.flips_unrepaired, report.degenerate_unrepaired);
+    if(report.status == SS::SUCCESS)
+      std::printf("  integer grid: %zu -> %zu of %zu cut edges with integer translations, %zu -> %zu of %zu cones "
+                "on integer points\n", report.integer_translations_before, report.integer_translations_after,
+                report.cut_edges, report.cones_on_integer_points_before, report.cones_on_integer_points_after,
+                report.field_cones);
   }
+  if(!integer_grid && report.near_integer_grid_map && !quiet)
+    std::cout << "note: the input looks like an integer-grid map (every seam translation and cone within 1e-6 of "
+              << "integers); use --integer-grid to keep it one exactly (quad extraction, e.g. libQEx)\n";
+  if(!integer_grid && report.status == SS::SUCCESS &&
+     report.cones_on_integer_points_after < report.cones_on_integer_points_before)
+    std::cerr << "seamless_snap: warning: " << report.cones_on_integer_points_before - report.cones_on_integer_points_after
+              << " cones that were exactly on integer points moved off them; --integer-grid keeps them\n";
   if(has_report) {
     std::string json = report.to_json();
     json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
@@ -218,11 +347,17 @@ int main(int argc, char** argv)
 
   // 3. verify independently, in rational arithmetic; 4. write atomically
   const bool exact = keep_layout ? SS::is_exactly_seamless(V, F, UV_out, FUV_out, params::weld_vertices(weld))
-                                 : SS::is_exactly_seamless(mesh, uv);
+                                 : SS::is_exactly_seamless(mesh, uv, params::edge_is_constrained_map(features));
   if(!exact) return fail("verification failed: the snapped map is not exactly seamless (internal error; please report)");
   if(!quiet) std::cout << "verified: every seam transition holds exactly\n";
+  if(integer_grid && !keep_layout &&
+     !SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale).edge_is_constrained_map(features)))
+    return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
+  if(integer_grid && !keep_layout && !quiet)
+    std::cout << "verified: integer translations on every cut edge, every cone on an integer point\n";
   const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
-                                         : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message);
+                                         : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message,
+                                                                             params::vt_per_corner(vt_per_corner));
   if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
   return EXIT_SUCCESS;

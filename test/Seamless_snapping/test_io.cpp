@@ -1,6 +1,7 @@
 // Tests of IO/OBJ.h (per-corner UV OBJ reading/writing) and of internal/inputs/orbifold_tutte_input.h.
 //
-//   io: every shared UV file reads, counts match SOURCES.md, write -> read is bit-exact
+//   io: every shared UV file reads, counts match SOURCES.md, write -> read is bit-exact, also with
+//       vt_per_corner(true) (then the file has exactly 3 #f vt lines, libQEx's layout)
 //   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
 //   io: an invalid mesh or an unwritable place writes no file (atomic write)
 //   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not
@@ -164,6 +165,20 @@ static void test_shared_data(const fs::path& tmp)
     CHECK(s == SS::SUCCESS, "re-read " << out << ": " << msg2);
     std::string why;
     CHECK(s == SS::SUCCESS && bit_identical(m, uv, m2, uv2, why), "bit-exact round trip of " << file << ": " << why);
+    fs::remove(out);
+    // one vt per face corner
+    s = SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, wmsg, SS::parameters::vt_per_corner(true));
+    CHECK(s == SS::SUCCESS, "write (vt per corner) " << out << ": " << wmsg);
+    std::size_t vt_lines = 0;
+    {
+      std::ifstream is(out);
+      for(std::string line; std::getline(is, line);) if(line.compare(0, 3, "vt ") == 0) ++vt_lines;
+    }
+    CHECK(vt_lines == 3 * std::size_t(m.number_of_faces()), file << ": " << vt_lines << " vt lines with vt_per_corner");
+    Mesh m3;
+    UV_map uv3 = m3.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+    s = SS::IO::read_OBJ_with_corner_uvs(out.string(), m3, uv3, msg2);
+    CHECK(s == SS::SUCCESS && bit_identical(m, uv, m3, uv3, why), "bit-exact round trip (vt per corner) of " << file << ": " << why);
     fs::remove(out);
 
     std::size_t border = 0;

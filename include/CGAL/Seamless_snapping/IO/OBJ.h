@@ -442,7 +442,8 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
 // Validates and formats the whole file in memory (a few tens of MB at most for real meshes),
 // so that no byte is written for an invalid mesh.
 template <class TriangleMesh, class VPM, class HalfedgeUVMap>
-Status format_obj(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, std::string& out, std::string& message)
+Status format_obj(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, bool vt_per_corner, std::string& out,
+                  std::string& message)
 {
   typedef boost::graph_traits<TriangleMesh>            GT;
   typedef typename GT::vertex_descriptor               vertex_descriptor;
@@ -468,7 +469,8 @@ Status format_obj(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, std::string
   }
 
   // One vt per (vertex, bit-identical UV): corners of one vertex with the same UV share it, as
-  // inside a chart; a seam (different UV) or another vertex gets its own.
+  // inside a chart; a seam (different UV) or another vertex gets its own. With `vt_per_corner`, one
+  // vt per face corner (libQEx's layout).
   std::vector<std::vector<std::pair<std::array<std::uint64_t, 2>, std::size_t> > > vt_of_vertex(nv);
   std::vector<std::array<double, 2> > vts;
   std::vector<std::array<std::size_t, 6> > fs;   // v0 vt0 v1 vt1 v2 vt2 (0-based)
@@ -490,11 +492,12 @@ Status format_obj(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, std::string
       const std::size_t v = get(vid, target(h, tm));
       const std::array<std::uint64_t, 2> key = {double_bits(u), double_bits(w)};
       std::size_t t_id = std::size_t(-1);
-      for(const auto& e : vt_of_vertex[v]) if(e.first == key) { t_id = e.second; break; }
+      if(!vt_per_corner)
+        for(const auto& e : vt_of_vertex[v]) if(e.first == key) { t_id = e.second; break; }
       if(t_id == std::size_t(-1)) {
         t_id = vts.size();
         vts.push_back({u, w});
-        vt_of_vertex[v].emplace_back(key, t_id);
+        if(!vt_per_corner) vt_of_vertex[v].emplace_back(key, t_id);
       }
       row[2 * k] = v; row[2 * k + 1] = t_id;
       ++k;
@@ -606,7 +609,7 @@ Status format_obj_np(const TriangleMesh& tm, HalfedgeUVMap uv, std::string& out,
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
-  return format_obj(tm, vpm, uv, out, message);
+  return format_obj(tm, vpm, uv, choose_parameter(get_parameter(np, snap_np::vt_per_corner), false), out, message);
 }
 
 } // namespace internal
@@ -739,6 +742,13 @@ Status read_OBJ_with_corner_uvs(std::istream& is, TriangleMesh& tm, HalfedgeUVMa
  *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
  *                    as key type and a 3D point type as value type}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vt_per_corner}
+ *     \cgalParamDescription{write one `vt` per face corner (`3 * #faces` of them, the layout of libQEx's test meshes)
+ *                           instead of one per vertex and distinct UV}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::vt_per_corner()`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
