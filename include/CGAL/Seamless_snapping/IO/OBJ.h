@@ -176,7 +176,7 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
     // a UTF-8 byte-order mark at the start of the file is not part of the first record
     if(lineno == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) p += 3;
     // A '#' starts a comment anywhere on the line (also covers "#scale_uv" and friends).
-    if(const void* hash = std::memchr(p, '#', line.size()))
+    if(const void* hash = std::memchr(p, '#', std::size_t(end - p)))   // from p: after a byte-order mark too
       end = static_cast<const char*>(hash);
     skip_spaces(p, end);
     if(p == end) continue;
