@@ -150,8 +150,11 @@ bool evaluate_on_row_grids(const Irref<Int>& ir, const Integer_system& sys, cons
   for(std::size_t i = 0; i < n; ++i) {
     if(ir.kind[i] != FREE_COLUMN) continue;
     if(F[i] > 1023) return false;
-    CGAL::Gmpz odd = to_gmpz(Ops::abs(ir.divisor[i]));
-    mpz_tdiv_q_2exp(odd.mpz(), odd.mpz(), (unsigned long)two_adic_valuation(odd));
+    // a fresh destination: CGAL::Gmpz copies share their representation, and an in-place write
+    // through to_gmpz()'s copy would change the IRREF's divisor for every later projection
+    const CGAL::Gmpz divisor = to_gmpz(Ops::abs(ir.divisor[i]));
+    CGAL::Gmpz odd;
+    mpz_tdiv_q_2exp(odd.mpz(), divisor.mpz(), (unsigned long)two_adic_valuation(divisor));
     CGAL::Gmpz mx; int ex;
     split_dyadic(xbar[i], mx, ex);                     // x̄_i = mx 2^ex
     const long k = long(ex) - F[i];
