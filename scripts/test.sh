@@ -5,7 +5,7 @@
 #   $build/asan   the test executables with AddressSanitizer + UndefinedBehaviorSanitizer
 #                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, g++ -O1 -g1; all but test_projection in their --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
-#                 60 s with a fixed seed on generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
+#                 on 20000 inputs with a fixed seed from generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
 # Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves
 # out the sanitizer and fuzz builds (a quick local run). Any failure makes the script exit non-zero.
 set -euo pipefail

@@ -1,8 +1,8 @@
-# CTest driver of fuzz__<target>: runs FUZZER for SECONDS seconds with a fixed seed, on a fresh
+# CTest driver of fuzz__<target>: runs FUZZER on RUNS inputs (at most SECONDS seconds) with a fixed seed, on a fresh
 # working corpus WORK (new inputs go there), the seeds SEEDS and the past findings REGRESSIONS;
 # crashes and failed checks are written to ARTIFACTS and fail the test.
-#   cmake -DFUZZER=... -DSECONDS=60 -DWORK=... -DARTIFACTS=... -DSEEDS=... -DREGRESSIONS=... -P run_fuzzer.cmake
-foreach(var FUZZER SECONDS WORK ARTIFACTS SEEDS REGRESSIONS)
+#   cmake -DFUZZER=... -DRUNS=20000 -DSECONDS=300 -DWORK=... -DARTIFACTS=... -DSEEDS=... -DREGRESSIONS=... -P run_fuzzer.cmake
+foreach(var FUZZER RUNS SECONDS WORK ARTIFACTS SEEDS REGRESSIONS)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_fuzzer.cmake: ${var} is not set")
   endif()
@@ -10,7 +10,7 @@ endforeach()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}" "${ARTIFACTS}")
 get_filename_component(name "${FUZZER}" NAME)
-execute_process(COMMAND "${FUZZER}" -seed=1 -max_total_time=${SECONDS} -timeout=60 -rss_limit_mb=2560
+execute_process(COMMAND "${FUZZER}" -seed=1 -runs=${RUNS} -max_total_time=${SECONDS} -timeout=60 -rss_limit_mb=2560
                         -print_final_stats=1 "-artifact_prefix=${ARTIFACTS}/${name}-"
                         "${WORK}" "${SEEDS}" "${REGRESSIONS}"
                 RESULT_VARIABLE rc)
