@@ -9,7 +9,10 @@
 # Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves
 # out the sanitizer and fuzz builds (a quick local run). Any failure makes the script exit non-zero.
 set -euo pipefail
+SECONDS=0
+phase() { echo "test: [$((SECONDS / 60))m$((SECONDS % 60))s] $*"; }   # elapsed time in the CI log
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+phase "Release build"
 bash "$root/scripts/build.sh"
 build="${SEAMLESS_SNAPPING_BUILD_DIR:-$root/build}"
 build="$(cd "$build" && pwd)"
@@ -17,7 +20,7 @@ jobs="$(nproc)"
 dirs=("$build")
 
 if [ "${SEAMLESS_SNAPPING_CHECKS:-1}" != 0 ]; then
-  echo "test: sanitizer build in $build/asan"
+  phase "sanitizer build in $build/asan"
   cmake -S "$root" -B "$build/asan" -DCMAKE_BUILD_TYPE=Release -DSEAMLESS_SNAPPING_SANITIZE=ON >/dev/null
   cmake --build "$build/asan" -j "$jobs"
   dirs+=("$build/asan")
@@ -27,7 +30,7 @@ if [ "${SEAMLESS_SNAPPING_CHECKS:-1}" != 0 ]; then
   echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' > "$probe/probe.cpp"
   if command -v clang++ >/dev/null 2>&1 &&
      clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" >/dev/null 2>&1; then
-    echo "test: fuzz build in $build/fuzz"
+    phase "fuzz build in $build/fuzz"
     cmake -S "$root" -B "$build/fuzz" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
           -DSEAMLESS_SNAPPING_FUZZ=ON >/dev/null
     cmake --build "$build/fuzz" -j "$jobs"
@@ -42,4 +45,8 @@ all="$build/all_tests"
 mkdir -p "$all"
 : > "$all/CTestTestfile.cmake"
 for d in "${dirs[@]}"; do echo "subdirs(\"$d\")" >> "$all/CTestTestfile.cmake"; done
-ctest --test-dir "$all" --output-on-failure -j "$jobs"
+phase "tests"
+status=0
+ctest --test-dir "$all" --output-on-failure -j "$jobs" || status=$?
+phase "done (ctest exit $status)"
+exit "$status"
