@@ -30,6 +30,12 @@
 //   integer grid: orbifold                               CGAL Orbifold Tutte square map (cones on the unit square's
 //                                                        corners): an exact IGM after; scaled by 0.3: INVALID_INPUT
 //                                                        with advice, map bit-identical
+//   pinned corners: torus, data                          pinned_corner_map, default and integer-grid mode: pinned
+//                                                        corners stay bit-identical, the result is exactly seamless
+//                                                        (an exact IGM), at scales 2^0, 2^-7, 2^9 bit for bit; a pin
+//                                                        below the grid quantum is RANGE_EXCEEDED, contradicting
+//                                                        pins INFEASIBLE, map untouched; fandisk with every
+//                                                        integer corner pinned
 //   right-hand sides                                     Constraint_rows with b != 0: the exact residual is
 //                                                        C x - b, 0 = b != 0 is recorded as a contradiction,
 //                                                        project_rows() solves C x = b exactly (scale 2^j too)
@@ -604,6 +610,176 @@ static void test_integer_grid_orbifold()
             << " of " << r.cut_edges << " integer translations; scaled by 0.3 refused: " << rs.message << "\n";
 }
 
+// ---------------------------------------------------------------------------------------------
+// pinned corners (pinned_corner_map), default and integer-grid mode
+// ---------------------------------------------------------------------------------------------
+
+typedef Mesh::Property_map<halfedge_descriptor, bool> Pin_map;
+
+static Pin_map pins_of(Mesh& m)
+{
+  Pin_map pin = m.add_property_map<halfedge_descriptor, bool>("h:pinned_test", false).first;
+  for(halfedge_descriptor h : m.halfedges()) put(pin, h, false);
+  return pin;
+}
+
+// pins every non-border corner whose UV is `p`; returns how many
+static std::size_t pin_uv(const Mesh& m, UV_map uv, Pin_map pin, const Point_2& p)
+{
+  std::size_t n = 0;
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h) && get(uv, h) == p) { put(pin, h, true); ++n; }
+  return n;
+}
+
+// true iff every pinned corner of (m, uv) has the bits of the same corner of (m0, uv0)
+static bool pinned_bit_identical(const Mesh& m, UV_map uv, Pin_map pin, const std::vector<std::uint64_t>& bits0)
+{
+  const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+  std::size_t i = 0;
+  for(halfedge_descriptor h : m.halfedges()) {   // uv_bits: 2 words per halfedge, in this order
+    if(get(pin, h) && (bits[2 * i] != bits0[2 * i] || bits[2 * i + 1] != bits0[2 * i + 1])) return false;
+    ++i;
+  }
+  return true;
+}
+
+// the flat 3 x 3 torus with period 3 + 2^-51 in u, and the corners of vertex (1, 0) whose UV is (1, 0)
+// moved by 2^-40 in u: not exactly seamless (the translation of the j = 0 seam differs at vertex (1, 0))
+static void make_perturbed_torus(Mesh& m, UV_map& uv, double scale)
+{
+  make_flat_torus(m, uv, 3, 3 + std::ldexp(1., -51));
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h) && get(uv, h) == Point_2(1, 0)) put(uv, h, Point_2(1 + std::ldexp(1., -40), 0));
+  for(halfedge_descriptor h : m.halfedges())
+    put(uv, h, Point_2(get(uv, h).x() * scale, get(uv, h).y() * scale));
+}
+
+static void test_pinned_corners_analytic()
+{
+  for(bool igm : {false, true}) {
+    const char* mode = igm ? "integer grid" : "default";
+    std::vector<std::uint64_t> reference;    // the result at scale 1, for the covariance check
+    for(int j : {0, -7, 9}) {
+      const double scale = std::ldexp(1., j);
+      Mesh m; UV_map uv;
+      make_perturbed_torus(m, uv, scale);
+      assert(!SS::is_exactly_seamless(m, uv));
+      Pin_map pin = pins_of(m);
+      // vertex (1, 0) on the side j = 3 of the seam j = 0 (its other side is the perturbed one), vertex (2, 0)
+      // on the side j = 0, and the free vertex (1, 1)
+      assert(pin_uv(m, uv, pin, Point_2(scale, 3 * scale)) > 0 && pin_uv(m, uv, pin, Point_2(2 * scale, 0)) > 0);
+      assert(pin_uv(m, uv, pin, Point_2(scale, scale)) == 6);
+      const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+          SS::parameters::pinned_corner_map(pin).integer_grid_map(igm).grid_scale(igm ? 1 / scale : 1.));
+      if(r.status != SS::SUCCESS) std::cerr << mode << ": " << SS::status_name(r.status) << " " << r.message << std::endl;
+      assert(r.status == SS::SUCCESS && r.pinned_sectors == 3);
+      assert(uv_bits(m, uv) != bits0 && pinned_bit_identical(m, uv, pin, bits0));
+      assert(SS::is_exactly_seamless(m, uv));
+      if(igm) assert(SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(1 / scale)));
+      // the same pins without the flag: the result differs only where the pins hold it (sanity of the test:
+      // the pinned sectors do move without pins)
+      if(j == 0) {
+        Mesh f; UV_map uvf;
+        make_perturbed_torus(f, uvf, 1);
+        Pin_map pf = pins_of(f);
+        pin_uv(f, uvf, pf, Point_2(1, 3)); pin_uv(f, uvf, pf, Point_2(2, 0)); pin_uv(f, uvf, pf, Point_2(1, 1));
+        const std::vector<std::uint64_t> b0 = uv_bits(f, uvf);
+        const SS::Snap_report rf = SS::snap_seamless_parameterization(f, uvf, SS::parameters::integer_grid_map(igm));
+        assert(rf.status == SS::SUCCESS && !pinned_bit_identical(f, uvf, pf, b0));
+      }
+      // covariance: the result at scale 2^j is the result at scale 1 times 2^j, bit for bit
+      std::vector<std::uint64_t> unscaled;
+      for(halfedge_descriptor h : m.halfedges()) {
+        const double a = get(uv, h).x() / scale, b = get(uv, h).y() / scale;
+        std::uint64_t wa, wb;
+        std::memcpy(&wa, &a, 8); std::memcpy(&wb, &b, 8);
+        unscaled.push_back(wa); unscaled.push_back(wb);
+      }
+      if(j == 0) reference = unscaled;
+      else assert(unscaled == reference);
+      if(j == 0) std::cout << "pinned corners: " << mode << " torus: OK, scales 2^0, 2^-7, 2^9 bit for bit (" << r.message << ")\n";
+    }
+    // a pin with bits below the grid quantum: the corner at u = 3 + 2^-51 (quantum 2^-49): RANGE_EXCEEDED, untouched
+    {
+      Mesh m; UV_map uv;
+      make_perturbed_torus(m, uv, 1);
+      Pin_map pin = pins_of(m);
+      assert(pin_uv(m, uv, pin, Point_2(3 + std::ldexp(1., -51), 1)) > 0);
+      const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+          SS::parameters::pinned_corner_map(pin).integer_grid_map(igm));
+      if(r.status != SS::RANGE_EXCEEDED) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+      assert(r.status == SS::RANGE_EXCEEDED && uv_bits(m, uv) == bits0);
+      assert(r.message.find("pinned corner (vertex") != std::string::npos && r.message.find("round the pinned UV") != std::string::npos);
+      std::cout << "pinned corners: " << mode << ": off-grid pin refused: " << r.message << "\n";
+    }
+    // contradicting pins: both sides of vertices (1, 0) and (2, 0) of one seam branch, whose translations differ
+    // by 2^-40: INFEASIBLE naming the pinned corners, untouched
+    {
+      Mesh m; UV_map uv;
+      make_perturbed_torus(m, uv, 1);
+      Pin_map pin = pins_of(m);
+      pin_uv(m, uv, pin, Point_2(1 + std::ldexp(1., -40), 0)); pin_uv(m, uv, pin, Point_2(1, 3));
+      pin_uv(m, uv, pin, Point_2(2, 0)); pin_uv(m, uv, pin, Point_2(2, 3));
+      const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+          SS::parameters::pinned_corner_map(pin).integer_grid_map(igm));
+      if(r.status != SS::INFEASIBLE) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+      assert(r.status == SS::INFEASIBLE && uv_bits(m, uv) == bits0);
+      assert(r.message.find("pinned corner (vertex") != std::string::npos);
+      std::cout << "pinned corners: " << mode << ": contradicting pins refused: " << r.message << "\n";
+    }
+  }
+}
+
+// a shared file (libQEx fandisk, near an IGM): every corner with integer UVs pinned, in both modes; and a
+// corner whose UV has bits below any grid quantum of this map (lowest bit < 2^-53, while the constrained UVs
+// reach |u| > 1, so the quantum is at least 2^-51) is refused
+static void test_pinned_corners_data()
+{
+  Mesh m0;
+  if(!load_shared_or_skip("libqex/fandisk_param.obj", "pinned corners: data", m0)) return;
+  for(bool igm : {false, true}) {
+    Mesh m = m0;
+    UV_map uv = uv_of(m);
+    Pin_map pin = pins_of(m);
+    std::size_t n = 0;
+    halfedge_descriptor fine;
+    bool has_fine = false;
+    for(halfedge_descriptor h : m.halfedges()) {
+      if(m.is_border(h)) continue;
+      const Point_2 p = get(uv, h);
+      if(p.x() == std::nearbyint(p.x()) && p.y() == std::nearbyint(p.y())) { put(pin, h, true); ++n; }
+      else if(!has_fine && std::fmod(p.x(), std::ldexp(1., -53)) != 0) { fine = h; has_fine = true; }
+    }
+    const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+        SS::parameters::pinned_corner_map(pin).integer_grid_map(igm));
+    if(r.status != SS::SUCCESS) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+    assert(r.status == SS::SUCCESS && n > 0 && r.pinned_sectors > 0);
+    assert(pinned_bit_identical(m, uv, pin, bits0) && uv_bits(m, uv) != bits0);
+    assert(SS::is_exactly_seamless(m, uv));
+    if(igm) assert(SS::is_exact_integer_grid_map(m, uv));
+    // default mode: every field cone on an integer point stays there (without pins, 7 of 30 move off)
+    assert(r.cones_on_integer_points_after >= r.cones_on_integer_points_before);
+    std::printf("pinned corners: fandisk %s: %zu corners with integer UVs pinned (%zu sectors), cones on integers %zu -> %zu "
+                "of %zu, change %.3g, %.0f ms\n", igm ? "integer grid" : "default", n, r.pinned_sectors,
+                r.cones_on_integer_points_before, r.cones_on_integer_points_after, r.field_cones, r.max_change, r.total_ms);
+    assert(has_fine);
+    Mesh q = m0;
+    UV_map uvq = uv_of(q);
+    Pin_map pq = pins_of(q);
+    put(pq, fine, true);
+    const std::vector<std::uint64_t> bq = uv_bits(q, uvq);
+    const SS::Snap_report rq = SS::snap_seamless_parameterization(q, uvq,
+        SS::parameters::pinned_corner_map(pq).integer_grid_map(igm));
+    if(rq.status != SS::RANGE_EXCEEDED) std::cerr << SS::status_name(rq.status) << " " << rq.message << std::endl;
+    assert(rq.status == SS::RANGE_EXCEEDED && uv_bits(q, uvq) == bq);
+  }
+}
+
 // Constraint_rows with integer right-hand sides, through the exact check and project_rows()
 static void test_right_hand_sides()
 {
@@ -636,6 +812,8 @@ int main(int argc, char** argv)
   parse_test_arguments(argc, argv);
   test_right_hand_sides();
   test_integer_grid_analytic();
+  test_pinned_corners_analytic();
+  test_pinned_corners_data();
   if(!sanitizer_subset()) test_integer_grid_orbifold();
   test_integer_grid_data();
   test_invalid();

@@ -43,6 +43,7 @@ SS_PARAMETER(SS::snap_np::repair_flips_t, repair_flips, 9)
 SS_PARAMETER(SS::snap_np::integer_grid_map_t, integer_grid_map, 13)
 SS_PARAMETER(SS::snap_np::grid_scale_t, grid_scale, 14)
 SS_PARAMETER(SS::snap_np::vt_per_corner_t, vt_per_corner, 15)
+SS_PARAMETER(SS::snap_np::pinned_corner_map_t, pinned_corner_map, 16)
 // CGAL's, as the package's functions take them
 SS_PARAMETER(CGAL::internal_np::verbose_t, verbose, 10)
 SS_PARAMETER(CGAL::internal_np::edge_is_constrained_t, edge_is_constrained_map, 11)
@@ -79,23 +80,23 @@ int main()
 {
   run<P_seam_edge_map, P_rotation_map, P_align_boundary, P_use_reduced_system, P_alignment_tolerance,
       P_rotation_tolerance, P_weld_vertices, P_connection_constraints, P_repair_flips,
-      P_integer_grid_map, P_grid_scale, P_vt_per_corner,
+      P_integer_grid_map, P_grid_scale, P_vt_per_corner, P_pinned_corner_map,
       P_verbose, P_edge_is_constrained_map, P_geom_traits>();
 
   const auto forward = chain<decltype(P_seam_edge_map::start()), P_rotation_map, P_align_boundary, P_use_reduced_system,
                              P_alignment_tolerance, P_rotation_tolerance, P_weld_vertices, P_connection_constraints,
-                             P_repair_flips, P_integer_grid_map, P_grid_scale, P_vt_per_corner, P_verbose,
+                             P_repair_flips, P_integer_grid_map, P_grid_scale, P_vt_per_corner, P_pinned_corner_map, P_verbose,
                              P_edge_is_constrained_map, P_geom_traits>(P_seam_edge_map::start());
-  const auto backward = chain<decltype(P_geom_traits::start()), P_edge_is_constrained_map, P_verbose, P_vt_per_corner,
+  const auto backward = chain<decltype(P_geom_traits::start()), P_edge_is_constrained_map, P_verbose, P_pinned_corner_map, P_vt_per_corner,
                               P_grid_scale, P_integer_grid_map, P_repair_flips,
                               P_connection_constraints, P_weld_vertices, P_rotation_tolerance, P_alignment_tolerance,
                               P_use_reduced_system, P_align_boundary, P_rotation_map, P_seam_edge_map>(P_geom_traits::start());
   check_all<decltype(forward), P_seam_edge_map, P_rotation_map, P_align_boundary, P_use_reduced_system, P_alignment_tolerance,
             P_rotation_tolerance, P_weld_vertices, P_connection_constraints, P_repair_flips, P_integer_grid_map,
-            P_grid_scale, P_vt_per_corner, P_verbose, P_edge_is_constrained_map, P_geom_traits>(forward, "forward chain");
+            P_grid_scale, P_vt_per_corner, P_pinned_corner_map, P_verbose, P_edge_is_constrained_map, P_geom_traits>(forward, "forward chain");
   check_all<decltype(backward), P_seam_edge_map, P_rotation_map, P_align_boundary, P_use_reduced_system, P_alignment_tolerance,
             P_rotation_tolerance, P_weld_vertices, P_connection_constraints, P_repair_flips, P_integer_grid_map,
-            P_grid_scale, P_vt_per_corner, P_verbose, P_edge_is_constrained_map, P_geom_traits>(backward, "backward chain");
+            P_grid_scale, P_vt_per_corner, P_pinned_corner_map, P_verbose, P_edge_is_constrained_map, P_geom_traits>(backward, "backward chain");
 
   // the older spelling appends to any pack, CGAL's own included
   const auto old = SP::repair_flips(9, SP::connection_constraints(8, CGAL::parameters::verbose(10)));

@@ -86,6 +86,7 @@ struct Snap_report
   bool near_integer_grid_map = false;         ///< the input's translations and field cones are all within 1e-6 of integers (it looks like an IGM)
   std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
   std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
+  std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
   /// \name Timings (milliseconds, wall clock)
@@ -134,6 +135,7 @@ struct Snap_report
     num("cones_on_integer_points_after", double(cones_on_integer_points_after));
     o << "  \"near_integer_grid_map\": " << (near_integer_grid_map ? "true" : "false") << ",\n";
     num("pinned_cones", double(pinned_cones)); num("not_field_cones", double(not_field_cones.size()));
+    num("pinned_sectors", double(pinned_sectors));
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
     num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms);

@@ -219,6 +219,26 @@ namespace Seamless_snapping {
  *     \cgalParamDefault{1}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::grid_scale()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{pinned_corner_map}
+ *     \cgalParamDescription{corners whose UV is kept bit-identical, in both modes: `true` for `h` pins the corner
+ *                           whose UV `uv[h]` holds (for a border halfedge, the corner it mirrors). The two variables
+ *                           of the corner's sector become constants, rows `x = p` with `p` the corner's input UV and
+ *                           right-hand sides `b != 0` (the addendum's Eq. 2'); the sector's vertex becomes a node of
+ *                           the reduction, and neither the minimal change nor the flip repair moves it. The corner
+ *                           mesh is expressed in units of `2^E` with `E` at most the lowest set bit of every pinned
+ *                           coordinate, so that the pinned values are integers there; the result stays scale
+ *                           covariant. Refused, with the corner named by vertex and face and `uv` untouched:
+ *                           two pinned corners of one sector with different UVs (`INVALID_INPUT`); a pinned UV with
+ *                           set bits below the quantum `2^(K-52)` of the fixed-point grid, which no snapped value can
+ *                           have (`RANGE_EXCEEDED`; the message gives the quantum to round to); pins that contradict
+ *                           the constraints, e.g. across a cut branch or a cone pinned off its integer point in the
+ *                           integer-grid mode (`INFEASIBLE`). `Snap_report::pinned_sectors` counts the pinned
+ *                           sectors.}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
+ *                    as key type and `bool` as value type}
+ *     \cgalParamDefault{no corner is pinned}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::pinned_corner_map()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
  *     \cgalParamType{Boolean}
@@ -235,7 +255,8 @@ namespace Seamless_snapping {
  *     edge by its vertex indices and gives the angle);
  *   - `RANGE_EXCEEDED`, `SAFE_DOT_FAILED`, `INFEASIBLE`: the exact projection or the propagation failed
  *     (Sec. 4.3, 7), the message says where; `RANGE_EXCEEDED` also when the map is too close to the limits of
- *     double for an exact result at its scale (the grid quantum below 2^-1074 or delta above 2^1024 in UV units);
+ *     double for an exact result at its scale (the grid quantum below 2^-1074 or delta above 2^1024 in UV units),
+ *     or a pinned UV has bits below the grid quantum; `INFEASIBLE` also for pins that contradict the constraints;
  *   - `EXACTNESS_CHECK_FAILED`: the final exact check found a violated row (an internal error, never hidden).
  *   On any status other than `SUCCESS`, `uv` is left bit-identical.
  *   Lengths in the report are relative to the diagonal of the UV bounding box of the input.

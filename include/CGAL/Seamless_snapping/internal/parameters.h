@@ -32,6 +32,7 @@ enum vertex_weight_map_t { vertex_weight_map }; // vertex -> double > 0: weight 
 enum integer_grid_map_t  { integer_grid_map };  // bool: integer translations, cones on integer points (default false)
 enum grid_scale_t        { grid_scale };        // double, a power of two: grid lines at multiples of 1/S (default 1)
 enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per face corner (libQEx's layout)
+enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of that corner is kept bit-identical
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -50,7 +51,8 @@ enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per
   SS_NP(vertex_weight_map_t,       vertex_weight_map)        \
   SS_NP(integer_grid_map_t,        integer_grid_map)         \
   SS_NP(grid_scale_t,              grid_scale)               \
-  SS_NP(vt_per_corner_t,           vt_per_corner)
+  SS_NP(vt_per_corner_t,           vt_per_corner)            \
+  SS_NP(pinned_corner_map_t,       pinned_corner_map)
 
 namespace parameters {
 

@@ -106,10 +106,20 @@ void connection_paths_from_parameter(const TriangleMesh& tm, const ConnectionRan
 
 inline std::string connection_name(std::size_t j) { return "connection constraint " + std::to_string(j); }
 
-// what a row of the full system comes from: Constraint_rows::edge, e >= 0 a mesh edge, e < 0 the
-// connection constraint -1 - e
+// Constraint_rows::edge of the rows of a pinned corner h (pinned_corners.h): below every
+// connection constraint's -1 - j
+constexpr int pinned_row_base = -(1 << 30);
+inline int pinned_row_origin(int h) { return pinned_row_base - h; }
+
+// what a row of the full system comes from: Constraint_rows::edge, e >= 0 a mesh edge,
+// pinned_row_base < e < 0 the connection constraint -1 - e, e <= pinned_row_base the pinned corner
+// pinned_row_base - e
 inline std::string row_origin_name(const Corner_mesh& cm, int e)
 {
+  if(e <= pinned_row_base) {
+    const int h = pinned_row_base - e;
+    return "pinned corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) + ")";
+  }
   return e >= 0 ? "edge " + vertex_pair_name(cm, cm.edge_halfedge[e]) : connection_name(std::size_t(-1 - e));
 }
 

@@ -165,26 +165,31 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
 // double for maps of any size. Refused (INVALID_INPUT): a UV that would lose bits, i.e. one more
 // than 2^1074 times smaller than the largest one (a map spanning more than the double range).
 // With `forced_exponent`, E = *forced_exponent instead (integer-grid maps: E = -s for the grid scale
-// 2^s, so that the corner mesh holds the UVs in grid units and integers stay integers); a UV that
-// would overflow or lose bits is then RANGE_EXCEEDED.
-inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const int* forced_exponent = nullptr)
+// 2^s, so that the corner mesh holds the UVs in grid units and integers stay integers; pinned
+// corners: E at most the lowest bit of every pinned value, pinned_corners.h); a UV that would
+// overflow or lose bits is then RANGE_EXCEEDED.
+// The binary exponent E of the largest |UV coordinate| (0 if all are 0): the default E above.
+inline int natural_uv_exponent(const Corner_mesh& cm)
 {
   int e = 0;
-  if(forced_exponent != nullptr) {
-    e = *forced_exponent;
-  } else {
-    double max_abs = 0;
-    for(int h = 0; h < cm.n_halfedges; ++h)
-      if(!cm.is_border_halfedge(h)) max_abs = (std::max)({max_abs, std::fabs(cm.u[h]), std::fabs(cm.v[h])});
-    if(max_abs > 0) std::frexp(max_abs, &e);
-  }
+  double max_abs = 0;
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h)) max_abs = (std::max)({max_abs, std::fabs(cm.u[h]), std::fabs(cm.v[h])});
+  if(max_abs > 0) std::frexp(max_abs, &e);
+  return e;
+}
+
+inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const int* forced_exponent = nullptr)
+{
+  const int e = forced_exponent != nullptr ? *forced_exponent : natural_uv_exponent(cm);
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const double n[2] = {std::ldexp(cm.u[h], -e), std::ldexp(cm.v[h], -e)};
     if(std::ldexp(n[0], e) != cm.u[h] || std::ldexp(n[1], e) != cm.v[h]) {
       if(forced_exponent != nullptr) {
         message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
-                  ") scaled by the grid scale 2^" + std::to_string(-e) + " is not exact in doubles (overflow or underflow)";
+                  ") scaled by 2^" + std::to_string(-e) + " (the unit set by the grid scale and the pinned corners) " +
+                  "is not exact in doubles (overflow or underflow)";
         return RANGE_EXCEEDED;
       }
       message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +

@@ -45,8 +45,10 @@
 
 #include <CGAL/Gmpq.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -169,13 +171,16 @@ inline std::string point_name(double a, double b)
 }
 
 // Rounds, checks (see the header comment) and appends the integer-grid rows to `rows`.
-// On failure nothing is appended.
+// `ubar`: the input sector values in grid units; the right-hand sides are the rounded integers times
+// 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
+// grid when corners are pinned, pinned_corners.h). On failure nothing is appended.
 inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const Align_edges& al, double tolerance, Constraint_rows& rows,
+                                    const Align_edges& al, const std::vector<double>& ubar, int rhs_shift,
+                                    double tolerance, Constraint_rows& rows,
                                     Integer_grid_rows_result& result, std::string& message)
 {
   result = Integer_grid_rows_result();
-  const std::vector<double>& ubar = st.ubar;
+
   // rounded translation per halfedge (cut edges), at the source of the halfedge
   std::vector<long> t(2 * std::size_t(cm.n_halfedges), 0);
   std::size_t far = 0;
@@ -278,15 +283,26 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     result.cones.push_back(v);
   }
 
+  // the right-hand sides in corner-mesh units, |b| < 2^62
+  long max_abs = 0;
+  for(int e : st.cut_edges) max_abs = (std::max)({max_abs, std::labs(t[2 * cm.edge_halfedge[e]]), std::labs(t[2 * cm.edge_halfedge[e] + 1])});
+  for(int e : al.edges) max_abs = (std::max)(max_abs, std::labs(isoline[e]));
+  if(rhs_shift < 0 || rhs_shift > 61 || (max_abs >> (61 - rhs_shift)) != 0) {
+    message = "the integer-grid rows need right-hand sides up to " + std::to_string(max_abs) + " grid units in units of 2^" +
+              std::to_string(-rhs_shift) + " grid units (set by the lowest bit of the pinned UVs), more than 62 bits; " +
+              "pin UVs with fewer bits below the grid unit; nothing was written";
+    return RANGE_EXCEEDED;
+  }
   for(int e : st.cut_edges) {
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     const int si = st.sector_of[cm.prev[h]], sj = st.sector_of[o];
     const Quarter_turn R(rot.k[h]);
-    for(int c = 0; c < 2; ++c) rows.add({ {2 * sj + c, 1}, {2 * si + R.col[c], -R.sign[c]} }, e, t[2 * h + c]);
+    for(int c = 0; c < 2; ++c)
+      rows.add({ {2 * sj + c, 1}, {2 * si + R.col[c], -R.sign[c]} }, e, t[2 * h + c] * (1L << rhs_shift));
   }
   for(int e : al.edges) {
     const int g = al.halfedge[e];
-    rows.add({ {2 * st.sector_of[cm.prev[g]] + al.component[e], 1} }, e, isoline[e]);
+    rows.add({ {2 * st.sector_of[cm.prev[g]] + al.component[e], 1} }, e, isoline[e] * (1L << rhs_shift));
   }
   return SUCCESS;
 }

@@ -48,6 +48,10 @@ struct Snap_inputs
   typedef typename internal_np::Lookup_named_param_def<snap_np::vertex_weight_map_t, NamedParameters,
                                                        Default_weight_map>::type Weight_map;
 
+  typedef CGAL::Constant_property_map<halfedge_descriptor, bool> Default_pinned_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::pinned_corner_map_t, NamedParameters,
+                                                       Default_pinned_map>::type Pinned_map;
+
   Seam_map seams;
   bool has_seams;
   Rotation_map rotations;
@@ -87,6 +91,16 @@ struct Snap_inputs
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),
                                     options.connections);
+    // pinned corners, in the halfedge numbering of the pipeline (the enumeration order of halfedges(tm))
+    if(!CGAL::parameters::is_default_parameter<NamedParameters, snap_np::pinned_corner_map_t>::value) {
+      const Pinned_map pinned = choose_parameter<Pinned_map>(get_parameter(np, snap_np::pinned_corner_map),
+                                                             Default_pinned_map(false));
+      int n = 0;
+      for(halfedge_descriptor h : halfedges(tm)) {
+        if(bool(get(pinned, h))) options.pinned_corners.push_back(n);
+        ++n;
+      }
+    }
   }
 
   bool seam_of(edge_descriptor e) const { return bool(get(seams, e)); }

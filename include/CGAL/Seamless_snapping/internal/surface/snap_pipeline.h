@@ -42,6 +42,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
 #include <CGAL/Seamless_snapping/internal/surface/flip_repair.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/pinned_corners.h>
 #include <CGAL/Seamless_snapping/internal/surface/propagation.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
@@ -79,6 +80,7 @@ struct Snap_options
   bool integer_grid_map = false;       // integer translations, cones on integer points, integer isolines
   double integer_grid_tolerance = default_integer_grid_tolerance;   // grid units
   double grid_scale = 1;               // S = 2^s: the integer grid of the map is at multiples of 1/S; UVs are scaled by S inside
+  std::vector<int> pinned_corners;     // halfedges (pipeline numbering) whose corner UV is kept bit-identical (pinned_corners.h)
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -173,13 +175,15 @@ struct Snap_state
   Seam_topology st;
   Cut_rotations rot;
   Align_edges al;
+  Pinned_sectors pins;                   // the sectors of the pinned corners, their values in corner-mesh units
   Constraint_rows full;                  // every row (Eq. 4, 5, 6-8) over sector variables (2s + c)
   std::size_t first_connection_row = 0;
   std::vector<char> path_endpoints;      // vertices that end a connection/cycle path (become nodes)
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
-  int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units)
+  int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
+                                         // less with pinned corners)
   // 2. reduce
   Reduced_system rs;
   // 3a. the floating-point L2-closest point of the full system (= ubar without minimal_change)
@@ -226,10 +230,15 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
   }
   Status s = build_corner_mesh(tm, uvmap, S.cm, S.desc, message);
   // from here on: UVs times 2^-uv_exponent; for integer-grid maps (and any grid scale 2^s other than 1)
-  // uv_exponent = -s, so the corner mesh holds the UVs in grid units and integer right-hand sides stay integers
-  const int forced_exponent = -grid_exponent;
-  const bool grid_units = opt.integer_grid_map || grid_exponent != 0;
-  if(s == SUCCESS) s = normalize_uv_scale(S.cm, message, grid_units ? &forced_exponent : nullptr);
+  // uv_exponent = -s, so the corner mesh holds the UVs in grid units and integer right-hand sides stay integers;
+  // with pinned corners uv_exponent is at most the lowest bit of every pinned value, so that they are integers too
+  int exponent = -grid_exponent, pin_exponent = 0;
+  bool forced = opt.integer_grid_map || grid_exponent != 0;
+  if(s == SUCCESS && pin_unit_exponent(S.cm, opt.pinned_corners, pin_exponent)) {
+    exponent = (std::min)(forced ? exponent : natural_uv_exponent(S.cm), pin_exponent);
+    forced = true;
+  }
+  if(s == SUCCESS) s = normalize_uv_scale(S.cm, message, forced ? &exponent : nullptr);
   if(s != SUCCESS) return s;
   const Corner_mesh& cm = S.cm;
   report.faces = std::size_t(cm.n_faces);
@@ -246,6 +255,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
     for(int e = 0; e < cm.n_edges; ++e) constrained[e] = constrained_of(S.desc.edges[e]) ? 1 : 0;
   }
   s = compute_seam_topology(cm, seam_override, S.st, message);
+  if(s == SUCCESS) s = collect_pinned_sectors(cm, S.st, opt.pinned_corners, S.pins, message);
   if(s != SUCCESS) return s;
   report.cut_edges = S.st.cut_edges.size();
   report.sectors = std::size_t(S.st.n_sectors);
@@ -272,6 +282,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   S.first_connection_row = S.full.size();
   Status s = add_connection_rows(S.cm, S.st, S.rot, opt.connections, S.full, S.path_endpoints, message);
   if(s != SUCCESS) return s;
+  mark_pinned_nodes(S.cm, S.st, S.pins, S.path_endpoints);
   const std::vector<double> ubar_grid = in_grid_units(S, S.st.ubar);
   const Integer_grid_counts before = count_integer_structure(S.cm, S.st, S.rot, ubar_grid);
   report.integer_translations_before = before.integer_translations;
@@ -280,7 +291,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
   if(opt.integer_grid_map) {
     Integer_grid_rows_result igm;
-    s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, opt.integer_grid_tolerance, S.full, igm, message);
+    s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, -(S.cm.uv_exponent + S.grid_exponent),
+                              opt.integer_grid_tolerance, S.full, igm, message);
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
       message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
@@ -290,6 +302,9 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     report.pinned_cones = igm.cones.size();
     report.not_field_cones.assign(igm.not_field_cones.begin(), igm.not_field_cones.end());
   }
+  s = add_pinned_rows(S.cm, S.pins, S.full, message);
+  if(s != SUCCESS) return s;
+  report.pinned_sectors = S.pins.sector.size();
   report.constraints = S.full.size();
   std::vector<int> column_of;
   used_variables(S.full, 2 * std::size_t(S.st.n_sectors), S.constrained_vars, column_of);
@@ -304,6 +319,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   double max_abs = 0;
   for(int v : S.constrained_vars) max_abs = (std::max)(max_abs, std::fabs(ubar[v]));
   S.grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (project_stage)
+  s = check_pins_on_grid(S.cm, S.pins, S.grid, message);
+  if(s != SUCCESS) return s;
   const Orientation_counts input = count_orientations(face_orientations(S.cm, S.st, ubar));
   report.flips_before = input.negative;
   report.degenerate_before = input.degenerate;
@@ -371,7 +388,9 @@ Status least_squares_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S,
   if(s != SUCCESS) { message = "minimal-change projection: " + message; return s; }
   std::vector<double> xbar(vars.size()), y;
   for(std::size_t j = 0; j < vars.size(); ++j) xbar[j] = S.st.ubar[vars[j]];
-  ls.project(std::vector<double>(S.full.size(), 0.), xbar, y);
+  // b: the right-hand sides (integer-grid rows, pinned corners), integers in corner-mesh units, exact in double
+  const std::vector<double> b(S.full.rhs.begin(), S.full.rhs.end());
+  ls.project(b, xbar, y);
   for(std::size_t j = 0; j < vars.size(); ++j) S.start[vars[j]] = y[j];
   report.least_squares_ms = ms_since(t);
   return SUCCESS;
@@ -433,6 +452,7 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
   Status s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, message);
   if(s != SUCCESS) return s;
   auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
+    if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
     if(S.cm.uv_exponent != 0)
       message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
     return st;
@@ -447,7 +467,8 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
     if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
     S.grid = Fixed_point_grid(S.grid.K + 4);
     std::string why;
-    if(check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why) != SUCCESS) {
+    if(check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why) != SUCCESS ||
+       check_pins_on_grid(S.cm, S.pins, S.grid, why) != SUCCESS) {
       failed(s);
       message += "; a larger grid does not help: " + why;
       return s;
@@ -572,6 +593,8 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
       if(report.not_field_cones.size() > 10) summary += " ...";
     }
   }
+  if(!S.pins.empty())
+    summary += "; " + std::to_string(S.pins.sector.size()) + " pinned sector(s) kept bit-identical";
   return summary + S.flip_note;
 }
 
@@ -614,6 +637,7 @@ Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Sea
   s = project_stage(opt, S, report, message);
   if(s != SUCCESS) return finish(s, message);
   repair_stage(opt, S, report);
+  restore_pinned_values(S.pins, S.x);
 
   t = Snap_clock::now();
   s = verify_stage(S, report, message);
