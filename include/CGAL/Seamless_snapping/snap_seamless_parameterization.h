@@ -228,7 +228,7 @@ namespace Seamless_snapping {
  *                           mesh is expressed in units of `2^E` with `E` at most the lowest set bit of every pinned
  *                           coordinate, so that the pinned values are integers there; the result stays scale
  *                           covariant. Refused, with the corner named by vertex and face and `uv` untouched:
- *                           two pinned corners of one sector with different UVs (`INVALID_INPUT`); a pinned UV with
+ *                           a pinned UV with
  *                           set bits below the quantum `2^(K-52)` of the fixed-point grid, which no snapped value can
  *                           have (`RANGE_EXCEEDED`; the message gives the quantum to round to); pins that contradict
  *                           the constraints, e.g. across a cut branch or a cone pinned off its integer point in the

@@ -27,8 +27,8 @@
 // largest constrained |UV|), so a pinned value with set bits below the quantum cannot be kept: it is
 // refused (RANGE_EXCEEDED, naming the corner and the quantum in the caller's units) before the
 // projection, and again if the projection has to enlarge the grid.
-// Two pinned corners of one sector with different UVs (possible with seam_edge_map) are
-// INVALID_INPUT. Pins that contradict the constraints (e.g. two pairs of pinned corners across one
+// All corners of a sector have the same UV (compute_seam_topology refuses anything else), so the
+// pinned value of a sector does not depend on which of its corners is pinned. Pins that contradict the constraints (e.g. two pairs of pinned corners across one
 // cut branch with different translations, or a cone pinned off its integer point in the
 // integer-grid mode) make the system inconsistent: INFEASIBLE, with the pinned corners named.
 
@@ -105,22 +105,15 @@ inline std::string uv_name(const Corner_mesh& cm, int corner)
   return "(" + format_double(cm.to_uv(cm.u[corner]), 17) + ", " + format_double(cm.to_uv(cm.v[corner]), 17) + ")";
 }
 
-// The pinned sectors of the corners `pinned` (halfedges in the pipeline's numbering). INVALID_INPUT
-// if two pinned corners of one sector differ.
-inline Status collect_pinned_sectors(const Corner_mesh& cm, const Seam_topology& st, const std::vector<int>& pinned,
-                                     Pinned_sectors& pins, std::string& message)
+// The pinned sectors of the corners `pinned` (halfedges in the pipeline's numbering), one corner each.
+inline void collect_pinned_sectors(const Corner_mesh& cm, const Seam_topology& st, const std::vector<int>& pinned,
+                                   Pinned_sectors& pins)
 {
   pins = Pinned_sectors();
   std::vector<int> corner_of_sector(st.n_sectors, -1);
   for(int h : pinned) {
     const int c = pinned_corner_of(cm, h);
-    int& first = corner_of_sector[st.sector_of[c]];
-    if(first < 0) { first = c; continue; }
-    if(cm.u[first] == cm.u[c] && cm.v[first] == cm.v[c]) continue;
-    message = pinned_corner_name(cm, first) + " has the UV " + uv_name(cm, first) + " but " + pinned_corner_name(cm, c) +
-              ", in the same sector (no cut edge between them), has " + uv_name(cm, c) + ": both cannot be kept; " +
-              "pin only one of them, or mark an edge between them as a seam (seam_edge_map)";
-    return INVALID_INPUT;
+    if(corner_of_sector[st.sector_of[c]] < 0) corner_of_sector[st.sector_of[c]] = c;
   }
   for(int s = 0; s < st.n_sectors; ++s) {
     const int c = corner_of_sector[s];
@@ -130,7 +123,6 @@ inline Status collect_pinned_sectors(const Corner_mesh& cm, const Seam_topology&
     pins.value.push_back(cm.u[c]);
     pins.value.push_back(cm.v[c]);
   }
-  return SUCCESS;
 }
 
 // Appends the rows x_{2s+c} = p_c (origin: pinned_row_origin(corner)). RANGE_EXCEEDED if a pinned

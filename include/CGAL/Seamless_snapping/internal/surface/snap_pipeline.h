@@ -255,8 +255,8 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
     for(int e = 0; e < cm.n_edges; ++e) constrained[e] = constrained_of(S.desc.edges[e]) ? 1 : 0;
   }
   s = compute_seam_topology(cm, seam_override, S.st, message);
-  if(s == SUCCESS) s = collect_pinned_sectors(cm, S.st, opt.pinned_corners, S.pins, message);
   if(s != SUCCESS) return s;
+  collect_pinned_sectors(cm, S.st, opt.pinned_corners, S.pins);
   report.cut_edges = S.st.cut_edges.size();
   report.sectors = std::size_t(S.st.n_sectors);
   report.uv_diagonal = cm.to_uv(S.st.uv_diagonal);
