@@ -1,5 +1,7 @@
 """CTest test of the seamless_snap command line: automatic welding of a cut mesh, --no-weld refusing an
-input whose seams are invisible, --keep-layout, --fail-on-new-flips, and the JSON report's keys.
+input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, and
+--integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
+closed genus-0 mesh, which is near an integer-grid map).
 usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)"""
 import json
 import os
@@ -71,12 +73,40 @@ if rc == 0:
     rc, text = run(out3, os.path.join(work, "again.obj"), "--keep-layout")
     check(rc == 0 and "already exactly seamless" in text, "the result is exactly seamless: %s" % text)
 
-# 4. --fail-on-new-flips passes when nothing flips, --help lists every option
+# 4. --integer-grid --vval: the VVAL file (header line, vertex count = the v lines of OUT.obj, one valence per
+# vertex); the cones of the field are exactly the vertices whose valence is not 4, and on a closed genus-0 surface
+# the valences satisfy Gauss-Bonnet exactly: sum (4 - valence) = 4 chi = 8
+out5, vval5, rep5 = os.path.join(work, "igm.obj"), os.path.join(work, "igm.vval"), os.path.join(work, "igm.json")
+rc, text = run(src, out5, "--integer-grid", "--vval", vval5, "--report", rep5)
+check(rc == 0 and "VVAL" in text, "--integer-grid --vval: exit %d %s" % (rc, text))
+if rc == 0:
+    lines = open(vval5).read().split("\n")
+    check(lines[0] == '{"file_format":"VVAL","version":1}', "VVAL header: %r" % lines[0])
+    values = [int(x) for x in " ".join(lines[2:]).split()]
+    check(int(lines[1]) == len(values) == len(records(out5, "v")), "VVAL count = vertices of OUT.obj")
+    r5 = json.load(open(rep5))
+    check(sum(1 for x in values if x != 4) == r5["field_cones"] > 0,
+          "valences other than 4 = the field cones (%d)" % r5["field_cones"])
+    check(sum(4 - x for x in values) == 8, "Gauss-Bonnet: sum(4 - valence) = %d, not 8" % sum(4 - x for x in values))
+# --vval needs --integer-grid (exit 2); a refused integer-grid snap writes neither OUT.obj nor the VVAL file
+rc, text = run(src, os.path.join(work, "x.obj"), "--vval", os.path.join(work, "x.vval"))
+check(rc == 2 and "--vval needs --integer-grid" in text, "--vval without --integer-grid: %d %s" % (rc, text))
+far = os.path.join(work, "scaled.obj")
+with open(src) as f, open(far, "w") as o:
+    for l in f:
+        p = l.split()
+        o.write("vt %r %r\n" % (0.3 * float(p[1]), 0.3 * float(p[2])) if p and p[0] == "vt" else l)
+out6, vval6 = os.path.join(work, "far.obj"), os.path.join(work, "far.vval")
+rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
+check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
+      "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
+
+# 5. --fail-on-new-flips passes when nothing flips, --help lists every option
 rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
 check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
 rc, text = run("--help")
 for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
-            "--report", "--quiet", "--help"]:
+            "--vval", "--report", "--quiet", "--help"]:
     check(opt in text, "--help lists " + opt)
 
 for f in failures:

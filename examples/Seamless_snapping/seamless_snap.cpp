@@ -2,7 +2,7 @@
 //
 //   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
-//                 [--sharp-angle DEG] [--vt-per-corner] [--report FILE.json] [--quiet]
+//                 [--sharp-angle DEG] [--vt-per-corner] [--vval FILE] [--report FILE.json] [--quiet]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
 // UVs to nearby doubles that are exactly seamless (Mandad & Campen 2019), checks the result in
@@ -13,10 +13,12 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
+#include <CGAL/Seamless_snapping/IO/VVAL.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/version.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -44,7 +46,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 static const char* usage_text =
   "usage: seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary]\n"
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
-  "                     [--features FILE] [--sharp-angle DEG] [--vt-per-corner]\n"
+  "                     [--features FILE] [--sharp-angle DEG] [--vt-per-corner] [--vval FILE]\n"
   "                     [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
@@ -90,6 +92,13 @@ static const char* help_text =
   "  --sharp-angle DEG    also align every interior edge whose faces meet at a dihedral angle of more\n"
   "                       than DEG degrees (angle between the face normals)\n"
   "  --vt-per-corner      write one 'vt' per face corner (the layout libQEx's test meshes use)\n"
+  "  --vval FILE          with --integer-grid: also write libQEx's vertex valence file (VVAL: a JSON\n"
+  "                       header line, the vertex count, one integer per vertex in the order of\n"
+  "                       OUT.obj's 'v' lines), the UV angle sum of each vertex in quarter turns,\n"
+  "                       counted exactly with sign tests (fold-overs included; a sum of at most 0\n"
+  "                       next to fold-overs is written as the smallest positive value of its class\n"
+  "                       mod 4); give it to libQEx as the third argument. Written only when OUT.obj\n"
+  "                       was written.\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
@@ -213,7 +222,7 @@ int main(int argc, char** argv)
   bool integer_grid = false;
   double grid_scale = 1;
   bool vt_per_corner = false;
-  std::string features_file;
+  std::string features_file, vval_file;
   double sharp_angle = -1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -227,6 +236,10 @@ int main(int argc, char** argv)
     else if(a == "--quiet") quiet = true;
     else if(a == "--integer-grid") integer_grid = true;
     else if(a == "--vt-per-corner") vt_per_corner = true;
+    else if(a == "--vval") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
+      vval_file = argv[++i];
+    }
     else if(a == "--features") {
       if(i + 1 >= argc) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
       features_file = argv[++i];
@@ -259,6 +272,10 @@ int main(int argc, char** argv)
   if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner)) {
     std::cerr << "seamless_snap: --keep-layout does not combine with --integer-grid, --grid-scale, --features, "
                  "--sharp-angle or --vt-per-corner (not supported yet)\n" << usage_text;
+    return 2;
+  }
+  if(!vval_file.empty() && !integer_grid) {
+    std::cerr << "seamless_snap: --vval needs --integer-grid (valences are those of an integer-grid map)\n" << usage_text;
     return 2;
   }
   if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
@@ -355,10 +372,44 @@ int main(int argc, char** argv)
     return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
   if(integer_grid && !keep_layout && !quiet)
     std::cout << "verified: integer translations on every cut edge, every cone on an integer point\n";
+  // the valences before anything is written, so that a failure leaves no OUT.obj behind
+  SS::Quad_valences valences;
+  if(!vval_file.empty()) {
+    valences = SS::quad_valences(mesh, uv);
+    if(valences.status != SS::SUCCESS) return fail("vertex valences: " + valences.message);
+  }
+  // A signed angle sum of at most 0 quarter turns only occurs next to fold-overs (each flipped triangle
+  // winds its vertices back by 360 degrees). VVAL has no such valences: the smallest positive valence of the
+  // same class mod 4 (the class is fixed by the seam rotations) is written, and the vertices are listed.
+  std::vector<std::size_t> folded;
+  for(std::size_t v = 0; v < valences.valence.size(); ++v)
+    if(valences.valence[v] <= 0) {
+      folded.push_back(v);
+      valences.valence[v] = (valences.valence[v] % 4 + 4) % 4 == 0 ? 4 : (valences.valence[v] % 4 + 4) % 4;
+    }
   const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
                                          : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message,
                                                                              params::vt_per_corner(vt_per_corner));
   if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
+  if(!vval_file.empty()) {
+    if(SS::IO::write_VVAL(vval_file, valences.valence, message) != SS::SUCCESS) return fail(message);
+    if(!quiet) {
+      std::vector<char> on_border(valences.valence.size(), 0);
+      for(std::size_t v : valences.border) on_border[v] = 1;
+      std::size_t cones = 0;
+      for(std::size_t v = 0; v < valences.valence.size(); ++v) cones += !on_border[v] && valences.valence[v] != 4 ? 1 : 0;
+      std::cout << message << ": " << cones << " interior vertices with a valence other than 4, "
+                << valences.approximate.size() << " interior valences rounded (a 180-degree corner or a zero-length "
+                << "edge), not counted exactly; " << valences.border.size() << " border vertices (rounded; libQEx "
+                << "ignores them)\n";
+      if(!folded.empty()) {
+        std::cout << "  " << folded.size() << " vertices next to fold-overs have a signed UV angle sum of at most 0 "
+                  << "quarter turns; written as the smallest positive valence of the same class mod 4 (vertices";
+        for(std::size_t i = 0; i < folded.size() && i < 10; ++i) std::cout << " " << folded[i];
+        std::cout << (folded.size() > 10 ? " ...)\n" : ")\n");
+      }
+    }
+  }
   return EXIT_SUCCESS;
 }

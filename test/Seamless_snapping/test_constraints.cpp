@@ -30,6 +30,12 @@
 //   integer grid: orbifold                               CGAL Orbifold Tutte square map (cones on the unit square's
 //                                                        corners): an exact IGM after; scaled by 0.3: INVALID_INPUT
 //                                                        with advice, map bit-identical
+//   quad valences                                       quad_valences() on the results: flat torus all 4, the
+//                                                        180-degree cone 2; on the data every exactly counted valence
+//                                                        is 0 mod 4 exactly away from the field cones, and
+//                                                        sum(4 - valence) = 4 chi + 4 F- (signed Gauss-Bonnet) where
+//                                                        nothing is rounded; a map that is not exactly seamless is
+//                                                        INVALID_INPUT
 //   pinned corners: torus, data                          pinned_corner_map, default and integer-grid mode: pinned
 //                                                        corners stay bit-identical, the result is exactly seamless
 //                                                        (an exact IGM), at scales 2^0, 2^-7, 2^9 bit for bit; a pin
@@ -53,6 +59,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
@@ -509,6 +516,8 @@ static void test_integer_grid_analytic()
     assert(SS::is_exact_integer_grid_map(m, uv) && SS::is_exactly_seamless(m, uv));
     assert(r.integer_translations_after == r.cut_edges && r.cut_edges > 0);
     assert(r.max_change > 0 && r.max_change < 1e-10);
+    const SS::Quad_valences qv = SS::quad_valences(m, uv);   // a flat torus: every vertex regular
+    assert(qv.status == SS::SUCCESS && qv.valence == std::vector<int>(9, 4) && qv.approximate.empty() && qv.border.empty());
     // the same map at grid scale 4 (UVs / 4): grid_scale(4) gives the result / 4, bit for bit
     Mesh q; UV_map uvq;
     make_flat_torus(q, uvq, 3, 3.0000000001);
@@ -559,8 +568,44 @@ static void test_integer_grid_analytic()
     assert(SS::is_exact_integer_grid_map(m, uv));
     for(halfedge_descriptor h : m.halfedges())
       if(!m.is_border(h) && m.target(h) == vertex_descriptor(0)) assert(get(uv, h) == Point_2(1, 0));
+    const SS::Quad_valences q = SS::quad_valences(m, uv);   // the 180-degree cone: valence 2 (border vertices rounded)
+    assert(q.status == SS::SUCCESS && q.valence[0] == 2 && q.approximate.empty() && q.border.size() == 4);
     std::cout << "integer grid: near-integer cone pinned: OK\n";
   }
+}
+
+// quad_valences() of a snapped integer-grid map: every valence counted exactly (interior, no 180-degree corner)
+// is congruent mod 4 to the field's class (a multiple of 4 exactly away from the field cones), and on a closed
+// mesh without rounded valences Gauss-Bonnet holds exactly with signed angles: sum (4 - valence) = 4 chi + 4 F-
+static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report& r, const char* what)
+{
+  const SS::Quad_valences q = SS::quad_valences(m, uv);
+  assert(q.status == SS::SUCCESS && q.valence.size() == m.number_of_vertices());
+  std::vector<char> rounded(q.valence.size(), 0);
+  for(std::size_t v : q.approximate) rounded[v] = 1;
+  for(std::size_t v : q.border) rounded[v] = 1;
+  std::size_t off_class = 0, exact = 0;
+  long sum = 0;
+  for(std::size_t v = 0; v < q.valence.size(); ++v) {
+    sum += 4 - q.valence[v];
+    if(rounded[v]) continue;
+    ++exact;
+    off_class += ((q.valence[v] % 4) + 4) % 4 != 0 ? 1 : 0;
+  }
+  std::size_t negative = 0;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  for(Mesh::Face_index fi : m.faces()) {
+    const halfedge_descriptor h = m.halfedge(fi);
+    if(CGAL::orientation(P(get(uv, h).x(), get(uv, h).y()), P(get(uv, m.next(h)).x(), get(uv, m.next(h)).y()),
+                         P(get(uv, m.prev(h)).x(), get(uv, m.prev(h)).y())) == CGAL::NEGATIVE) ++negative;
+  }
+  const long chi = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
+  std::printf("quad valences: %-44s %zu exact, %zu rounded, %zu border; %zu not = 0 mod 4 (field cones %zu); "
+              "sum(4 - valence) %ld, 4 chi + 4 F- = %ld\n", what, exact, q.approximate.size(), q.border.size(), off_class,
+              r.field_cones, sum, 4 * chi + 4 * long(negative));
+  if(q.approximate.empty()) assert(off_class == r.field_cones);
+  else assert(off_class <= r.field_cones);
+  if(q.approximate.empty() && q.border.empty()) assert(sum == 4 * chi + 4 * long(negative));
 }
 
 // every near-IGM file of the shared data: SUCCESS, exact IGM (checked independently), small change, no new flips
@@ -587,6 +632,7 @@ static void test_integer_grid_data()
     assert(r.max_change < 1e-5);
     assert(r.flips_after_repair <= r.flips_before);
     if(std::strstr(f, "dragon") == nullptr) assert(r.flips_unrepaired == 0);
+    check_quad_valences(m, uv, r, f);
   }
 }
 
@@ -664,7 +710,7 @@ static void test_pinned_corners_analytic()
       const double scale = std::ldexp(1., j);
       Mesh m; UV_map uv;
       make_perturbed_torus(m, uv, scale);
-      assert(!SS::is_exactly_seamless(m, uv));
+      assert(!SS::is_exactly_seamless(m, uv) && SS::quad_valences(m, uv).status == SS::INVALID_INPUT);
       Pin_map pin = pins_of(m);
       // vertex (1, 0) on the side j = 3 of the seam j = 0 (its other side is the perturbed one), vertex (2, 0)
       // on the side j = 0, and the free vertex (1, 1)

@@ -1,0 +1,114 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_QUAD_VALENCES_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_QUAD_VALENCES_H
+
+// The quad valence of every vertex of an exactly seamless map: its signed UV angle sum in quarter
+// turns (4 at a regular vertex, 3 or 5 at a +-90 degree cone), what a quad extractor needs to know
+// how many grid edges leave the vertex (libQEx's vertex valences, the VVAL file).
+//
+// Exact, with sign tests only. The quadrant of a nonzero vector d is q(d) = floor(angle(d) / 90 deg),
+// i.e. [0, 90) -> 0, [90, 180) -> 1, ...: it needs the signs of d_x and d_y only, and d = b - c of two
+// doubles has the sign of the comparison of b and c, exactly. A rotation by 90 degrees adds 1 to it
+// (mod 4). A corner (v; a, b) of a face (a after v, b before v, counter-clockwise) turns the direction
+// v->a into v->b by its signed angle phi in (-180, 180) degrees, whose sign is orientation(v, a, b)
+// (exact predicate); the number of quadrant boundaries it crosses, counted with that sign, is
+//   (q(b - v) - q(a - v)) mod 4  if phi > 0,    -((q(a - v) - q(b - v)) mod 4)  if phi < 0,
+//   0                             if the two directions coincide (a zero-area corner of angle 0).
+// It does not change when both vectors are rotated by a quarter turn, so each corner is evaluated in
+// its own face. Around an interior vertex of an exactly seamless map consecutive corners share their
+// edge direction after the transition (a rotation by k quarter turns, exact), so the counts telescope
+// in the unfolded 1-ring: their sum is floor((theta_0 + Theta) / 90) - floor(theta_0 / 90) for the
+// signed angle sum Theta, which is a multiple of 90 degrees: the sum is Theta / 90 exactly, fold-overs
+// (negative corners) included.
+// Not exact, and listed: a vertex with a corner of angle +-180 degrees (a zero-area triangle whose
+// vertex v lies between the other two) or with a zero-length edge (the direction is undefined): the
+// value is then the floating-point signed angle sum rounded to quarter turns. Border vertices get
+// that rounding too (their angle sum need not be a multiple of 90 degrees; libQEx ignores their
+// valence).
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+struct Quad_valence_result
+{
+  std::vector<int> valence;          // per vertex (Corner_mesh numbering)
+  std::vector<int> approximate;      // interior vertices whose valence was rounded, not counted exactly
+  std::vector<int> border;           // border vertices (rounded as well)
+};
+
+// q(b - a): the quadrant of the vector from a to b (-1 if a == b)
+inline int quadrant(double ax, double ay, double bx, double by)
+{
+  const int sx = (bx > ax) - (bx < ax), sy = (by > ay) - (by < ay);
+  if(sx == 0 && sy == 0) return -1;
+  if(sx > 0 && sy >= 0) return 0;
+  if(sx <= 0 && sy > 0) return 1;
+  if(sx < 0 && sy <= 0) return 2;
+  return 3;
+}
+
+// the signed number of quadrant boundaries crossed by corner h (see above); false if undetermined
+inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossings)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  const int a = cm.next[h], b = cm.prev[h];
+  const int qa = quadrant(cm.u[h], cm.v[h], cm.u[a], cm.v[a]), qb = quadrant(cm.u[h], cm.v[h], cm.u[b], cm.v[b]);
+  if(qa < 0 || qb < 0) return false;
+  const CGAL::Orientation o = CGAL::orientation(P(cm.u[h], cm.v[h]), P(cm.u[a], cm.v[a]), P(cm.u[b], cm.v[b]));
+  if(o == CGAL::COLLINEAR) {
+    if(qa != qb) return false;           // opposite directions: +-180 degrees
+    crossings = 0;
+    return true;
+  }
+  crossings = o == CGAL::LEFT_TURN ? ((qb - qa) % 4 + 4) % 4 : -(((qa - qb) % 4 + 4) % 4);
+  return true;
+}
+
+// Precondition: the corner UVs of `cm` form an exactly seamless map.
+inline Quad_valence_result quad_valences(const Corner_mesh& cm)
+{
+  Quad_valence_result r;
+  r.valence.assign(cm.n_vertices, 0);
+  std::vector<char> exact(cm.n_vertices, 1);
+  std::vector<double> angle_sum(cm.n_vertices, 0.);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    const int v = cm.target[h];
+    angle_sum[v] += corner_angle(cm, h);
+    int c = 0;
+    if(corner_quarter_crossings(cm, h, c)) r.valence[v] += c;
+    else exact[v] = 0;
+  }
+  const double quarter = std::acos(-1.) / 2;
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    if(cm.vertex_on_border[v]) r.border.push_back(v);
+    else if(!exact[v]) r.approximate.push_back(v);
+    else continue;
+    r.valence[v] = int(std::lround(angle_sum[v] / quarter));
+  }
+  return r;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_QUAD_VALENCES_H
