@@ -747,6 +747,22 @@ static void test_pinned_corners_analytic()
       else assert(unscaled == reference);
       if(j == 0) std::cout << "pinned corners: " << mode << " torus: OK, scales 2^0, 2^-7, 2^9 bit for bit (" << r.message << ")\n";
     }
+    // a pinned UV between grid lines: the free vertex (1, 1) moved to (1.25, 1.5) and pinned. With integer_grid_map
+    // the corner mesh unit becomes 2^-2 grid units and the integer right-hand sides are scaled by 4
+    {
+      Mesh m; UV_map uv;
+      make_perturbed_torus(m, uv, 1);
+      for(halfedge_descriptor h : m.halfedges())
+        if(!m.is_border(h) && get(uv, h) == Point_2(1, 1)) put(uv, h, Point_2(1.25, 1.5));
+      Pin_map pin = pins_of(m);
+      assert(pin_uv(m, uv, pin, Point_2(1.25, 1.5)) == 6 && pin_uv(m, uv, pin, Point_2(1, 3)) > 0);
+      const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+          SS::parameters::pinned_corner_map(pin).integer_grid_map(igm));
+      if(r.status != SS::SUCCESS) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+      assert(r.status == SS::SUCCESS && r.pinned_sectors == 2 && pinned_bit_identical(m, uv, pin, bits0));
+      assert(SS::is_exactly_seamless(m, uv) && (!igm || SS::is_exact_integer_grid_map(m, uv)));
+    }
     // a pin with bits below the grid quantum: the corner at u = 3 + 2^-51 (quantum 2^-49): RANGE_EXCEEDED, untouched
     {
       Mesh m; UV_map uv;
