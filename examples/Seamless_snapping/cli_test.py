@@ -1,5 +1,5 @@
 """CTest test of the seamless_snap command line: automatic welding of a cut mesh, --no-weld refusing an
-input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, and
+input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, and
 --integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
 closed genus-0 mesh, which is near an integer-grid map).
 usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)"""
@@ -101,12 +101,58 @@ rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
 check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
       "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
 
+# 6. --pin FILE: a seam vertex whose two sectors' UVs are rounded to multiples of 2^-20 (on the snap's grid) keeps
+# them bit for bit; a vertex with generic UVs (bits below the grid quantum) is refused, nothing written
+corners = {}
+for f in faces:
+    for c in f:
+        a, b = (int(x) for x in c.split("/")[:2])
+        corners.setdefault(a - 1, set()).add(b - 1)
+uvs_of = lambda v: set(tuple(vt[t]) for t in corners[v])
+seam_v = next(v for v in sorted(corners) if len(uvs_of(v)) == 2)
+rounded = dict((t, ["%r" % (round(float(x) * 2 ** 20) / 2 ** 20) for x in vt[t]]) for t in corners[seam_v])
+pinned_in = os.path.join(work, "pinned_in.obj")
+with open(src) as f, open(pinned_in, "w") as o:
+    k = 0
+    for l in f:
+        p = l.split()
+        if p and p[0] == "vt":
+            o.write("vt %s\n" % " ".join(rounded[k]) if k in rounded else l)
+            k += 1
+        else:
+            o.write(l)
+pin_file = os.path.join(work, "pin.txt")
+with open(pin_file, "w") as o:
+    o.write("# the seam vertex\n%d\n" % seam_v)
+out7 = os.path.join(work, "pinned.obj")
+rc, text = run(pinned_in, out7, "--pin", pin_file)
+check(rc == 0 and "1 pinned vertices" in text, "--pin: exit %d %s" % (rc, text))
+if rc == 0:
+    vt7, f7 = records(out7, "vt"), records(out7, "f")
+    got = set(tuple(float(x) for x in vt7[int(c.split("/")[1]) - 1]) for f in f7 for c in f
+              if int(c.split("/")[0]) - 1 == seam_v)
+    want = set(tuple(float(x) for x in r) for r in rounded.values())
+    check(got == want, "--pin: the pinned vertex keeps its UVs bit for bit: %s vs %s" % (got, want))
+# bits below 2^-50 (the |UV| are below 2, so the grid quantum 2^(K-52) is at most 2^-50)
+generic = next(v for v in sorted(corners) if v != seam_v and any(float(x) * 2 ** 50 != int(float(x) * 2 ** 50)
+                                                                  for uv in uvs_of(v) for x in uv))
+with open(pin_file, "w") as o:
+    o.write("%d\n" % generic)
+out8 = os.path.join(work, "pinned_bad.obj")
+rc, text = run(pinned_in, out8, "--pin", pin_file)
+check(rc == 1 and "pinned corner (vertex %d" % generic in text and not os.path.exists(out8),
+      "--pin of a UV below the grid quantum: %d %s" % (rc, text))
+with open(pin_file, "w") as o:
+    o.write("%d 1\n" % generic)
+rc, text = run(pinned_in, out8, "--pin", pin_file)
+check(rc == 1 and "pin.txt:1: expected one vertex index" in text, "--pin: malformed line: %d %s" % (rc, text))
+
 # 5. --fail-on-new-flips passes when nothing flips, --help lists every option
 rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
 check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
 rc, text = run("--help")
 for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
-            "--vval", "--report", "--quiet", "--help"]:
+            "--pin", "--vval", "--report", "--quiet", "--help"]:
     check(opt in text, "--help lists " + opt)
 
 for f in failures:

@@ -2,7 +2,8 @@
 //
 //   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
-//                 [--sharp-angle DEG] [--vt-per-corner] [--vval FILE] [--report FILE.json] [--quiet]
+//                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
+//                 [--quiet]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
 // UVs to nearby doubles that are exactly seamless (Mandad & Campen 2019), checks the result in
@@ -46,8 +47,8 @@ namespace params = CGAL::Seamless_snapping::parameters;
 static const char* usage_text =
   "usage: seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary]\n"
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
-  "                     [--features FILE] [--sharp-angle DEG] [--vt-per-corner] [--vval FILE]\n"
-  "                     [--report FILE.json] [--quiet]\n";
+  "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
+  "                     [--vval FILE] [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
   "Makes an approximately seamless UV map exactly seamless (Mandad & Campen 2019, \"Exact\n"
@@ -68,7 +69,7 @@ static const char* help_text =
   "                       instead of 'already exactly seamless'\n"
   "  --keep-layout        write OUT.obj in the input's own layout: the same 'v' and 'vt' lines in the\n"
   "                       same order (only moved UVs change) and the same face indices; not with\n"
-  "                       --integer-grid, --grid-scale, --features, --sharp-angle, --vt-per-corner\n"
+  "                       --integer-grid, --grid-scale, --features, --sharp-angle, --pin, --vt-per-corner\n"
   "  --fail-on-new-flips  exit 1 without writing OUT.obj when the snap leaves UV triangles flipped or\n"
   "                       degenerate that were positively oriented in the input\n"
   "  --no-align-boundary  do not make axis-parallel border edges exactly axis-parallel\n"
@@ -91,6 +92,11 @@ static const char* help_text =
   "                       comment. Each edge must be within 1e-3 degrees of an axis in UV.\n"
   "  --sharp-angle DEG    also align every interior edge whose faces meet at a dihedral angle of more\n"
   "                       than DEG degrees (angle between the face normals)\n"
+  "  --pin FILE           vertices whose UVs must not move (pinned_corner_map): one vertex index per\n"
+  "                       line, 0-based as for --features, '#' starts a comment; every corner of the\n"
+  "                       vertex keeps its UV bit for bit (with --integer-grid too). Refused (nothing\n"
+  "                       written) when a pinned UV has bits below the exact snap's grid quantum or\n"
+  "                       the pins contradict the constraints (the message names the corner).\n"
   "  --vt-per-corner      write one 'vt' per face corner (the layout libQEx's test meshes use)\n"
   "  --vval FILE          with --integer-grid: also write libQEx's vertex valence file (VVAL: a JSON\n"
   "                       header line, the vertex count, one integer per vertex in the order of\n"
@@ -115,34 +121,70 @@ static const char* help_text =
   "created or changed); 2 for a command-line error.\n";
 
 typedef Mesh::Property_map<Mesh::Edge_index, bool>       Edge_flags;
+typedef Mesh::Property_map<Mesh::Halfedge_index, bool>   Halfedge_flags;
 
-// --features FILE: one edge per line, "i j" (0-based vertex indices), '#' comments. False with a
-// message naming the line for a malformed line, an index out of range or a pair that is no edge.
-static bool read_feature_edges(const std::string& file, const Mesh& m, Edge_flags features, std::size_t& count,
-                               std::string& message)
+// A file of 0-based vertex indices, `per_line` of them per line ('#' starts a comment, blank lines are
+// skipped): `use(indices, where)` per line, where = "file:line: " (it returns false with a message to
+// stop). False with a message naming the line for a malformed line or an index out of range.
+template <class Use>
+static bool read_vertex_index_lines(const std::string& file, const char* what, std::size_t per_line, const Mesh& m,
+                                    const Use& use, std::string& message)
 {
   std::ifstream is(file);
-  if(!is) { message = "cannot open the feature file '" + file + "'"; return false; }
+  if(!is) { message = "cannot open the " + std::string(what) + " file '" + file + "'"; return false; }
   std::string line;
-  count = 0;
   for(std::size_t no = 1; std::getline(is, line); ++no) {
     line = line.substr(0, line.find('#'));
     std::istringstream ls(line);
-    long long a, b;
+    std::vector<long long> idx;
+    long long a;
     std::string rest;
-    if(!(ls >> a)) continue;   // blank or comment line
+    while(idx.size() < per_line && ls >> a) idx.push_back(a);
+    if(idx.empty() && !(ls.clear(), ls >> rest)) continue;   // blank or comment line
     const std::string where = file + ":" + std::to_string(no) + ": ";
-    if(!(ls >> b) || (ls >> rest)) { message = where + "expected two vertex indices"; return false; }
-    if(a < 0 || b < 0 || a >= (long long)m.number_of_vertices() || b >= (long long)m.number_of_vertices()) {
-      message = where + "vertex index out of range (the mesh has " + std::to_string(m.number_of_vertices()) + " vertices)";
+    if(idx.size() != per_line || (ls.clear(), ls >> rest)) {
+      message = where + (per_line == 1 ? "expected one vertex index" : "expected " + std::to_string(per_line) + " vertex indices");
       return false;
     }
-    const auto h = m.halfedge(Mesh::Vertex_index(Mesh::size_type(a)), Mesh::Vertex_index(Mesh::size_type(b)));
-    if(h == Mesh::null_halfedge()) { message = where + "vertices " + std::to_string(a) + " and " + std::to_string(b) + " are not joined by an edge"; return false; }
-    put(features, m.edge(h), true);
-    ++count;
+    for(long long i : idx)
+      if(i < 0 || i >= (long long)m.number_of_vertices()) {
+        message = where + "vertex index out of range (the mesh has " + std::to_string(m.number_of_vertices()) + " vertices)";
+        return false;
+      }
+    if(!use(idx, where)) return false;
   }
   return true;
+}
+
+// --features FILE: one edge per line, "i j" (0-based vertex indices); a pair that is no edge is refused.
+static bool read_feature_edges(const std::string& file, const Mesh& m, Edge_flags features, std::size_t& count,
+                               std::string& message)
+{
+  count = 0;
+  return read_vertex_index_lines(file, "feature", 2, m, [&](const std::vector<long long>& i, const std::string& where) {
+    const auto h = m.halfedge(Mesh::Vertex_index(Mesh::size_type(i[0])), Mesh::Vertex_index(Mesh::size_type(i[1])));
+    if(h == Mesh::null_halfedge()) {
+      message = where + "vertices " + std::to_string(i[0]) + " and " + std::to_string(i[1]) + " are not joined by an edge";
+      return false;
+    }
+    put(features, m.edge(h), true);
+    ++count;
+    return true;
+  }, message);
+}
+
+// --pin FILE: one vertex per line (0-based index); every corner of the vertex is pinned
+static bool read_pinned_vertices(const std::string& file, const Mesh& m, Halfedge_flags pinned, std::size_t& count,
+                                 std::string& message)
+{
+  count = 0;
+  return read_vertex_index_lines(file, "pin", 1, m, [&](const std::vector<long long>& i, const std::string&) {
+    const Mesh::Vertex_index v = Mesh::Vertex_index(Mesh::size_type(i[0]));
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, m))
+      if(!m.is_border(h)) put(pinned, h, true);
+    ++count;
+    return true;
+  }, message);
 }
 
 // --sharp-angle DEG: interior edges whose face normals differ by more than DEG degrees
@@ -222,7 +264,7 @@ int main(int argc, char** argv)
   bool integer_grid = false;
   double grid_scale = 1;
   bool vt_per_corner = false;
-  std::string features_file, vval_file;
+  std::string features_file, vval_file, pin_file;
   double sharp_angle = -1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -236,6 +278,10 @@ int main(int argc, char** argv)
     else if(a == "--quiet") quiet = true;
     else if(a == "--integer-grid") integer_grid = true;
     else if(a == "--vt-per-corner") vt_per_corner = true;
+    else if(a == "--pin") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
+      pin_file = argv[++i];
+    }
     else if(a == "--vval") {
       if(i + 1 >= argc) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
       vval_file = argv[++i];
@@ -269,9 +315,10 @@ int main(int argc, char** argv)
     else { std::cerr << "seamless_snap: unexpected argument '" << a << "'\n" << usage_text; return 2; }
   }
   if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
-  if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner)) {
+  if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner ||
+                     !pin_file.empty())) {
     std::cerr << "seamless_snap: --keep-layout does not combine with --integer-grid, --grid-scale, --features, "
-                 "--sharp-angle or --vt-per-corner (not supported yet)\n" << usage_text;
+                 "--sharp-angle, --pin or --vt-per-corner (not supported yet)\n" << usage_text;
     return 2;
   }
   if(!vval_file.empty() && !integer_grid) {
@@ -302,6 +349,12 @@ int main(int argc, char** argv)
     if(!read_feature_edges(features_file, mesh, features, n, message)) return fail(message);
     if(!quiet) std::cout << n << " feature edges read from " << features_file << "\n";
   }
+  Halfedge_flags pinned = mesh.add_property_map<Mesh::Halfedge_index, bool>("h:pinned", false).first;
+  if(!pin_file.empty()) {
+    std::size_t n = 0;
+    if(!read_pinned_vertices(pin_file, mesh, pinned, n, message)) return fail(message);
+    if(!quiet) std::cout << n << " pinned vertices read from " << pin_file << "\n";
+  }
   if(sharp_angle >= 0) {
     const std::size_t n = mark_sharp_edges(mesh, sharp_angle, features);
     if(!quiet) std::cout << n << " sharp edges (dihedral angle > " << sharp_angle << " degrees) to align\n";
@@ -316,7 +369,8 @@ int main(int argc, char** argv)
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale);
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
-                                             : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features));
+                                             : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
+                                                                                               .pinned_corner_map(pinned));
   if(!quiet) {
     std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms,
                 report.message.empty() ? "" : ": ", one_line(report.message).c_str());
