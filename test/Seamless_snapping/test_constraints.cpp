@@ -38,7 +38,8 @@
 //                                                        INVALID_INPUT
 //   pinned corners: torus, data                          pinned_corner_map, default and integer-grid mode: pinned
 //                                                        corners stay bit-identical, the result is exactly seamless
-//                                                        (an exact IGM), at scales 2^0, 2^-7, 2^9 bit for bit; a pin
+//                                                        (an exact IGM), at scales 2^0, 2^-7, 2^9 bit for bit, also
+//                                                        unreduced and with a pin between grid lines; a pin
 //                                                        below the grid quantum is RANGE_EXCEEDED, contradicting
 //                                                        pins INFEASIBLE, map untouched; fandisk with every
 //                                                        integer corner pinned
@@ -724,6 +725,18 @@ static void test_pinned_corners_analytic()
       assert(uv_bits(m, uv) != bits0 && pinned_bit_identical(m, uv, pin, bits0));
       assert(SS::is_exactly_seamless(m, uv));
       if(igm) assert(SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(1 / scale)));
+      // the full sector system (use_reduced_system(false)) keeps the pins as well
+      if(j == 0) {
+        Mesh u; UV_map uvu;
+        make_perturbed_torus(u, uvu, 1);
+        Pin_map pu = pins_of(u);
+        pin_uv(u, uvu, pu, Point_2(1, 3)); pin_uv(u, uvu, pu, Point_2(2, 0)); pin_uv(u, uvu, pu, Point_2(1, 1));
+        const std::vector<std::uint64_t> bu = uv_bits(u, uvu);
+        const SS::Snap_report ru = SS::snap_seamless_parameterization(u, uvu,
+            SS::parameters::pinned_corner_map(pu).integer_grid_map(igm).use_reduced_system(false));
+        assert(ru.status == SS::SUCCESS && ru.pinned_sectors == 3 && pinned_bit_identical(u, uvu, pu, bu));
+        assert(SS::is_exactly_seamless(u, uvu) && (!igm || SS::is_exact_integer_grid_map(u, uvu)));
+      }
       // the same pins without the flag: the result differs only where the pins hold it (sanity of the test:
       // the pinned sectors do move without pins)
       if(j == 0) {
