@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["snap", "project", "is_exactly_seamless", "SnapError", "__version__"]
+__all__ = ["snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map", "SnapError", "__version__"]
 __version__ = _core.version
 
 
@@ -34,15 +34,20 @@ def _mesh_arrays(V, F, UV, FUV):
 
 
 def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
-         rotation_tolerance=1.0, alignment_tolerance=1e-3, raise_on_failure=True):
+         rotation_tolerance=1.0, alignment_tolerance=1e-3, minimal_change=True, integer_grid_map=False,
+         grid_scale=1.0, raise_on_failure=True):
     """Snap the per-corner UV map (UV, FUV) of the triangle mesh (V, F) to an exactly seamless one.
 
     Returns (UV_out, FUV_out, report): FUV_out equals FUV and UV_out equals UV except for the moved rows
     (rows shared by corners that were snapped apart are split; see the C++ reference). `report` is the
     C++ Snap_report as a dict. `weld=True` merges bit-identical vertices first (cut meshes).
+    `minimal_change=False` snaps the input itself (the paper's point) instead of the L2-closest point of the
+    constraints; `integer_grid_map=True` snaps to an exact integer-grid map (integer translations, cones on
+    integer points, aligned edges on integer isolines) whose grid is at multiples of 1/`grid_scale` (a power of 2).
     """
     uv, fuv, text = _core.snap(*_mesh_arrays(V, F, UV, FUV), weld, repair_flips, align_boundary,
-                               use_reduced_system, float(rotation_tolerance), float(alignment_tolerance))
+                               use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
+                               bool(minimal_change), bool(integer_grid_map), float(grid_scale))
     report = json.loads(text)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
@@ -53,6 +58,13 @@ def is_exactly_seamless(V, F, UV, FUV, *, weld=False):
     """True iff every seam transition of the corner map is a rotation by k*90 degrees plus a translation,
     exactly (rational arithmetic), and aligned boundaries are axis-parallel exactly."""
     return bool(_core.is_exactly_seamless(*_mesh_arrays(V, F, UV, FUV), weld))
+
+
+def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=False, grid_scale=1.0):
+    """True iff the corner map is exactly seamless, every cut edge has an integer translation, every cone
+    sits on an integer point and aligned edges lie on integer isolines, all exactly (rational arithmetic),
+    after multiplying the UVs by `grid_scale` (a power of 2)."""
+    return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), weld, float(grid_scale)))
 
 
 def _integer_array(a, what):

@@ -1,5 +1,6 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
-// snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), project(C, b, xbar, ...).
+// snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
+// project(C, b, xbar, ...).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/matrices.h>
@@ -26,7 +27,7 @@ namespace {
 
 py::tuple snap(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
                bool repair_flips, bool align_boundary, bool use_reduced_system, double rotation_tolerance,
-               double alignment_tolerance)
+               double alignment_tolerance, bool minimal_change, bool integer_grid_map, double grid_scale)
 {
   Eigen::MatrixXd UV_out;
   Eigen::MatrixXi FUV_out;
@@ -36,7 +37,8 @@ py::tuple snap(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, cons
     r = SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out,
           SS::parameters::weld_vertices(weld).repair_flips(repair_flips).align_boundary(align_boundary)
                          .use_reduced_system(use_reduced_system).rotation_tolerance(rotation_tolerance)
-                         .alignment_tolerance(alignment_tolerance));
+                         .alignment_tolerance(alignment_tolerance).minimal_change(minimal_change)
+                         .integer_grid_map(integer_grid_map).grid_scale(grid_scale));
   }
   if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json());
   return py::make_tuple(UV_out, FUV_out, r.to_json());
@@ -46,6 +48,13 @@ bool is_exactly_seamless(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR
 {
   py::gil_scoped_release release;
   return SS::is_exactly_seamless(V, F, UV, FUV, SS::parameters::weld_vertices(weld));
+}
+
+bool is_exact_integer_grid_map(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV,
+                               bool weld, double grid_scale)
+{
+  py::gil_scoped_release release;
+  return SS::is_exact_integer_grid_map(V, F, UV, FUV, SS::parameters::weld_vertices(weld).grid_scale(grid_scale));
 }
 
 std::string projection_report_json(const SS::Projection_report& r, const SS::Irref_statistics& st)
@@ -106,9 +115,12 @@ PYBIND11_MODULE(_core, m)
   m.doc() = "Exact seamless snapping (Mandad & Campen 2019): C++ core of the seamless_snapping package";
   m.def("snap", &snap, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("repair_flips"), py::arg("align_boundary"), py::arg("use_reduced_system"),
-        py::arg("rotation_tolerance"), py::arg("alignment_tolerance"));
+        py::arg("rotation_tolerance"), py::arg("alignment_tolerance"), py::arg("minimal_change"),
+        py::arg("integer_grid_map"), py::arg("grid_scale"));
   m.def("is_exactly_seamless", &is_exactly_seamless, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
         py::arg("weld"));
+  m.def("is_exact_integer_grid_map", &is_exact_integer_grid_map, py::arg("V"), py::arg("F"), py::arg("UV"),
+        py::arg("FUV"), py::arg("weld"), py::arg("grid_scale"));
   m.def("project", &project, py::arg("n_rows"), py::arg("n_cols"), py::arg("rows"), py::arg("cols"), py::arg("vals"),
         py::arg("b"), py::arg("xbar"), py::arg("delta_margin_bits"), py::arg("force_multiprecision"));
   m.attr("version") = "0.1.0";

@@ -44,9 +44,10 @@ def rot(k, p):
     return (x, y)
 
 
-def seam_violations(V, F, UV, FUV, weld):
+def seam_violations(V, F, UV, FUV, weld, translations=None):
     """Cut edges whose two sides are not related by an exact rotation k*90 + translation (Eq. 4), in
-    Fractions. Vertices with bit-identical positions are one vertex when `weld`."""
+    Fractions. Vertices with bit-identical positions are one vertex when `weld`. The translations of the
+    exact ones are appended to `translations` when given."""
     key = {}
     vid = []
     for p in V:
@@ -74,16 +75,19 @@ def seam_violations(V, F, UV, FUV, weld):
             tb = (qb[0] - rb[0], qb[1] - rb[1])
             if ta == tb:
                 ok = True
+                if translations is not None:
+                    translations.append(ta)
                 break
         bad += 0 if ok else 1
     return bad, cut
 
 
-def cut_grid(n=8, noise=1e-12, seed=1):
-    """A planar n x n grid whose upper half is rotated by 90 degrees and translated (one cut line
-    from border to border, no cone), with the upper corners perturbed by `noise`: seamless up to noise."""
+def cut_grid(n=8, noise=1e-12, seed=1, size=1.0, t=(3.25, 0.5)):
+    """A planar n x n grid of side `size` whose upper half is rotated by 90 degrees and translated by `t`
+    (one cut line from border to border, no cone), with the upper corners perturbed by `noise`: seamless
+    up to noise."""
     rng = random.Random(seed)
-    V = [[i / n, j / n, 0.0] for j in range(n + 1) for i in range(n + 1)]
+    V = [[size * i / n, size * j / n, 0.0] for j in range(n + 1) for i in range(n + 1)]
     F, FUV, UV = [], [], []
     idx = lambda i, j: j * (n + 1) + i
     half = n // 2
@@ -95,7 +99,7 @@ def cut_grid(n=8, noise=1e-12, seed=1):
                 for v in tri:
                     x, y = V[v][0], V[v][1]
                     if above:
-                        x, y = -y + 3.25 + rng.uniform(-noise, noise), x + 0.5 + rng.uniform(-noise, noise)
+                        x, y = -y + t[0] + rng.uniform(-noise, noise), x + t[1] + rng.uniform(-noise, noise)
                     UV.append([x, y])
                     ts.append(len(UV) - 1)
                 F.append(list(tri))
@@ -118,6 +122,30 @@ def test_snap_generated_cut_grid():
     # an exact input comes back unchanged
     UV3, FUV3, report3 = ss.snap(V, F, UV2, FUV2)
     assert np.array_equal(UV3, UV2) and np.array_equal(FUV3, FUV2)
+
+
+def test_snap_integer_grid_map():
+    # side 8 on an 8 x 8 grid: every vertex on an integer point, translation (3, 1) up to noise
+    V, F, UV, FUV = cut_grid(n=8, noise=1e-9, size=8.0, t=(3.0, 1.0))
+    assert not ss.is_exact_integer_grid_map(V, F, UV, FUV)
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV, integer_grid_map=True)
+    assert report["status"] == "SUCCESS"
+    translations = []
+    bad, cut = seam_violations(V, F, UV2, FUV2, weld=False, translations=translations)
+    assert bad == 0 and cut > 0 and len(translations) == cut
+    assert all(c.denominator == 1 for tr in translations for c in tr), "integer translations, exactly"
+    # u -> R u + (3, 1) from the lower half to the upper one, or its inverse u -> R^-1 u + (-1, 3)
+    assert set(translations) <= {(Fraction(3), Fraction(1)), (Fraction(-1), Fraction(3))}
+    assert ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
+    assert np.max(np.abs(UV2[FUV2] - UV[FUV])) < 1e-8
+    # a map whose integer grid is at multiples of 1/2: the same map scaled by 1/2, grid_scale 2, bit for bit
+    UV4, FUV4, _ = ss.snap(V, F, UV / 2, FUV, integer_grid_map=True, grid_scale=2.0)
+    assert np.array_equal(UV4, UV2 / 2) and ss.is_exact_integer_grid_map(V, F, UV4, FUV4, grid_scale=2.0)
+    # far from integers (translation 3.25): refused, nothing returned
+    Vq, Fq, UVq, FUVq = cut_grid(n=8, noise=1e-9, size=8.0, t=(3.25, 1.0))
+    with pytest.raises(ss.SnapError) as e:
+        ss.snap(Vq, Fq, UVq, FUVq, integer_grid_map=True)
+    assert e.value.report["status"] == "INVALID_INPUT"
 
 
 def test_snap_failure_is_reported_and_raises():

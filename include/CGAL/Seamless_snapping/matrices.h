@@ -14,6 +14,7 @@
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/matrices/corner_uv_matrices.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -23,6 +24,23 @@
 
 namespace CGAL {
 namespace Seamless_snapping {
+
+namespace internal {
+
+// `check(mesh with uv)` on the mesh that V, F, UV, FUV describe (welded with `weld_vertices(true)`);
+// false for matrices that do not describe a valid mesh
+template <class DerivedV, class DerivedF, class DerivedUV, class DerivedFUV, class NamedParameters, class Check>
+bool check_on_matrices(const Eigen::MatrixBase<DerivedV>& V, const Eigen::MatrixBase<DerivedF>& F,
+                       const Eigen::MatrixBase<DerivedUV>& UV, const Eigen::MatrixBase<DerivedFUV>& FUV,
+                       const NamedParameters& np, const Check& check)
+{
+  const bool weld = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, snap_np::weld_vertices), false);
+  Matrix_mesh_with_uv m;
+  std::string message;
+  return mesh_from_matrices(V, F, UV, FUV, weld, m, message) == SUCCESS && check(m);
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
@@ -73,11 +91,26 @@ bool is_exactly_seamless(const Eigen::MatrixBase<DerivedV>& V, const Eigen::Matr
                          const Eigen::MatrixBase<DerivedUV>& UV, const Eigen::MatrixBase<DerivedFUV>& FUV,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const bool weld = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, snap_np::weld_vertices), false);
-  internal::Matrix_mesh_with_uv m;
-  std::string message;
-  if(internal::mesh_from_matrices(V, F, UV, FUV, weld, m, message) != SUCCESS) return false;
-  return is_exactly_seamless(m.mesh, m.uv, np);
+  return internal::check_on_matrices(V, F, UV, FUV, np, [&](const internal::Matrix_mesh_with_uv& m) {
+    return is_exactly_seamless(m.mesh, m.uv, np);
+  });
+}
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * Matrix version of `is_exact_integer_grid_map()` (libigl convention, see the matrix version of
+ * `snap_seamless_parameterization()` for `V`, `F`, `UV`, `FUV` and `weld_vertices`; `grid_scale` as in
+ * the mesh version). Returns `false` for matrices that do not describe a valid mesh.
+ */
+template <class DerivedV, class DerivedF, class DerivedUV, class DerivedFUV,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_exact_integer_grid_map(const Eigen::MatrixBase<DerivedV>& V, const Eigen::MatrixBase<DerivedF>& F,
+                               const Eigen::MatrixBase<DerivedUV>& UV, const Eigen::MatrixBase<DerivedFUV>& FUV,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::check_on_matrices(V, F, UV, FUV, np, [&](const internal::Matrix_mesh_with_uv& m) {
+    return is_exact_integer_grid_map(m.mesh, m.uv, np);
+  });
 }
 
 } // namespace Seamless_snapping
