@@ -50,6 +50,7 @@ struct Motorcycle_graph
  * Without cones and border corners (a torus), two traces (+u and +v) are seeded at the first corner of the mesh,
  * and `seeded` is set.
  *
+ * \param tracer the tracer of the map (`Isoline_tracer`); its status is the graph's when it is not `SUCCESS`
  * \param max_faces step limit per trace (0: 20 times the number of faces, plus 100)
  */
 template <class TriangleMesh, class HalfedgeUVMap>

@@ -26,7 +26,7 @@ namespace IO {
 /*!
  * \ingroup PkgSeamlessSnappingRef
  * reads an OBJ file with per-corner texture coordinates into libigl-style matrices, in the file's own
- * layout: `V` (#v x 3) and `UV` (#vt x 2) in file order, `F` and `FUV` (#f x 3) with 0-based indices.
+ * layout: `V` (`#v` x 3) and `UV` (`#vt` x 2) in file order, `F` and `FUV` (`#f` x 3) with 0-based indices.
  * Same syntax and checks as `read_OBJ_with_corner_uvs()` (triangles only, indices in range, finite
  * numbers; no mesh is built, so connectivity is not checked here). The matrices are written only on `SUCCESS`.
  */
