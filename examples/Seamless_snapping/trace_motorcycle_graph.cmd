@@ -1,0 +1,1 @@
+${SS_EXAMPLE_DATA}/bear_orbifold.obj ${SS_EXAMPLE_DATA}/bear_motorcycle_graph.svg
