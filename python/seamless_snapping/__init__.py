@@ -6,17 +6,22 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
 
     UV2, FUV2, report = seamless_snapping.snap(V, F, UV, FUV)
     x, report = seamless_snapping.project(C, b, xbar)      # C: scipy.sparse or 2-D integer array
+    graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
 
-Both return new arrays only when every constraint holds exactly (report["status"] == "SUCCESS");
+snap and project return new arrays only when every constraint holds exactly (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
+The tracing functions do not raise for a map they cannot read or trace: their dict has a "status" other than
+"SUCCESS" (only a face, corner or direction out of range raises ValueError or KeyError).
 """
 import json
+from fractions import Fraction
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map", "SnapError", "__version__"]
+__all__ = ["snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map", "motorcycle_graph",
+           "trace_isoline", "DIRECTIONS", "SnapError", "__version__"]
 __version__ = _core.version
 
 
@@ -107,3 +112,61 @@ def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, rais
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return x, report
+
+
+#: the isoline directions of `trace_isoline`, in the UV chart of the start face
+DIRECTIONS = {"+u": 0, "+v": 1, "-u": 2, "-v": 3}
+
+
+def _exact_polyline(trace):
+    trace["uv_exact"] = [tuple(tuple(Fraction(c) for c in point) for point in segment)
+                         for segment in trace["uv_exact"]]
+    return trace
+
+
+def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_tolerance=1.0):
+    """The motorcycle graph of the per-corner UV map (UV, FUV) of (V, F) (Sec. 6.2 of the paper): the
+    separatrices from every cone of n quarter turns (its n axis rays) and from every border corner (the axis
+    rays strictly inside its fan), traced exactly (rational arithmetic) and together, each stopping at a cone,
+    the border or an earlier trace. Without cones and border corners two traces (+u, +v) are seeded.
+
+    Returns a dict: "status" ("SUCCESS", or why the map cannot be traced, e.g. "INVALID_INPUT" or
+    "NOT_QUARTER_TURN_SEAMLESS"), "message", and on SUCCESS:
+      "counts": separatrices, failed (ended in an inconsistency of the map), cones, border_corners,
+                cones_with_wrong_ray_count, inexact_transfers (cut crossings that missed the edge point);
+      "ends": number of separatrices per end kind (the C++ Trace_end names: "cone", "border",
+              "earlier_trace", ..., and the failures "missed_at_cut", "oscillation_at_cut", ...);
+      "seeded": True when the two traces were seeded (no cones, no border corners);
+      "separatrices": one dict per trace (index = the "hit_trace" of the others), see `trace_isoline`, plus
+              "source": "cone", "border_corner" or "seed".
+    A map that is not exactly seamless still gets a graph: its inexactness shows as failure ends.
+    `max_faces` limits each trace (0: 20 times the number of faces, plus 100).
+    """
+    d = _core.motorcycle_graph(*_mesh_arrays(V, F, UV, FUV), bool(weld), int(max_faces), float(rotation_tolerance))
+    for t in d.get("separatrices", []):
+        _exact_polyline(t)
+    return d
+
+
+def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_faces=0, rotation_tolerance=1.0):
+    """Traces one isoline exactly from the vertex F[face, corner], along `direction` ("+u", "+v", "-u", "-v",
+    or 0..3) in the UV chart of `face` (the sector of that corner), until a cone, the border, a closed loop,
+    the face limit, or an inconsistency of the map.
+
+    Returns a dict: "status" and "message" (of reading the map), and on SUCCESS the trace:
+      "end": how it ended (a C++ Trace_end name), "failure": True for an inconsistency of the map, "message";
+      "start": the row of V it started from, "start_face": the row of F of its first chart (-1 if none);
+      "faces_crossed", "length" (UV length, rounded), "inexact_transfers", "hit_trace";
+      the polyline, one straight segment per face crossed (consecutive segments meet in one surface point):
+      "faces": row of F of each segment, "directions": 0..3 (+u, +v, -u, -v in that face's chart),
+      "uv": (#segments, 2, 2) source and target in the UV chart of the segment's face (the UVs of its corners),
+            rounded to doubles; "uv_exact": the same points exactly, as fractions.Fraction;
+      "points": (#segments + 1, 3) the polyline in 3D (exact barycentric coordinates, rounded to doubles).
+    """
+    if isinstance(direction, str):
+        direction = DIRECTIONS[direction]
+    d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), int(face), int(corner), int(direction), bool(weld),
+                            int(max_faces), float(rotation_tolerance))
+    if d["status"] == "SUCCESS":
+        _exact_polyline(d)
+    return d

@@ -1,9 +1,11 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
-// project(C, b, xbar, ...).
+// project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
+#include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/matrices.h>
+#include <CGAL/Seamless_snapping/trace_isoline.h>
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -13,6 +15,7 @@
 #include <Eigen/Sparse>
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -108,6 +111,177 @@ py::tuple project(std::size_t n_rows, std::size_t n_cols, const std::vector<long
   return py::make_tuple(py::array_t<double>(py::ssize_t(x.size()), x.data()), json);
 }
 
+// ---- tracing: the mesh of the matrices (the package's matrix-to-mesh conversion), traces as dicts ----
+
+typedef SS::internal::Matrix_mesh Mesh;
+typedef SS::Isoline_tracer<Mesh, SS::internal::Matrix_uv_map> Tracer;
+typedef SS::Isoline_trace<Mesh> Trace;
+
+// mesh vertex -> a row of V, mesh face -> its row of F (through the corners of the conversion)
+struct Row_maps
+{
+  std::vector<long long> vertex_row, face_row;
+  Row_maps(const SS::internal::Matrix_mesh_with_uv& m, const MatrixXlR& F)
+    : vertex_row(m.mesh.number_of_vertices(), -1), face_row(m.mesh.number_of_faces(), -1)
+  {
+    for(std::size_t f = 0; f < m.corner.size(); ++f)
+      for(int k = 0; k < 3; ++k) {
+        const Mesh::Halfedge_index h = m.corner[f][std::size_t(k)];
+        const std::size_t v = std::size_t(m.mesh.target(h));
+        if(v < vertex_row.size() && vertex_row[v] < 0) vertex_row[v] = F(Eigen::Index(f), k);
+        const std::size_t fi = std::size_t(m.mesh.face(h));
+        if(fi < face_row.size()) face_row[fi] = (long long)(f);
+      }
+  }
+};
+
+std::string rational(const CGAL::Gmpq& q)
+{
+  std::ostringstream o;
+  o << q.numerator() << "/" << q.denominator();
+  return o.str();
+}
+
+py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows)
+{
+  py::dict d;
+  d["end"] = SS::trace_end_name(t.end);
+  d["failure"] = SS::is_failure(t.end);
+  d["message"] = t.message;
+  d["start"] = t.has_start_vertex ? rows.vertex_row[std::size_t(t.start_vertex)] : -1LL;
+  long long start_face = -1, start_corner = -1;
+  if(t.has_start_corner) {
+    start_face = rows.face_row[std::size_t(mesh.face(t.start_corner))];
+    Mesh::Halfedge_index h = mesh.halfedge(mesh.face(t.start_corner));
+    for(int k = 0; k < 3; ++k, h = mesh.next(h))
+      if(h == t.start_corner) start_corner = k;
+  }
+  d["start_face"] = start_face;
+  d["hit_trace"] = t.hit_trace;
+  d["faces_crossed"] = t.faces_crossed;
+  d["length"] = t.length;
+  d["inexact_transfers"] = t.inexact_transfers;
+  const py::ssize_t n = py::ssize_t(t.segments.size());
+  py::array_t<long long> faces(n), dirs(n);
+  py::array_t<double> uv({n, py::ssize_t(2), py::ssize_t(2)});
+  py::array_t<double> points({n == 0 ? py::ssize_t(0) : n + 1, py::ssize_t(3)});
+  auto fa = faces.mutable_unchecked<1>();
+  auto da = dirs.mutable_unchecked<1>();
+  auto ua = uv.mutable_unchecked<3>();
+  auto pa = points.mutable_unchecked<2>();
+  py::list exact;
+  for(py::ssize_t i = 0; i < n; ++i) {
+    const SS::Trace_segment<Mesh>& s = t.segments[std::size_t(i)];
+    fa(i) = rows.face_row[std::size_t(s.face)];
+    da(i) = int(s.direction);
+    const SS::Trace_point<Mesh>* ends[2] = {&s.source, &s.target};
+    py::list seg;
+    for(int e = 0; e < 2; ++e) {
+      ua(i, e, 0) = CGAL::to_double(ends[e]->u);
+      ua(i, e, 1) = CGAL::to_double(ends[e]->v);
+      seg.append(py::make_tuple(rational(ends[e]->u), rational(ends[e]->v)));
+    }
+    exact.append(seg);
+    if(i == 0) for(int c = 0; c < 3; ++c) pa(0, c) = s.source.position[std::size_t(c)];
+    for(int c = 0; c < 3; ++c) pa(i + 1, c) = s.target.position[std::size_t(c)];
+  }
+  d["faces"] = faces;
+  d["directions"] = dirs;
+  d["uv"] = uv;
+  d["uv_exact"] = exact;
+  d["points"] = points;
+  return d;
+}
+
+// the status of a map that could not be traced, as the graph's dict
+py::dict failed_dict(SS::Status s, const std::string& message)
+{
+  py::dict d;
+  d["status"] = SS::status_name(s);
+  d["message"] = message;
+  return d;
+}
+
+py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
+                          std::size_t max_faces, double rotation_tolerance)
+{
+  SS::internal::Matrix_mesh_with_uv m;
+  std::string message;
+  SS::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, message);
+  }
+  if(s != SS::SUCCESS) return failed_dict(s, message);
+  std::unique_ptr<Tracer> tracer;
+  SS::Motorcycle_graph<Mesh> g;
+  {
+    py::gil_scoped_release release;
+    tracer.reset(new Tracer(m.mesh, m.uv, rotation_tolerance));
+    g = SS::build_motorcycle_graph(*tracer, max_faces);
+  }
+  py::dict d = failed_dict(g.status, g.message);
+  if(g.status != SS::SUCCESS) return d;
+  const Row_maps rows(m, F);
+  static const char* kinds[3] = {"cone", "border_corner", "seed"};
+  py::list seps;
+  std::size_t inexact = 0;
+  for(std::size_t i = 0; i < g.separatrices.size(); ++i) {
+    py::dict t = trace_dict(g.separatrices[i], m.mesh, rows);
+    const int k = i < g.source_kind.size() ? g.source_kind[i] : -1;
+    t["source"] = (k >= 0 && k < 3) ? kinds[k] : "unknown";
+    inexact += g.separatrices[i].inexact_transfers;
+    seps.append(t);
+  }
+  py::dict ends;
+  for(int e = 0; e < SS::number_of_trace_ends; ++e) ends[SS::trace_end_name(SS::Trace_end(e))] = g.ends[std::size_t(e)];
+  py::dict counts;
+  counts["separatrices"] = g.separatrices.size();
+  counts["failed"] = g.failed;
+  counts["cones"] = g.cones;
+  counts["border_corners"] = g.border_corners;
+  counts["cones_with_wrong_ray_count"] = g.cones_with_wrong_ray_count;
+  counts["inexact_transfers"] = inexact;
+  d["counts"] = counts;
+  d["ends"] = ends;
+  d["seeded"] = g.seeded;
+  d["separatrices"] = seps;
+  return d;
+}
+
+py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, long long face,
+                       int corner, int direction, bool weld, std::size_t max_faces, double rotation_tolerance)
+{
+  if(face < 0 || face >= (long long)(F.rows()))
+    throw std::invalid_argument("face " + std::to_string(face) + " is not a row of F");
+  if(corner < 0 || corner > 2) throw std::invalid_argument("corner must be 0, 1 or 2");
+  if(direction < 0 || direction > 3) throw std::invalid_argument("direction must be 0 (+u), 1 (+v), 2 (-u) or 3 (-v)");
+  SS::internal::Matrix_mesh_with_uv m;
+  std::string message;
+  SS::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, message);
+  }
+  if(s != SS::SUCCESS) return failed_dict(s, message);
+  std::unique_ptr<Tracer> tracer;
+  Trace t;
+  {
+    py::gil_scoped_release release;
+    tracer.reset(new Tracer(m.mesh, m.uv, rotation_tolerance));
+    if(tracer->status() == SS::SUCCESS) {
+      SS::Trace_options<Mesh> o;
+      o.max_faces = max_faces;
+      t = tracer->trace_from_vertex(m.corner[std::size_t(face)][std::size_t(corner)], SS::Trace_direction(direction), o);
+    }
+  }
+  if(tracer->status() != SS::SUCCESS) return failed_dict(tracer->status(), tracer->message());
+  const Row_maps rows(m, F);
+  py::dict d = trace_dict(t, m.mesh, rows);
+  d["status"] = "SUCCESS";
+  return d;
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m)
@@ -123,5 +297,9 @@ PYBIND11_MODULE(_core, m)
         py::arg("FUV"), py::arg("weld"), py::arg("grid_scale"));
   m.def("project", &project, py::arg("n_rows"), py::arg("n_cols"), py::arg("rows"), py::arg("cols"), py::arg("vals"),
         py::arg("b"), py::arg("xbar"), py::arg("delta_margin_bits"), py::arg("force_multiprecision"));
+  m.def("motorcycle_graph", &motorcycle_graph, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
+        py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
+  m.def("trace_isoline", &trace_isoline, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("face"),
+        py::arg("corner"), py::arg("direction"), py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
   m.attr("version") = "0.1.0";
 }

@@ -223,3 +223,182 @@ def test_snap_shared_data(name, weld):
     assert cut > 0 and bad == 0
     assert ss.is_exactly_seamless(V, F, UV2, FUV2, weld=weld)
     assert report["max_change"] < 1e-5
+
+
+# ---- tracing (motorcycle graph, isolines) ----
+
+def axis_parallel_exactly(trace):
+    """Every segment of the trace runs along its direction in its face's chart, exactly (Fractions):
+    +u/-u keep v, +v/-v keep u, and the other coordinate moves the right way."""
+    for (a, b), d in zip(trace["uv_exact"], trace["directions"]):
+        keep, move, sign = (1, 0, 1 if d == 0 else -1) if d in (0, 2) else (0, 1, 1 if d == 1 else -1)
+        if a[keep] != b[keep] or sign * (b[move] - a[move]) <= 0:
+            return False
+    return True
+
+
+def test_trace_isoline_cut_grid():
+    V, F, UV, FUV = cut_grid()
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV)
+    # from vertex 0 = (0, 0, 0) up the left border: through the cut (a quarter turn) to (0, 1, 0)
+    t = ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "+v")
+    assert t["status"] == "SUCCESS" and t["end"] == "border" and not t["failure"]
+    assert t["start"] == 0 and t["inexact_transfers"] == 0
+    assert len(t["faces"]) == 8 and t["points"].shape == (9, 3)
+    assert np.array_equal(t["points"], np.array([[0.0, j / 8, 0.0] for j in range(9)]))   # the grid's vertices
+    assert list(t["directions"]) == [1] * 4 + [2] * 4      # +v below the cut, -u in the rotated chart above it
+    assert axis_parallel_exactly(t)
+    assert 0 in F[t["start_face"]] and t["start_face"] == t["faces"][0]
+    for seg, f in zip(t["uv_exact"], t["faces"]):           # the points lie in the UV triangle of their face
+        lo, hi = UV2[FUV2[f]].min(axis=0), UV2[FUV2[f]].max(axis=0)
+        assert all(lo[c] <= float(p[c]) <= hi[c] for p in seg for c in range(2))
+    # the noisy input: the same isoline misses the cut's vertices (inexact transfers), more and shorter pieces
+    t0 = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+v")
+    assert t0["end"] == "border" and t0["inexact_transfers"] > 0 and len(t0["faces"]) > 8
+    # along -v there is no sector at the border vertex; a bad face or direction is refused
+    assert ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "-v")["end"] == "invalid_start"
+    with pytest.raises(ValueError):
+        ss.trace_isoline(V, F, UV2, FUV2, len(F), 0, "+u")
+    with pytest.raises(KeyError):
+        ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "+w")
+    bad = UV2.copy()
+    bad[0, 0] = np.nan
+    assert ss.trace_isoline(V, F, bad, FUV2, 0, 0, "+u")["status"] == "INVALID_INPUT"
+
+
+def test_motorcycle_graph_cut_grid():
+    V, F, UV, FUV = cut_grid()
+    g0 = ss.motorcycle_graph(V, F, UV, FUV)
+    assert g0["status"] == "SUCCESS" and g0["counts"]["cones"] == 0 and g0["counts"]["border_corners"] == 4
+    assert g0["counts"]["inexact_transfers"] > 0          # the tracer sees the noise at the cut
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV)
+    g = ss.motorcycle_graph(V, F, UV2, FUV2)
+    assert g["status"] == "SUCCESS" and not g["seeded"]
+    c = g["counts"]
+    # a square: 4 convex border corners (quarter-turn fans) emit no rays; no cone
+    assert c == {"separatrices": 0, "failed": 0, "cones": 0, "border_corners": 4, "cones_with_wrong_ray_count": 0,
+                 "inexact_transfers": 0}
+    assert sum(g["ends"].values()) == 0 and g["separatrices"] == []
+    bad = UV2.copy()
+    bad[0, 0] = np.inf
+    g = ss.motorcycle_graph(V, F, bad, FUV2)
+    assert g["status"] == "INVALID_INPUT" and "not finite" in g["message"] and "separatrices" not in g
+
+
+def flat_torus(n=4, noise=0.0, seed=2):
+    """A flat n x n torus: each vertex (i, j) once, seams where the grid wraps (translations by n), corners
+    perturbed by `noise`. No cone, no border."""
+    rng = random.Random(seed)
+    V = [[float(i), float(j), 0.0] for j in range(n) for i in range(n)]
+    F, FUV, UV = [], [], []
+    for j in range(n):
+        for i in range(n):
+            I, J = (i, i + 1, i + 1, i), (j, j, j + 1, j + 1)
+            for tri in ((0, 1, 2), (0, 2, 3)):
+                F.append([(J[c] % n) * n + I[c] % n for c in tri])
+                ts = []
+                for c in tri:
+                    UV.append([I[c] + rng.uniform(-noise, noise), J[c] + rng.uniform(-noise, noise)])
+                    ts.append(len(UV) - 1)
+                FUV.append(ts)
+    return np.array(V), np.array(F), np.array(UV), np.array(FUV)
+
+
+def test_motorcycle_graph_flat_torus():
+    V, F, UV, FUV = flat_torus()
+    assert ss.is_exactly_seamless(V, F, UV, FUV)
+    g = ss.motorcycle_graph(V, F, UV, FUV)
+    assert g["status"] == "SUCCESS" and g["seeded"] and g["counts"]["cones"] == 0
+    assert g["counts"]["separatrices"] == 2 and g["counts"]["failed"] == 0
+    assert [s["source"] for s in g["separatrices"]] == ["seed", "seed"]
+    # the +u seed closes on itself exactly; the +v seed meets it
+    assert [s["end"] for s in g["separatrices"]] == ["closed_loop", "earlier_trace"]
+    assert g["separatrices"][1]["hit_trace"] == 0
+    for s in g["separatrices"]:
+        assert s["inexact_transfers"] == 0
+        assert axis_parallel_exactly(s)
+    # +u from a vertex of the torus closes after n edges, exactly at its start
+    t = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u")
+    assert t["end"] == "closed_loop" and len(t["faces"]) == 4 and np.array_equal(t["points"][0], t["points"][-1])
+    t = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u", max_faces=2)
+    assert t["end"] == "length_limit" and not t["failure"] and len(t["faces"]) < 4
+    g = ss.motorcycle_graph(V, F, UV, FUV, max_faces=2)
+    assert g["ends"]["length_limit"] >= 1 and g["ends"]["closed_loop"] == 0
+    # with noise the seams are inexact and the tracer notices; snapped, it is exact again
+    Vn, Fn, UVn, FUVn = flat_torus(noise=1e-10)
+    gn = ss.motorcycle_graph(Vn, Fn, UVn, FUVn)
+    assert gn["status"] == "SUCCESS" and gn["counts"]["inexact_transfers"] > 0 and gn["counts"]["failed"] > 0
+    assert "closed_loop" not in [s["end"] for s in gn["separatrices"]]     # the noisy isolines never close
+    UV2, FUV2, _ = ss.snap(Vn, Fn, UVn, FUVn)
+    g2 = ss.motorcycle_graph(Vn, Fn, UV2, FUV2)
+    assert g2["counts"]["failed"] == 0 and g2["counts"]["inexact_transfers"] == 0 and g2["seeded"]
+    assert all(s["end"] in ("closed_loop", "earlier_trace") for s in g2["separatrices"])
+
+
+def quarter_turns_at_interior_vertices(F, UV, FUV):
+    """{vertex: n} for every interior vertex whose UV angle sum is n quarter turns, n != 4 (a cone); the
+    angles in floating point (the sums of exactly seamless maps are multiples of a quarter turn up to rounding)."""
+    edges = {}
+    angle = {}
+    for f in range(len(F)):
+        for k in range(3):
+            a, b = F[f][k], F[f][(k + 1) % 3]
+            edges[(a, b)] = edges.get((a, b), 0) + 1
+            p, q, r = UV[FUV[f][k]], UV[FUV[f][(k + 1) % 3]], UV[FUV[f][(k + 2) % 3]]
+            e1, e2 = q - p, r - p
+            angle[a] = angle.get(a, 0.0) + abs(np.arctan2(e1[0] * e2[1] - e1[1] * e2[0], e1 @ e2))
+    border = {v for (a, b) in edges if (b, a) not in edges for v in (a, b)}
+    turns = {v: int(round(s / (np.pi / 2))) for v, s in angle.items() if v not in border}
+    return {v: n for v, n in turns.items() if n != 4}
+
+
+@pytest.mark.parametrize("name,weld", [("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", False),
+                                       ("directional/torus-hex-param.obj", True)])
+def test_motorcycle_graph_shared_data(name, weld):
+    path = os.path.join(SHARED, name)
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = read_obj(path)
+    g0 = ss.motorcycle_graph(V, F, UV, FUV, weld=weld)
+    assert g0["status"] == "SUCCESS"
+    assert g0["counts"]["inexact_transfers"] > 0           # the solver's error at the cuts, seen by the tracer
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld)
+    assert report["status"] == "SUCCESS" and report["flips_after"] == 0
+    g = ss.motorcycle_graph(V, F, UV2, FUV2, weld=weld)
+    c = g["counts"]
+    assert g["status"] == "SUCCESS" and c["failed"] == 0 and c["inexact_transfers"] == 0
+    assert c["cones_with_wrong_ray_count"] == 0 and c["separatrices"] == len(g["separatrices"])
+    assert sum(g["ends"].values()) == c["separatrices"]
+    for s in g["separatrices"]:
+        assert s["end"] in ("cone", "border", "earlier_trace") or (g["seeded"] and s["end"] == "closed_loop")
+        assert axis_parallel_exactly(s)
+        if s["end"] == "earlier_trace":
+            assert 0 <= s["hit_trace"] < c["separatrices"]
+    # vertices by position (a cut mesh's duplicated vertices are one vertex when welded)
+    key = {}
+    Fw = np.array([[key.setdefault(tuple(V[v]) if weld else v, len(key)) for v in row] for row in F])
+    position = {i: tuple(V[k]) if not weld else k for k, i in key.items()}
+    cones = {position[v]: n for v, n in quarter_turns_at_interior_vertices(Fw, UV2, FUV2).items()}
+    start_key = lambda s: tuple(V[s["start"]])
+    # the cone rule, checked from the UVs here: a cone of n quarter turns emits n rays
+    assert c["cones"] == len(cones)
+    rays = {}
+    for s in g["separatrices"]:
+        if s["source"] == "cone":
+            rays[start_key(s)] = rays.get(start_key(s), 0) + 1
+    assert rays == cones
+    assert g["seeded"] == (len(cones) == 0 and c["border_corners"] == 0)
+
+
+def test_tracing_refuses_a_map_that_is_not_quarter_turn_seamless():
+    V, F, UV, FUV = cut_grid()
+    upper = np.unique(FUV[len(F) // 2:])                    # the rotated half, turned by another 45 degrees
+    UV = UV.copy()
+    UV[upper] = UV[upper] @ (np.array([[1.0, -1.0], [1.0, 1.0]]) / np.sqrt(2)).T
+    g = ss.motorcycle_graph(V, F, UV, FUV)
+    assert g["status"] == "NOT_QUARTER_TURN_SEAMLESS" and "45 degrees" in g["message"] and "separatrices" not in g
+    t = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u")
+    assert t["status"] == "NOT_QUARTER_TURN_SEAMLESS" and "end" not in t
+    # a rotation tolerance above 45 degrees lets the tracer read it; the traces then fail at the cut
+    g = ss.motorcycle_graph(V, F, UV, FUV, rotation_tolerance=46.0)
+    assert g["status"] == "SUCCESS" and g["counts"]["failed"] > 0 and g["counts"]["inexact_transfers"] > 0

@@ -149,6 +149,8 @@ static void test_torus_closed_loops()
   Trace t = tracer.trace_from_vertex(corner, SS::Trace_direction::PLUS_U);
   assert(t.end == SS::Trace_end::CLOSED_LOOP && t.segments.size() == std::size_t(n));
   assert(target(t.segments.back().target.halfedge, m) == vs[0]);
+  assert(t.has_start_vertex && t.start_vertex == vs[0] && t.has_start_corner && target(t.start_corner, m) == vs[0]);
+  assert(face(t.start_corner, m) == t.segments.front().face);
   const CGAL::Gmpq u0(2, 3), v0(1, 7);                    // inside the triangle (0,0), (1,0), (1,1)
   t = tracer.trace_from_point(f_start, u0, v0, SS::Trace_direction::PLUS_V);
   assert(t.end == SS::Trace_end::CLOSED_LOOP && t.faces_crossed == std::size_t(2 * n));
@@ -177,6 +179,7 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
     assert(t.end == SS::Trace_end::CONE || t.end == SS::Trace_end::BORDER || t.end == SS::Trace_end::EARLIER_TRACE ||
            (g.seeded && t.end == SS::Trace_end::CLOSED_LOOP));
     assert(t.inexact_transfers == 0);
+    assert(t.has_start_vertex && t.has_start_corner && target(t.start_corner, m) == t.start_vertex);
   }
   assert(g.failed == 0 && g.cones_with_wrong_ray_count == 0);
   // arcs meet only at their ends: no piece of an isoline is traced twice (compared exactly)

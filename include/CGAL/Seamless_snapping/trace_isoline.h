@@ -80,6 +80,10 @@ struct Isoline_trace
   double length = 0;                              ///< parametric (UV) length, rounded to double
   int hit_trace = -1;                             ///< `EARLIER_TRACE`: index of the trace that was reached
   std::size_t inexact_transfers = 0;              ///< cut crossings where `R^k X + t` was not the exit point on the edge (0 on exact maps)
+  bool has_start_vertex = false;                  ///< `start_vertex` is set (the start was a vertex)
+  typename boost::graph_traits<TriangleMesh>::vertex_descriptor start_vertex;   ///< the vertex the trace started from
+  bool has_start_corner = false;                  ///< `start_corner` is set (the start sector was found)
+  typename boost::graph_traits<TriangleMesh>::halfedge_descriptor start_corner; ///< the corner (`target` = start vertex) in whose chart the trace started
 };
 
 /*!
@@ -187,6 +191,8 @@ public:
     t.length = r.length;
     t.hit_trace = r.hit_trace;
     t.inexact_transfers = r.inexact_transfers;
+    if(r.start_vertex >= 0) { t.has_start_vertex = true; t.start_vertex = desc_.vertices[std::size_t(r.start_vertex)]; }
+    if(r.start_corner >= 0) { t.has_start_corner = true; t.start_corner = desc_.halfedges[std::size_t(r.start_corner)]; }
     for(const internal::tracing::Raw_segment& s : r.segments) {
       Trace_segment<TriangleMesh> seg;
       seg.face = face(desc_.halfedges[map_.face_halfedge[s.face]], tm_);
