@@ -121,7 +121,7 @@ static inline bool shared_obj_files_or_skip(const char* what, std::vector<fs::pa
 // an n x n grid of unit squares in the plane z = 0, two triangles per square: split along the
 // diagonal (i, j)-(i+1, j+1) when `main_diagonal`, else along (i+1, j)-(i, j+1). Returns the
 // vertices, vertex (i, j) at index j (n + 1) + i.
-static inline std::vector<vertex_descriptor> make_grid(Mesh& m, int n, bool main_diagonal)
+static inline std::vector<vertex_descriptor> triangulated_grid(Mesh& m, int n, bool main_diagonal)
 {
   std::vector<vertex_descriptor> vs;
   for(int j = 0; j <= n; ++j)

@@ -190,9 +190,13 @@ static void test_data_meshes()
                 "  max change %.3g  total %.1f ms\n",
                 name.c_str(), cones.size(), path_edges, r.system_rows, r.system_columns, r.max_abs_coefficient.c_str(),
                 r.irref_ms, r.max_change, r.total_ms);
-    const SS::Snap_report ru = snap_and_check(input, cc, false, name);
-    std::printf("             %-48s unreduced: system %5zux%-5zu max|C^| %-3s %.1f ms\n", "", ru.system_rows,
-                ru.system_columns, ru.max_abs_coefficient.c_str(), ru.total_ms);
+    // the unreduced system (a cross-check of the reduction) is left out of the sanitizer subset: under ASan
+    // its multiprecision IRREF takes minutes on these files (horse: 77 s), and the reduced run covers the code
+    if(!sanitizer_subset()) {
+      const SS::Snap_report ru = snap_and_check(input, cc, false, name);
+      std::printf("             %-48s unreduced: system %5zux%-5zu max|C^| %-3s %.1f ms\n", "", ru.system_rows,
+                  ru.system_columns, ru.max_abs_coefficient.c_str(), ru.total_ms);
+    }
     // endpoints inside cut branches and away from seams (node rule 2 of Sec. 5.3 makes them nodes)
     std::vector<vertex_descriptor> inner;
     for(vertex_descriptor v : input.vertices()) {
@@ -214,9 +218,15 @@ static void test_data_meshes()
         cv.emplace_back(shortest_path(input, a, b), int(rng() % 2));
       }
       const SS::Snap_report rv = snap_and_check(input, cv, true, name);
-      const SS::Snap_report rvu = snap_and_check(input, cv, false, name);
-      std::printf("             %-48s 5 constraints from cut-branch vertices: nodes %zu (with the cone pairs: %zu), max change %.3g / %.3g\n",
-                  "", rv.nodes, r.nodes, rv.max_change, rvu.max_change);
+      const double unreduced_change = sanitizer_subset() ? -1. : snap_and_check(input, cv, false, name).max_change;
+      std::printf("             %-48s 5 constraints from cut-branch vertices: nodes %zu (with the cone pairs: %zu), max change %.3g / %.3g%s\n",
+                  "", rv.nodes, r.nodes, rv.max_change, unreduced_change, sanitizer_subset() ? " (unreduced not run)" : "");
+    }
+    // sanitizer subset: the first file with cones only: under ASan each snap with random cone connections takes
+    // 14-78 s on these files (measured: knight 14 s, lilium 42 s, horse 78 s); the Release run takes them all
+    if(sanitizer_subset()) {
+      std::cout << "connections: sanitizer subset: the other data files are left out\n";
+      break;
     }
   }
 }

@@ -456,7 +456,7 @@ static void test_alignment()
   // an n x n grid of the unit square, UV = position, perturbed by 1e-12 (relative)
   Mesh m;
   const int n = 12;
-  make_grid(m, n, true);
+  triangulated_grid(m, n, true);
   UV_map uv = uv_of(m);
   auto noise = [](vertex_descriptor v, int c) { return 1e-12 * std::sin(12.9898 * double(v.idx()) + 78.233 * c); };
   for(halfedge_descriptor h : m.halfedges()) {
@@ -530,7 +530,7 @@ static void test_cut_and_boundary()
 {
   Mesh m;
   const int n = 10;
-  make_grid(m, n, false);
+  triangulated_grid(m, n, false);
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h)) continue;
@@ -817,7 +817,7 @@ static void test_flip_repair_synthetic()
   Mesh m;
   const int n = 8;
   const double d = std::ldexp(1., -30), e = d / 4;
-  const std::vector<vertex_descriptor> vs = make_grid(m, n, false);
+  const std::vector<vertex_descriptor> vs = triangulated_grid(m, n, false);
   const vertex_descriptor w = vs[4 * (n + 1) + 4], v_below = vs[3 * (n + 1) + 4], v_above = vs[5 * (n + 1) + 4];
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges()) {

@@ -69,7 +69,7 @@ static void test_grid()
 {
   const int n = 5;
   Mesh m;
-  std::vector<vertex_descriptor> vs = make_grid(m, n, true);
+  std::vector<vertex_descriptor> vs = triangulated_grid(m, n, true);
   UV_map uv = uv_of(m);
   for(halfedge_descriptor h : m.halfedges())
     if(!m.is_border(h)) { const Point_3& p = m.point(target(h, m)); put(uv, h, Point_2(p.x(), p.y())); }
