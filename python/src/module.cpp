@@ -202,17 +202,27 @@ py::dict failed_dict(SS::Status s, const std::string& message)
   return d;
 }
 
-py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
-                          std::size_t max_faces, double rotation_tolerance)
+// the mesh of V, F, UV, FUV (GIL released while it is built); false with `failure` set when it cannot be built
+bool mesh_or_failure(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
+                     SS::internal::Matrix_mesh_with_uv& m, py::dict& failure)
 {
-  SS::internal::Matrix_mesh_with_uv m;
   std::string message;
   SS::Status s;
   {
     py::gil_scoped_release release;
     s = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, message);
   }
-  if(s != SS::SUCCESS) return failed_dict(s, message);
+  if(s == SS::SUCCESS) return true;
+  failure = failed_dict(s, message);
+  return false;
+}
+
+py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
+                          std::size_t max_faces, double rotation_tolerance)
+{
+  SS::internal::Matrix_mesh_with_uv m;
+  py::dict failure;
+  if(!mesh_or_failure(V, F, UV, FUV, weld, m, failure)) return failure;
   std::unique_ptr<Tracer> tracer;
   SS::Motorcycle_graph<Mesh> g;
   {
@@ -257,13 +267,8 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
   if(corner < 0 || corner > 2) throw std::invalid_argument("corner must be 0, 1 or 2");
   if(direction < 0 || direction > 3) throw std::invalid_argument("direction must be 0 (+u), 1 (+v), 2 (-u) or 3 (-v)");
   SS::internal::Matrix_mesh_with_uv m;
-  std::string message;
-  SS::Status s;
-  {
-    py::gil_scoped_release release;
-    s = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, message);
-  }
-  if(s != SS::SUCCESS) return failed_dict(s, message);
+  py::dict failure;
+  if(!mesh_or_failure(V, F, UV, FUV, weld, m, failure)) return failure;
   std::unique_ptr<Tracer> tracer;
   Trace t;
   {
