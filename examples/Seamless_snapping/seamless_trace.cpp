@@ -74,7 +74,7 @@ int main(int argc, char** argv)
   std::printf("%s: %zu faces, %s\n", in.c_str(), std::size_t(num_faces(mesh)),
               exact ? "exactly seamless" : "NOT exactly seamless");
   std::printf("cones %zu, border corners %zu%s\n", g.cones, g.border_corners,
-              g.seeded ? " (none: two seeded traces, +u and +v)" : "");
+              g.seeded ? " (none: four seeded traces, +u, +v, -u, -v)" : "");
   std::printf("separatrices %zu, failed %zu, traced in %.0f ms\n", g.separatrices.size(), g.failed, ms);
   for(int e = 0; e < SS::number_of_trace_ends; ++e)
     if(g.ends[e]) std::printf("  %-32s %zu\n", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);

@@ -128,7 +128,7 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
     """The motorcycle graph of the per-corner UV map (UV, FUV) of (V, F) (Sec. 6.2 of the paper): the
     separatrices from every cone of n quarter turns (its n axis rays) and from every border corner (the axis
     rays strictly inside its fan), traced exactly (rational arithmetic) and together, each stopping at a cone,
-    the border or an earlier trace. Without cones and border corners two traces (+u, +v) are seeded.
+    the border or an earlier trace. Without cones and border corners four traces (+u, +v, -u, -v) are seeded.
 
     Returns a dict: "status" ("SUCCESS", or why the map cannot be traced, e.g. "INVALID_INPUT" or
     "NOT_QUARTER_TURN_SEAMLESS"), "message", and on SUCCESS:
@@ -136,7 +136,7 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
                 cones_with_wrong_ray_count, inexact_transfers (cut crossings that missed the edge point);
       "ends": number of separatrices per end kind (the C++ Trace_end names: "cone", "border",
               "earlier_trace", ..., and the failures "missed_at_cut", "oscillation_at_cut", ...);
-      "seeded": True when the two traces were seeded (no cones, no border corners);
+      "seeded": True when the four traces were seeded (no cones, no border corners);
       "separatrices": one dict per trace (index = the "hit_trace" of the others), see `trace_isoline`, plus
               "source": "cone", "border_corner" or "seed".
     A map that is not exactly seamless still gets a graph: its inexactness shows as failure ends.

@@ -309,11 +309,12 @@ def test_motorcycle_graph_flat_torus():
     assert ss.is_exactly_seamless(V, F, UV, FUV)
     g = ss.motorcycle_graph(V, F, UV, FUV)
     assert g["status"] == "SUCCESS" and g["seeded"] and g["counts"]["cones"] == 0
-    assert g["counts"]["separatrices"] == 2 and g["counts"]["failed"] == 0
-    assert [s["source"] for s in g["separatrices"]] == ["seed", "seed"]
-    # the +u seed closes on itself exactly; the +v seed meets it
-    assert [s["end"] for s in g["separatrices"]] == ["closed_loop", "earlier_trace"]
-    assert g["separatrices"][1]["hit_trace"] == 0
+    assert g["counts"]["separatrices"] == 4 and g["counts"]["failed"] == 0
+    assert [s["source"] for s in g["separatrices"]] == ["seed"] * 4
+    # the seeds advance together and meet each other (or close)
+    ends = [s["end"] for s in g["separatrices"]]
+    assert all(e in ("closed_loop", "earlier_trace") for e in ends)
+    assert all(0 <= s["hit_trace"] < 4 for s in g["separatrices"] if s["end"] == "earlier_trace")
     for s in g["separatrices"]:
         assert s["inexact_transfers"] == 0
         assert axis_parallel_exactly(s)

@@ -22,6 +22,7 @@
 
 #include "mesh_test_support.h"
 
+#include <CGAL/Seamless_snapping/IO/Patch_layout.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
@@ -29,6 +30,9 @@
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/IO/OBJ.h>
 
 #include <array>
 #include <cassert>
@@ -63,6 +67,8 @@ static bool same_surface_point(const Mesh& m, const Point& a, const Point& b)
     return a.location == b.location && target(a.halfedge, m) == target(b.halfedge, m);
   return a.face == b.face && a.u == b.u && a.v == b.v;
 }
+
+static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g, const std::string& what);
 
 // ---------------------------------------------------------------------------------------------
 static void test_grid()
@@ -114,6 +120,8 @@ static void test_grid()
   // the motorcycle graph of a square: 4 convex corners, no rays, nothing seeded
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);
+  check_layout(m, uv, g, "grid");                         // one patch: the square itself
+  assert(g.layout.patches.size() == 1 && g.layout.patches[0].width == n && g.layout.nodes == 4 && g.layout.arcs == 4);
   std::cout << "trace: grid: OK\n";
 }
 
@@ -155,10 +163,121 @@ static void test_torus_closed_loops()
   t = tracer.trace_from_point(f_start, u0, v0, SS::Trace_direction::PLUS_V);
   assert(t.end == SS::Trace_end::CLOSED_LOOP && t.faces_crossed == std::size_t(2 * n));
   assert(t.segments.back().face == f_start && t.segments.back().target.u == u0 && t.segments.back().target.v == v0);
-  // the motorcycle graph: no cones, no border: two seeded traces
+  // the motorcycle graph: no cones, no border: four seeded traces; advancing together, +u and -u meet
+  // half-way round (as do +v and -v), each after n / 2 edges
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
-  assert(g.seeded && g.separatrices.size() == 2 && g.failed == 0);
+  assert(g.seeded && g.separatrices.size() == 4 && g.failed == 0);
+  for(const Trace& s : g.separatrices)
+    assert(s.end == SS::Trace_end::EARLIER_TRACE && s.segments.size() == std::size_t(n / 2));
+  check_layout(m, uv, g, "torus, seeded");
+  assert(g.layout.patches.size() == 1 && g.layout.nodes == 1 && g.layout.arcs == 2);   // one square, two loops
   std::cout << "trace: torus: closed loops OK\n";
+}
+
+// Checks the patch layout of a valid motorcycle graph against properties computed here from the
+// traced mesh itself: every patch a disk with 4 right-angle corners whose unfolded UV image is an
+// axis-aligned rectangle; the rectangles' areas sum to the UV area of the mesh (exact, from its corner
+// UVs); nodes - arcs + patches = V - E + F of the mesh; the refined mesh is a valid polygon mesh with the
+// documented property maps, covers every face, keeps the 3D area, and survives a PLY round trip.
+static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g, const std::string& what)
+{
+  const SS::Patch_layout& L = g.layout;
+  if(!L.is_valid())
+    std::cerr << what << ": layout " << SS::status_name(L.status) << " " << L.message << " patches " << L.patches.size()
+              << " quads " << L.quad_patches << " euler " << L.euler_characteristic << "/" << L.surface_euler_characteristic
+              << " unplaced " << L.unplaced_segments << std::endl;
+  assert(L.status == SS::SUCCESS && L.unplaced_segments == 0 && !L.patches.empty());
+  CGAL::Gmpq uv_area(0), rectangles(0), areas(0);
+  bool aligned_border = true;                 // every border edge on an isoline (exact)
+  for(face_descriptor f : m.faces()) {
+    const halfedge_descriptor h = m.halfedge(f);
+    const Point_2 a = get(uv, m.prev(h)), b = get(uv, h), c = get(uv, m.next(h));
+    const CGAL::Gmpq au(a.x()), av(a.y()), bu(b.x()), bv(b.y()), cu(c.x()), cv(c.y());
+    uv_area += ((bu - au) * (cv - av) - (bv - av) * (cu - au)) / 2;
+    for(halfedge_descriptor k : CGAL::halfedges_around_face(h, m))
+      if(m.is_border(m.opposite(k)) && get(uv, k).x() != get(uv, m.prev(k)).x() && get(uv, k).y() != get(uv, m.prev(k)).y())
+        aligned_border = false;
+  }
+  std::size_t border_patches = 0;
+  for(const SS::Layout_patch& p : L.patches) {
+    const bool must_be_quad = aligned_border || !p.on_border;
+    if(must_be_quad && !p.is_quad())
+      std::cerr << what << ": patch of " << p.polygons << " polygons: euler " << p.euler_characteristic << " loops "
+                << p.boundary_loops << " corners " << p.corners << " (" << p.right_angle_corners << " right) unfolds "
+                << p.unfolds << " rectangle " << p.is_rectangle << std::endl;
+    assert(p.is_disk() && p.unfolds);
+    areas += p.area;
+    if(!must_be_quad) { ++border_patches; continue; }
+    assert(p.corners == 4 && p.right_angle_corners == 4 && p.is_rectangle && p.is_quad());
+    assert(CGAL::is_positive(p.width) && CGAL::is_positive(p.height));
+    rectangles += p.width * p.height;
+  }
+  assert(areas == uv_area && L.uv_area == uv_area);
+  assert(border_patches > 0 || rectangles == uv_area);     // the rectangles tile the whole UV area, exactly
+  const int chi = int(m.number_of_vertices()) - int(m.number_of_edges()) + int(m.number_of_faces());
+  assert(L.euler_characteristic == chi && L.surface_euler_characteristic == chi);
+  assert(L.quad_patches + border_patches >= L.patches.size() && (border_patches > 0 || L.is_valid()));
+  // the refined mesh
+  const SS::Layout_mesh& r = L.mesh;
+  assert(CGAL::is_valid_polygon_mesh(r));
+  auto is_arc = r.property_map<SS::Layout_mesh::Edge_index, std::uint8_t>("e:is_arc");
+  auto patch_id = r.property_map<SS::Layout_mesh::Face_index, std::int32_t>("f:patch_id");
+  auto input_face = r.property_map<SS::Layout_mesh::Face_index, std::int32_t>("f:input_face");
+  assert(is_arc.second && patch_id.second && input_face.second);
+  std::vector<char> covered(m.number_of_faces(), 0);
+  for(auto f : r.faces()) {
+    assert(get(patch_id.first, f) >= 0 && std::size_t(get(patch_id.first, f)) < L.patches.size());
+    covered[std::size_t(get(input_face.first, f))] = 1;
+  }
+  assert(std::find(covered.begin(), covered.end(), 0) == covered.end());
+  std::size_t arc_edges = 0;
+  for(auto e : r.edges()) {
+    if(!get(is_arc.first, e)) continue;
+    ++arc_edges;
+    // an arc separates two patches, or a patch from itself only where it closes around (e.g. a torus)
+    const bool border = r.is_border(e);
+    assert(border || get(patch_id.first, r.face(r.halfedge(e))) >= 0);
+  }
+  std::size_t traced = 0;
+  for(const Trace& t : g.separatrices) traced += t.segments.empty() ? 0 : 1;
+  assert(traced == 0 || arc_edges >= traced);
+  double refined3 = 0;                                           // convex planar polygons: fans
+  for(auto f : r.faces()) {
+    std::vector<Point_3> p;
+    for(auto v : CGAL::vertices_around_face(r.halfedge(f), r)) p.push_back(r.point(v));
+    for(std::size_t i = 1; i + 1 < p.size(); ++i)
+      refined3 += std::sqrt(CGAL::cross_product(p[i] - p[0], p[i + 1] - p[0]).squared_length()) / 2;
+  }
+  const double area3 = CGAL::Polygon_mesh_processing::area(m);
+  assert(std::abs(area3 - refined3) <= 1e-9 * area3);             // positions are doubles: a closeness bound
+  // PLY and OBJ files, read back with CGAL's readers: the faces, patch ids and arc flags come back
+  const std::string base = (fs::temp_directory_path() / "ss_test_trace_layout").string();
+  std::string msg;
+  assert(SS::IO::write_patch_layout_PLY(base + ".ply", L, msg) == SS::SUCCESS);
+  SS::Layout_mesh back;
+  std::ifstream ply(base + ".ply");                   // the stream reader keeps the properties
+  assert(CGAL::IO::read_PLY(ply, back) && back.number_of_faces() == r.number_of_faces());
+  auto back_patch = back.property_map<SS::Layout_mesh::Face_index, std::int32_t>("f:patch_id");
+  auto back_arc = back.property_map<SS::Layout_mesh::Edge_index, std::uint8_t>("e:is_arc");
+  assert(back_patch.second && back_arc.second);
+  for(auto f : r.faces()) assert(get(back_patch.first, f) == get(patch_id.first, f));
+  std::size_t back_arcs = 0;
+  for(auto e : back.edges()) back_arcs += get(back_arc.first, e) ? 1 : 0;
+  assert(back_arcs == arc_edges);
+  assert(SS::IO::write_patch_layout_OBJ(base + ".obj", L, msg, false) == SS::SUCCESS);   // CGAL reads no 'l' lines
+  std::vector<Point_3> obj_points;
+  std::vector<std::vector<std::size_t> > obj_faces;
+  assert(CGAL::IO::read_OBJ(base + ".obj", obj_points, obj_faces) && obj_faces.size() == r.number_of_faces());
+  assert(SS::IO::write_patch_layout_OBJ(base + ".obj", L, msg) == SS::SUCCESS);
+  std::ifstream obj(base + ".obj");
+  std::size_t lines = 0, groups = 0;
+  for(std::string line; std::getline(obj, line); ) { lines += line.rfind("l ", 0) == 0; groups += line.rfind("g ", 0) == 0; }
+  assert(lines == arc_edges && groups == L.patches.size());
+  fs::remove(base + ".ply");
+  fs::remove(base + ".obj");
+  std::printf("trace: %-40s layout: %zu patches, %zu quads (%s); nodes %zu arcs %zu euler %d; %zu polygons, %zu arc edges\n",
+              what.c_str(), L.patches.size(), L.quad_patches, aligned_border ? "all" : "unaligned border", L.nodes, L.arcs,
+              L.euler_characteristic, r.number_of_faces(), arc_edges);
 }
 
 // Checks the properties of the motorcycle graph of an exactly seamless map without fold-overs and
@@ -222,6 +341,7 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
               " graph %.0f ms, back %.0f ms\n", what.c_str(), g.cones, g.border_corners, g.separatrices.size(),
               g.ends[int(SS::Trace_end::CONE)], g.ends[int(SS::Trace_end::BORDER)],
               g.ends[int(SS::Trace_end::EARLIER_TRACE)], traced_back, graph_ms, ms_since(t0));
+  check_layout(m, uv, g, what);
   return g;
 }
 
@@ -237,6 +357,10 @@ static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& wha
   std::printf("trace: %-40s (input) separatrices %zu failed %zu:", what.c_str(), g.separatrices.size(), g.failed);
   for(int e = 0; e < SS::number_of_trace_ends; ++e)
     if(g.ends[e]) std::printf(" %s %zu", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);
+  if(g.layout.status == SS::SUCCESS)
+    std::printf("; layout %zu patches, %zu quads, %zu unplaced", g.layout.patches.size(), g.layout.quad_patches,
+                g.layout.unplaced_segments);
+  else std::printf("; no layout (%s)", g.layout.message.c_str());
   std::printf("  %.0f ms\n", ms_since(t0));
   for(const Trace& t : g.separatrices) {
     assert(!t.message.empty() || !SS::is_failure(t.end));

@@ -10,8 +10,10 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_MOTORCYCLE_GRAPH_H
 #define CGAL_SEAMLESS_SNAPPING_MOTORCYCLE_GRAPH_H
 
+#include <CGAL/Seamless_snapping/Patch_layout.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 #include <CGAL/Seamless_snapping/internal/tracing/motorcycle_graph.h>
+#include <CGAL/Seamless_snapping/internal/tracing/patch_layout.h>
 
 #include <array>
 #include <string>
@@ -36,7 +38,8 @@ struct Motorcycle_graph
   std::size_t cones = 0;                                  ///< cones (interior vertices whose angle sum is not 4 quarter turns)
   std::size_t border_corners = 0;                         ///< border vertices whose fan is not a half turn
   std::size_t cones_with_wrong_ray_count = 0;             ///< cones of n quarter turns that do not emit n rays (inexact maps)
-  bool seeded = false;                                    ///< no cones and no border corners: two seeded traces (+u, +v) instead
+  bool seeded = false;                                    ///< no cones and no border corners: four seeded traces (+u, +v, -u, -v) instead
+  Patch_layout layout;                                    ///< the patches and the refined mesh (if requested; see `build_motorcycle_graph()`)
 };
 
 /*!
@@ -47,15 +50,21 @@ struct Motorcycle_graph
  * its fan. The traces advance together, one face at a time, the one with the smallest parametric length first (ties:
  * smaller index); each stops at a cone, the border, or the trail of any trace laid so far (a T-junction). A ray that
  * starts along an existing trail stops at once (`EARLIER_TRACE` without segments: the arc exists already).
- * Without cones and border corners (a torus), two traces (+u and +v) are seeded at the first corner of the mesh,
- * and `seeded` is set.
+ * Without cones and border corners (a torus), four traces (+u, +v, -u, -v) are seeded at the first corner of the
+ * mesh, and `seeded` is set; where an isoline closes, its reverse trace starts along it and stops at once.
+ *
+ *
+ * With `with_layout`, the faces are then cut along all separatrices, exactly, into the patch layout
+ * (`Patch_layout`: the refined mesh with `is_arc` and `patch_id`, and the checked properties of every patch);
+ * its status is `INVALID_INPUT` with a message if a UV triangle of the map is flipped or degenerate.
  *
  * \param tracer the tracer of the map (`Isoline_tracer`); its status is the graph's when it is not `SUCCESS`
  * \param max_faces step limit per trace (0: 20 times the number of faces, plus 100)
+ * \param with_layout build `layout` as well
  */
 template <class TriangleMesh, class HalfedgeUVMap>
 Motorcycle_graph<TriangleMesh> build_motorcycle_graph(const Isoline_tracer<TriangleMesh, HalfedgeUVMap>& tracer,
-                                                      std::size_t max_faces = 0)
+                                                      std::size_t max_faces = 0, bool with_layout = true)
 {
   Motorcycle_graph<TriangleMesh> g;
   g.status = tracer.status();
@@ -76,6 +85,8 @@ Motorcycle_graph<TriangleMesh> build_motorcycle_graph(const Isoline_tracer<Trian
     ++g.ends[int(r.end)];
     if(is_failure(r.end)) ++g.failed;
   }
+  if(with_layout) internal::tracing::build_patch_layout(map, runs, tracer.vertex_positions(), g.layout);
+  else g.layout.message = "not requested";
   return g;
 }
 

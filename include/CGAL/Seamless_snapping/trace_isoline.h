@@ -181,6 +181,17 @@ public:
   /// the internal map (corner mesh, cut edges, cones, rotations); for the layout code of this package.
   const internal::tracing::Tracing_map& tracing_map() const { return map_; }
 
+  /// the 3D positions of the vertices in the numbering of `tracing_map()`; for the layout code of this package.
+  std::vector<std::array<double, 3> > vertex_positions() const
+  {
+    std::vector<std::array<double, 3> > p;
+    for(vertex_descriptor v : desc_.vertices) {
+      const auto q = get(CGAL::vertex_point, tm_, v);
+      p.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}});
+    }
+    return p;
+  }
+
   /// converts an internal trace run into the public result.
   Trace convert(const internal::tracing::Trace_run& r) const
   {

@@ -76,6 +76,7 @@ struct Raw_segment
   int face = -1;
   int m = 0;           // direction in the face's chart
   Raw_point from, to;
+  std::size_t order = 0; // when it was laid, among the segments of all traces of one Trail_registry
 };
 
 // Trails of earlier traces, per face (segments in that face's chart) and per vertex.
@@ -84,7 +85,8 @@ struct Trail_registry
   struct Stored { int trace; Exact_uv a, b; };
   std::vector<std::vector<Stored> > per_face;
   std::vector<int> vertex_trace;      // -1 or the first trace through (or from) the vertex
-  void init(const Corner_mesh& cm) { per_face.assign(cm.n_faces, {}); vertex_trace.assign(cm.n_vertices, -1); }
+  std::size_t laid = 0;               // segments laid so far (Raw_segment::order)
+  void init(const Corner_mesh& cm) { per_face.assign(cm.n_faces, {}); vertex_trace.assign(cm.n_vertices, -1); laid = 0; }
 };
 
 struct Trace_target
@@ -301,6 +303,7 @@ private:
     Raw_segment s;
     s.face = f; s.m = r.m; s.from = r.loc; s.from.uv = r.p; s.to = to;
     if(trails) {
+      s.order = trails->laid++;
       trails->per_face[f].push_back(Trail_registry::Stored{r.id, r.p, to.uv});
       // a segment along an edge is a trail of the face on the other side too (in its chart)
       const int c[3] = {r.face_h, cm().next[r.face_h], cm().next[cm().next[r.face_h]]};

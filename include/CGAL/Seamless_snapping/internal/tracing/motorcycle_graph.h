@@ -16,8 +16,9 @@
 // one with the smallest parametric length first (ties: smaller index), and each stops at a cone, the
 // border, or the trail laid so far by any trace (T-junction). A ray that starts along an existing trail
 // (the other end of an arc already traced) stops at once, with no segment.
-// A map without cones and border corners (a torus) gets two seeded traces, +u and +v, from the first
-// corner of the first vertex.
+// A map without cones and border corners (a torus) gets four seeded traces, +u, +v, -u and -v, from the
+// first corner of the first vertex: with all four the seed is a node with right angles only (with two,
+// the angle between +v and +u the other way round would be a 270 degree patch corner).
 
 #include <CGAL/Seamless_snapping/internal/tracing/isoline_tracer.h>
 
@@ -73,7 +74,7 @@ inline Separatrix_seeds separatrix_seeds(const Tracing_map& map)
     S.seeded = true;
     for(int h = 0; h < cm.n_halfedges; ++h)
       if(!cm.is_border_halfedge(h)) {
-        for(int m : {0, 1}) { S.corner.push_back(h); S.m.push_back(m); S.source_kind.push_back(2); }
+        for(int m : {0, 1, 2, 3}) { S.corner.push_back(h); S.m.push_back(m); S.source_kind.push_back(2); }
         break;
       }
   }

@@ -1,0 +1,260 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_SUBDIVISION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_SUBDIVISION_H
+
+// The faces of the map cut by the segments of traces (the arcs of a motorcycle graph): the UV triangle
+// of every face, in its own chart, becomes a set of convex polygons. The segments are inserted in the
+// order they were laid (Raw_segment::order). A trace stops at every trail laid before it (T-junction),
+// so each segment lies in one polygon and ends on its boundary: it splits that polygon in two, or, when
+// it runs along the polygon's boundary, marks those sides. All points are exact (CGAL::Gmpq) and are
+// identified across faces: a vertex by its index, a point of an edge by its parameter along the edge
+// (the same from both sides of an exact cut), a point inside a face by its UV in that face's chart.
+// A segment that fits no polygon (possible on inexact maps only) is counted, not inserted.
+
+#include <CGAL/Seamless_snapping/internal/tracing/isoline_tracer.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace tracing {
+
+// A point of the subdivision. AT_VERTEX: `vertex`; ON_EDGE: the point at parameter t from the source
+// to the target of `halfedge` (the edge's `edge_halfedge`); IN_FACE: `uv` in the chart of `face`.
+struct Layout_vertex
+{
+  Location_kind kind = AT_VERTEX;
+  int vertex = -1, halfedge = -1, face = -1;
+  FT t;
+  Exact_uv uv;
+};
+
+struct Layout_polygon
+{
+  int face = -1;              // the face of the map it lies in
+  std::vector<int> vertex;    // Layout_vertex indices, counter-clockwise in the chart of `face`
+  std::vector<Exact_uv> uv;   // their UVs in that chart
+  std::vector<char> arc;      // arc[i] != 0: the side from corner i to corner i + 1 lies on a trace
+};
+
+struct Face_subdivision
+{
+  std::vector<Layout_vertex> vertices;   // the mesh's vertices first, with their indices
+  std::vector<Layout_polygon> polygons;
+  std::size_t unplaced = 0;              // segments that fit no polygon (inexact maps)
+  std::string first_unplaced;
+};
+
+class Face_subdivider
+{
+public:
+  Face_subdivider(const Tracing_map& map, Face_subdivision& out) : map_(map), cm_(map.cm), out_(out) {}
+
+  // subdivides every face by `segments` (in any order; inserted by Raw_segment::order). Every face
+  // must be positively oriented in UV.
+  void run(std::vector<const Raw_segment*> segments)
+  {
+    out_ = Face_subdivision();
+    out_.vertices.resize(std::size_t(cm_.n_vertices));
+    for(int v = 0; v < cm_.n_vertices; ++v) out_.vertices[std::size_t(v)].vertex = v;
+    edge_params_.assign(std::size_t(cm_.n_edges), {});
+    for(const Raw_segment* s : segments)
+      for(const Exact_uv* p : {&s->from.uv, &s->to.uv}) {
+        const Place q = place(s->face, *p);
+        if(q.kind == ON_EDGE) edge_params_[std::size_t(cm_.edge[q.h])].push_back(q.t);
+      }
+    for(std::vector<FT>& t : edge_params_) {
+      std::sort(t.begin(), t.end());
+      t.erase(std::unique(t.begin(), t.end()), t.end());
+    }
+    face_polygons_.assign(std::size_t(cm_.n_faces), {});
+    for(int f = 0; f < cm_.n_faces; ++f) initial_polygon(f);
+    std::sort(segments.begin(), segments.end(),
+              [](const Raw_segment* a, const Raw_segment* b) { return a->order < b->order; });
+    for(const Raw_segment* s : segments) insert_segment(*s);
+  }
+
+private:
+  struct Place { Location_kind kind; int h; FT t; };   // h: the corner (AT_VERTEX) or the side's halfedge (ON_EDGE)
+
+  const Tracing_map& map_;
+  const Corner_mesh& cm_;
+  Face_subdivision& out_;
+  std::vector<std::vector<FT> > edge_params_;             // per edge: parameters along its edge_halfedge
+  std::vector<std::vector<int> > face_polygons_;          // per face: indices into out_.polygons
+  std::map<std::pair<int, FT>, int> edge_point_;          // (edge, t) -> Layout_vertex
+  std::map<std::tuple<int, FT, FT>, int> face_point_;     // (face, u, v) -> Layout_vertex
+
+  int corner(int f, int i) const
+  {
+    int h = map_.face_halfedge[std::size_t(f)];
+    for(; i > 0; --i) h = cm_.next[h];
+    return h;
+  }
+
+  // parameter along the edge_halfedge of the edge of h, of the point p of h's side (chart of face(h))
+  FT edge_parameter(int h, const Exact_uv& p) const
+  {
+    const Exact_uv A = corner_uv(cm_, cm_.prev[h]), B = corner_uv(cm_, h);
+    const FT t = A.u != B.u ? (p.u - A.u) / (B.u - A.u) : (p.v - A.v) / (B.v - A.v);
+    return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : FT(1) - t;
+  }
+
+  // where the point p of the closed UV triangle of face f lies
+  Place place(int f, const Exact_uv& p) const
+  {
+    for(int i = 0; i < 3; ++i)
+      if(corner_uv(cm_, corner(f, i)) == p) return Place{AT_VERTEX, corner(f, i), FT(0)};
+    for(int i = 0; i < 3; ++i) {
+      const int h = corner(f, i);
+      if(CGAL::is_zero(orientation_determinant(corner_uv(cm_, cm_.prev[h]), corner_uv(cm_, h), p)))
+        return Place{ON_EDGE, h, edge_parameter(h, p)};
+    }
+    return Place{IN_FACE, -1, FT(0)};
+  }
+
+  int vertex_id(int f, const Exact_uv& p)
+  {
+    const Place q = place(f, p);
+    if(q.kind == AT_VERTEX) return cm_.target[q.h];
+    Layout_vertex lv;
+    lv.kind = q.kind;
+    int& id = q.kind == ON_EDGE ? edge_point_[std::make_pair(cm_.edge[q.h], q.t)]
+                                : face_point_[std::make_tuple(f, p.u, p.v)];
+    if(id > 0) return id - 1;                      // stored as index + 1
+    if(q.kind == ON_EDGE) { lv.halfedge = cm_.edge_halfedge[std::size_t(cm_.edge[q.h])]; lv.t = q.t; }
+    else { lv.face = f; lv.uv = p; }
+    out_.vertices.push_back(lv);
+    id = int(out_.vertices.size());
+    return id - 1;
+  }
+
+  // the triangle of f with the points of its edges, counter-clockwise
+  void initial_polygon(int f)
+  {
+    Layout_polygon P;
+    P.face = f;
+    for(int i = 0; i < 3; ++i) {
+      const int c = corner(f, i), h = cm_.next[c];          // the side from corner c to corner next(c) is halfedge h
+      P.vertex.push_back(cm_.target[c]);
+      P.uv.push_back(corner_uv(cm_, c));
+      const std::vector<FT>& ts = edge_params_[std::size_t(cm_.edge[h])];
+      const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
+      const Exact_uv A = corner_uv(cm_, c), B = corner_uv(cm_, h);
+      for(std::size_t k = 0; k < ts.size(); ++k) {
+        const FT t = along ? ts[k] : FT(1) - ts[ts.size() - 1 - k];
+        const Exact_uv p = lerp(A, B, t);
+        P.vertex.push_back(vertex_id(f, p));
+        P.uv.push_back(p);
+      }
+    }
+    P.arc.assign(P.vertex.size(), 0);
+    face_polygons_[std::size_t(f)].push_back(int(out_.polygons.size()));
+    out_.polygons.push_back(std::move(P));
+  }
+
+  static int side_sign(const Layout_polygon& P, std::size_t i, const Exact_uv& x)
+  {
+    return CGAL::sign(orientation_determinant(P.uv[i], P.uv[(i + 1) % P.uv.size()], x));
+  }
+
+  static bool contains(const Layout_polygon& P, const Exact_uv& x, bool strictly)
+  {
+    for(std::size_t i = 0; i < P.uv.size(); ++i) {
+      const int s = side_sign(P, i, x);
+      if(s < 0 || (strictly && s == 0)) return false;
+    }
+    return true;
+  }
+
+  // makes p a corner of every polygon of face f that has p inside one of its sides
+  void add_corner(int f, const Exact_uv& p, int id)
+  {
+    for(int k : face_polygons_[std::size_t(f)]) {
+      Layout_polygon& P = out_.polygons[std::size_t(k)];
+      if(std::find(P.uv.begin(), P.uv.end(), p) != P.uv.end()) continue;
+      for(std::size_t i = 0; i < P.uv.size(); ++i) {
+        const Exact_uv& a = P.uv[i];
+        const Exact_uv& b = P.uv[(i + 1) % P.uv.size()];
+        if(side_sign(P, i, p) != 0) continue;
+        if(!CGAL::is_positive((p.u - a.u) * (b.u - a.u) + (p.v - a.v) * (b.v - a.v)) ||
+           !CGAL::is_positive((p.u - b.u) * (a.u - b.u) + (p.v - b.v) * (a.v - b.v)))
+          continue;
+        P.uv.insert(P.uv.begin() + std::ptrdiff_t(i + 1), p);
+        P.vertex.insert(P.vertex.begin() + std::ptrdiff_t(i + 1), id);
+        P.arc.insert(P.arc.begin() + std::ptrdiff_t(i + 1), P.arc[i]);
+        break;
+      }
+    }
+  }
+
+  void insert_segment(const Raw_segment& s)
+  {
+    const Exact_uv& p = s.from.uv;
+    const Exact_uv& q = s.to.uv;
+    if(p == q) return;
+    const int f = s.face;
+    const Exact_uv mid{(p.u + q.u) / 2, (p.v + q.v) / 2};
+    int pick = -1;
+    bool inside = false;
+    for(int k : face_polygons_[std::size_t(f)]) {
+      const Layout_polygon& P = out_.polygons[std::size_t(k)];
+      if(!contains(P, p, false) || !contains(P, q, false)) continue;
+      if(contains(P, mid, true)) { pick = k; inside = true; break; }
+      if(pick < 0) pick = k;                                 // along its boundary
+    }
+    if(pick < 0) {
+      if(out_.unplaced++ == 0)
+        out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + " fits no piece of the face";
+      return;
+    }
+    const int ip = vertex_id(f, p), iq = vertex_id(f, q);
+    add_corner(f, p, ip);
+    add_corner(f, q, iq);
+    Layout_polygon& P = out_.polygons[std::size_t(pick)];
+    const std::size_t n = P.uv.size();
+    const std::size_t i = std::size_t(std::find(P.vertex.begin(), P.vertex.end(), ip) - P.vertex.begin());
+    const std::size_t j = std::size_t(std::find(P.vertex.begin(), P.vertex.end(), iq) - P.vertex.begin());
+    if(!inside) {              // along the boundary: mark the straight way from i to j (forward or backward)
+      bool straight = true;
+      for(std::size_t k = (i + 1) % n; k != j && straight; k = (k + 1) % n)
+        straight = CGAL::is_zero(orientation_determinant(p, q, P.uv[k]));
+      for(std::size_t k = straight ? i : j; k != (straight ? j : i); k = (k + 1) % n) P.arc[k] = 1;
+      return;
+    }
+    Layout_polygon A, B;
+    A.face = B.face = f;
+    for(std::size_t k = i; ; k = (k + 1) % n) {
+      A.vertex.push_back(P.vertex[k]); A.uv.push_back(P.uv[k]); A.arc.push_back(k == j ? 1 : P.arc[k]);
+      if(k == j) break;
+    }
+    for(std::size_t k = j; ; k = (k + 1) % n) {
+      B.vertex.push_back(P.vertex[k]); B.uv.push_back(P.uv[k]); B.arc.push_back(k == i ? 1 : P.arc[k]);
+      if(k == i) break;
+    }
+    P = std::move(A);
+    face_polygons_[std::size_t(f)].push_back(int(out_.polygons.size()));
+    out_.polygons.push_back(std::move(B));
+  }
+};
+
+} // namespace tracing
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_FACE_SUBDIVISION_H

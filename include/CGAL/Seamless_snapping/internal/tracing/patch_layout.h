@@ -1,0 +1,365 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_PATCH_LAYOUT_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_PATCH_LAYOUT_H
+
+// The patch layout of traced separatrices, in three stages:
+//   1. refined_mesh():   the face subdivision as a Surface_mesh (one polygon per piece) with is_arc,
+//                        input_face and the corner UVs;
+//   2. patches:          connected components of the faces, arcs as constrained edges (PMP);
+//   3. measure_patches(): per patch the open Euler characteristic, the boundary walk (loops, corners
+//                        from UV angle sums), the exact unfolding into one chart and the rectangle test;
+//                        then the arc/border graph (nodes, arcs, Euler characteristic).
+
+#include <CGAL/Seamless_snapping/Patch_layout.h>
+#include <CGAL/Seamless_snapping/internal/tracing/face_subdivision.h>
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace tracing {
+
+typedef Layout_mesh::Vertex_index Layout_vertex_index;
+typedef Layout_mesh::Halfedge_index Layout_halfedge_index;
+typedef Layout_mesh::Face_index Layout_face_index;
+typedef Layout_mesh::Edge_index Layout_edge_index;
+
+// X -> R^k X + t composed with other transitions (Edge_transition maps a chart into another)
+inline Edge_transition inverse(const Edge_transition& T)
+{
+  const Exact_uv r = rotate(-T.k, T.t);
+  return Edge_transition{direction_mod4(-T.k), Exact_uv{-r.u, -r.v}};
+}
+inline Edge_transition compose(const Edge_transition& A, const Edge_transition& B)   // A after B
+{
+  const Exact_uv r = rotate(A.k, B.t);
+  return Edge_transition{direction_mod4(A.k + B.k), Exact_uv{r.u + A.t.u, r.v + A.t.v}};
+}
+
+inline FT polygon_area(const std::vector<Exact_uv>& p)
+{
+  FT twice(0);
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    const Exact_uv& a = p[i];
+    const Exact_uv& b = p[(i + 1) % p.size()];
+    twice += a.u * b.v - a.v * b.u;
+  }
+  return twice / 2;
+}
+
+// index of the corner of polygon P whose vertex is id
+inline std::size_t corner_of(const Layout_polygon& P, int id)
+{
+  return std::size_t(std::find(P.vertex.begin(), P.vertex.end(), id) - P.vertex.begin());
+}
+
+// Stage 1. Returns false (and a message) if a polygon cannot be added (not a manifold refinement).
+inline bool refined_mesh(const Tracing_map& map, const Face_subdivision& S,
+                         const std::vector<std::array<double, 3> >& position, Layout_mesh& mesh, std::string& message)
+{
+  typedef Layout_mesh::Point Point_3;
+  const Corner_mesh& cm = map.cm;
+  mesh.clear();
+  for(const Layout_vertex& lv : S.vertices) {
+    std::array<double, 3> p = {{0, 0, 0}};
+    if(lv.kind == AT_VERTEX) p = position[std::size_t(lv.vertex)];
+    else if(lv.kind == ON_EDGE) {
+      const double t = CGAL::to_double(lv.t);
+      const std::array<double, 3>& a = position[std::size_t(cm.source(lv.halfedge))];
+      const std::array<double, 3>& b = position[std::size_t(cm.target[lv.halfedge])];
+      for(int i = 0; i < 3; ++i) p[i] = (1 - t) * a[i] + t * b[i];
+    } else {
+      Exact_uv c[3];
+      const int h = map.face_halfedge[std::size_t(lv.face)];
+      const int hc[3] = {h, cm.next[h], cm.prev[h]};
+      for(int i = 0; i < 3; ++i) c[i] = corner_uv(cm, hc[i]);
+      FT b[3];
+      barycentric(c, lv.uv, b);
+      for(int i = 0; i < 3; ++i)
+        for(int j = 0; j < 3; ++j) p[j] += CGAL::to_double(b[i]) * position[std::size_t(cm.target[hc[i]])][j];
+    }
+    mesh.add_vertex(Point_3(p[0], p[1], p[2]));
+  }
+  auto is_arc = mesh.add_property_map<Layout_edge_index, std::uint8_t>("e:is_arc", 0).first;
+  auto input_face = mesh.add_property_map<Layout_face_index, std::int32_t>("f:input_face", -1).first;
+  auto uv = mesh.add_property_map<Layout_halfedge_index, CGAL::Epick::Point_2>("h:uv").first;
+  std::vector<Layout_vertex_index> vs;
+  for(std::size_t k = 0; k < S.polygons.size(); ++k) {
+    const Layout_polygon& P = S.polygons[k];
+    vs.clear();
+    for(int id : P.vertex) vs.push_back(Layout_vertex_index(std::uint32_t(id)));
+    const Layout_face_index f = mesh.add_face(vs);
+    if(f == Layout_mesh::null_face()) {
+      message = "the piece " + std::to_string(k) + " of face " + std::to_string(P.face) +
+                " cannot be added to the refined mesh (not a manifold refinement)";
+      return false;
+    }
+    put(input_face, f, std::int32_t(P.face));
+    for(Layout_halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const std::size_t i = corner_of(P, int(mesh.target(h)));
+      put(uv, h, CGAL::Epick::Point_2(CGAL::to_double(P.uv[i].u), CGAL::to_double(P.uv[i].v)));
+      if(P.arc[(i + P.vertex.size() - 1) % P.vertex.size()]) put(is_arc, mesh.edge(h), std::uint8_t(1));
+    }
+  }
+  return true;
+}
+
+// Stage 3: the properties of every patch (patch_id set) and of the arc/border graph.
+class Patch_measurer
+{
+public:
+  Patch_measurer(const Tracing_map& map, const Face_subdivision& S, Patch_layout& L)
+    : map_(map), S_(S), L_(L), mesh_(L.mesh)
+  {
+    is_arc_ = mesh_.property_map<Layout_edge_index, std::uint8_t>("e:is_arc").first;
+    patch_ = mesh_.property_map<Layout_face_index, std::int32_t>("f:patch_id").first;
+  }
+
+  void run()
+  {
+    for(Layout_face_index f : mesh_.faces()) {
+      Layout_patch& p = patch(f);
+      ++p.polygons;
+      p.area += polygon_area(polygon(f).uv);
+    }
+    open_euler_characteristics();
+    unfold();
+    walk_boundaries();
+    for(Layout_patch& p : L_.patches) {
+      p.is_rectangle = p.is_rectangle && p.unfolds && p.width * p.height == p.area;
+      if(p.is_quad()) ++L_.quad_patches;
+    }
+    graph();
+  }
+
+private:
+  const Tracing_map& map_;
+  const Face_subdivision& S_;
+  Patch_layout& L_;
+  const Layout_mesh& mesh_;
+  Layout_mesh::Property_map<Layout_edge_index, std::uint8_t> is_arc_;
+  Layout_mesh::Property_map<Layout_face_index, std::int32_t> patch_;
+  std::vector<Edge_transition> to_patch_;                    // per face: its input chart -> the patch chart
+  std::vector<std::array<FT, 4> > box_;                      // per patch: umin, umax, vmin, vmax
+
+  const Layout_polygon& polygon(Layout_face_index f) const { return S_.polygons[std::size_t(f)]; }
+  Layout_patch& patch(Layout_face_index f) const { return L_.patches[std::size_t(get(patch_, f))]; }
+  bool cuts(Layout_halfedge_index h) const { return get(is_arc_, mesh_.edge(h)) != 0 || mesh_.is_border(mesh_.edge(h)); }
+  bool patch_boundary(Layout_halfedge_index h) const { return !mesh_.is_border(h) && cuts(h); }
+  // exact UV of the corner (target(h), face(h)) in the chart of its input face
+  const Exact_uv& corner(Layout_halfedge_index h) const
+  {
+    const Layout_polygon& P = polygon(mesh_.face(h));
+    return P.uv[corner_of(P, int(mesh_.target(h)))];
+  }
+  Exact_uv in_patch(Layout_halfedge_index h) const { return to_patch_[std::size_t(mesh_.face(h))].apply(corner(h)); }
+
+  void open_euler_characteristics()
+  {
+    for(Layout_patch& p : L_.patches) p.euler_characteristic = int(p.polygons);
+    for(Layout_edge_index e : mesh_.edges())
+      if(!get(is_arc_, e) && !mesh_.is_border(e)) --patch(mesh_.face(mesh_.halfedge(e))).euler_characteristic;
+    for(Layout_vertex_index v : mesh_.vertices()) {
+      if(mesh_.is_isolated(v) || mesh_.is_border(v)) continue;
+      bool inner = true;
+      for(Layout_halfedge_index h : CGAL::halfedges_around_target(v, mesh_)) inner = inner && !cuts(h);
+      if(inner) ++patch(mesh_.face(mesh_.halfedge(v))).euler_characteristic;
+    }
+  }
+
+  // the transition from the chart of input face(g) into the chart of input face(opposite(g)), g a
+  // halfedge of the refined mesh on an edge of the input mesh
+  Edge_transition across(Layout_halfedge_index g) const
+  {
+    const Corner_mesh& cm = map_.cm;
+    const int fa = polygon(mesh_.face(g)).face, fb = polygon(mesh_.face(mesh_.opposite(g))).face;
+    if(fa == fb) return Edge_transition();
+    const Layout_vertex& s = S_.vertices[std::size_t(mesh_.source(g))];
+    const Layout_vertex& t = S_.vertices[std::size_t(mesh_.target(g))];
+    int hin = -1;
+    for(const Layout_vertex* x : {&s, &t})
+      if(x->kind == ON_EDGE) hin = cm.face[x->halfedge] == fa ? x->halfedge : cm.opp[x->halfedge];
+    if(hin < 0) {                                  // both at vertices: the side of fa from s to t
+      int h = map_.face_halfedge[std::size_t(fa)];
+      for(int i = 0; i < 3 && hin < 0; ++i, h = cm.next[h])
+        if(cm.source(h) == s.vertex && cm.target[h] == t.vertex) hin = h;
+    }
+    return hin < 0 ? Edge_transition() : edge_transition(cm, map_.rot, hin, false);
+  }
+
+  // breadth-first unfolding of every patch into the chart of its first face; checks every inner edge
+  void unfold()
+  {
+    to_patch_.assign(mesh_.number_of_faces(), Edge_transition());
+    std::vector<char> seen(mesh_.number_of_faces(), 0);
+    for(Layout_patch& p : L_.patches) p.unfolds = true;
+    for(Layout_face_index f0 : mesh_.faces()) {
+      if(seen[std::size_t(f0)]) continue;
+      seen[std::size_t(f0)] = 1;
+      std::queue<Layout_face_index> queue;
+      queue.push(f0);
+      while(!queue.empty()) {
+        const Layout_face_index f = queue.front();
+        queue.pop();
+        for(Layout_halfedge_index h : CGAL::halfedges_around_face(mesh_.halfedge(f), mesh_)) {
+          if(cuts(h)) continue;
+          const Layout_halfedge_index o = mesh_.opposite(h);
+          const Layout_face_index g = mesh_.face(o);
+          if(!seen[std::size_t(g)]) {
+            seen[std::size_t(g)] = 1;
+            to_patch_[std::size_t(g)] = compose(to_patch_[std::size_t(f)], inverse(across(h)));
+            queue.push(g);
+          }
+        }
+      }
+    }
+    for(Layout_edge_index e : mesh_.edges()) {           // both sides of every inner edge agree exactly
+      const Layout_halfedge_index h = mesh_.halfedge(e), o = mesh_.opposite(h);
+      if(cuts(h)) continue;
+      if(in_patch(h) != in_patch(mesh_.prev(o)) || in_patch(o) != in_patch(mesh_.prev(h)))
+        patch(mesh_.face(h)).unfolds = false;
+    }
+    box_.assign(L_.patches.size(), std::array<FT, 4>());
+    std::vector<char> first(L_.patches.size(), 1);
+    for(Layout_halfedge_index h : mesh_.halfedges()) {
+      if(mesh_.is_border(h)) continue;
+      const std::size_t p = std::size_t(get(patch_, mesh_.face(h)));
+      const Exact_uv x = in_patch(h);
+      std::array<FT, 4>& b = box_[p];
+      if(first[p]) { b = {{x.u, x.u, x.v, x.v}}; first[p] = 0; continue; }
+      if(x.u < b[0]) b[0] = x.u;
+      if(x.u > b[1]) b[1] = x.u;
+      if(x.v < b[2]) b[2] = x.v;
+      if(x.v > b[3]) b[3] = x.v;
+    }
+    for(std::size_t p = 0; p < L_.patches.size(); ++p) {
+      L_.patches[p].width = box_[p][1] - box_[p][0];
+      L_.patches[p].height = box_[p][3] - box_[p][2];
+      L_.patches[p].is_rectangle = true;                  // until a boundary vertex is off the box
+    }
+  }
+
+  // UV angle (radians) of the corner of face(h) at target(h)
+  double corner_angle(Layout_halfedge_index h) const
+  {
+    const Exact_uv& c = corner(h);
+    const Exact_uv& a = corner(mesh_.prev(h));
+    const Exact_uv& b = corner(mesh_.next(h));
+    const FT ax = b.u - c.u, ay = b.v - c.v, bx = a.u - c.u, by = a.v - c.v;
+    const FT cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+    if(CGAL::is_zero(cross)) return CGAL::is_negative(dot) ? std::acos(-1.) : 0.;   // straight, exactly
+    return std::atan2(CGAL::to_double(cross), CGAL::to_double(dot));                   // in (0, pi): convex pieces
+  }
+
+  // walks every boundary loop of every patch (interior on the left): loops, corners, box test
+  void walk_boundaries()
+  {
+    const double quarter = std::acos(-1.) / 2;
+    std::vector<char> done(mesh_.number_of_halfedges(), 0);
+    for(Layout_halfedge_index h0 : mesh_.halfedges()) {
+      if(done[std::size_t(h0)] || !patch_boundary(h0)) continue;
+      Layout_patch& p = patch(mesh_.face(h0));
+      const std::array<FT, 4>& b = box_[std::size_t(get(patch_, mesh_.face(h0)))];
+      ++p.boundary_loops;
+      Layout_halfedge_index h = h0;
+      do {
+        done[std::size_t(h)] = 1;
+        if(mesh_.is_border(mesh_.opposite(h))) p.on_border = true;
+        const Exact_uv x = in_patch(h);
+        if(x.u != b[0] && x.u != b[1] && x.v != b[2] && x.v != b[3]) p.is_rectangle = false;
+        double angle = 0;
+        Layout_halfedge_index g = h;
+        for(std::size_t guard = 0; guard <= mesh_.number_of_halfedges(); ++guard) {
+          angle += corner_angle(g);
+          if(patch_boundary(mesh_.next(g))) break;
+          g = mesh_.opposite(mesh_.next(g));
+        }
+        const long q = std::lround(angle / quarter);
+        if(q != 2) { ++p.corners; if(q == 1) ++p.right_angle_corners; }
+        h = mesh_.next(g);
+      } while(h != h0 && !done[std::size_t(h)]);
+    }
+  }
+
+  // the graph of arc and border edges: nodes, arcs, Euler characteristic of the layout
+  void graph()
+  {
+    std::vector<int> degree(mesh_.number_of_vertices(), 0);
+    std::size_t graph_edges = 0, graph_vertices = 0;
+    for(Layout_edge_index e : mesh_.edges()) {
+      if(!cuts(mesh_.halfedge(e))) continue;
+      ++graph_edges;
+      ++degree[std::size_t(mesh_.vertex(e, 0))];
+      ++degree[std::size_t(mesh_.vertex(e, 1))];
+    }
+    for(std::size_t v = 0; v < degree.size(); ++v) {
+      if(degree[v] == 0) continue;
+      ++graph_vertices;
+      const Corner_mesh& cm = map_.cm;
+      const bool input_vertex = v < std::size_t(cm.n_vertices);
+      const bool corner = input_vertex && (cm.vertex_on_border[v] ? map_.fan_quarter_turns[v] != 2 : map_.st.is_cone[v] != 0);
+      if(degree[v] != 2 || corner) ++L_.nodes;
+    }
+    L_.arcs = graph_edges - graph_vertices + L_.nodes;
+    L_.euler_characteristic = int(L_.nodes) - int(L_.arcs) + int(L_.patches.size());
+    const Corner_mesh& cm = map_.cm;
+    L_.surface_euler_characteristic = cm.n_vertices - cm.n_edges + cm.n_faces;
+  }
+};
+
+// The layout of the traces `runs` on `map` (vertex positions in 3D for the refined mesh).
+inline void build_patch_layout(const Tracing_map& map, const std::vector<Trace_run>& runs,
+                               const std::vector<std::array<double, 3> >& position, Patch_layout& L)
+{
+  const Corner_mesh& cm = map.cm;
+  L = Patch_layout();
+  std::size_t folded = 0;
+  for(int f = 0; f < cm.n_faces; ++f) {
+    const int h = map.face_halfedge[std::size_t(f)];
+    if(face_orientation(cm, h) <= 0) ++folded;
+    else L.uv_area += orientation_determinant(corner_uv(cm, cm.prev[h]), corner_uv(cm, h), corner_uv(cm, cm.next[h])) / 2;
+  }
+  if(folded > 0) {
+    L.message = std::to_string(folded) + " faces are flipped or degenerate in UV: a patch layout needs a locally "
+                "injective map";
+    return;
+  }
+  std::vector<const Raw_segment*> segments;
+  for(const Trace_run& r : runs)
+    for(const Raw_segment& s : r.segments) segments.push_back(&s);
+  Face_subdivision S;
+  Face_subdivider(map, S).run(segments);
+  L.unplaced_segments = S.unplaced;
+  if(!refined_mesh(map, S, position, L.mesh, L.message)) return;
+  auto patch_id = L.mesh.add_property_map<Layout_face_index, std::int32_t>("f:patch_id", -1).first;
+  auto is_arc = L.mesh.property_map<Layout_edge_index, std::uint8_t>("e:is_arc").first;
+  const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(
+      L.mesh, patch_id, CGAL::parameters::edge_is_constrained_map(is_arc));
+  L.patches.assign(n, Layout_patch());
+  Patch_measurer(map, S, L).run();
+  L.status = SUCCESS;
+  if(S.unplaced > 0) L.message = std::to_string(S.unplaced) + " trace segments not inserted; first: " + S.first_unplaced;
+}
+
+} // namespace tracing
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_PATCH_LAYOUT_H
