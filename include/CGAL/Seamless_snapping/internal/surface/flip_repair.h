@@ -167,6 +167,16 @@ class Flip_repair
   std::vector<std::vector<int> > cut_from, align_from;             // sector -> branches that start at it (u_0)
   std::vector<int> col_of;                                         // variable -> column of the local system, -1
   std::vector<int> face_stamp; int stamp = 0;
+  mutable std::vector<signed char> forced_;                        // per face: forced_degenerate(), -1 = not computed yet
+  struct Local_null_space
+  {
+    std::vector<int> vars;                       // the sector variables of the cluster
+    std::vector<std::vector<long> > basis;       // integer basis of {d : C_local d = 0}, one entry per variable
+    std::vector<std::vector<int> > support;      // per basis vector: the positions of its nonzero entries
+    bool ok = false;
+  };
+  std::vector<std::array<int, 3> > null_space_of_;                 // per face and radius: index into null_spaces_, -1
+  std::vector<Local_null_space> null_spaces_;                      // (they depend on C only, not on x: kept across passes)
 
 public:
   Flip_repair(const Corner_mesh& cm_, const Seam_topology& st_, const Reduced_system& rs_,
@@ -193,6 +203,8 @@ public:
     csr_index(nv, rs.node_rows, nr_start, nr_row);
     col_of.assign(nv, -1);
     face_stamp.assign(cm.n_faces, 0);
+    forced_.assign(cm.n_faces, -1);
+    null_space_of_.assign(cm.n_faces, std::array<int, 3>{{-1, -1, -1}});
     vs_start.assign(cm.n_vertices + 1, 0);
     for(int t = 0; t < ns; ++t) ++vs_start[st.sector_vertex(cm, t) + 1];
     for(int v = 0; v < cm.n_vertices; ++v) vs_start[v + 1] += vs_start[v];
@@ -293,7 +305,7 @@ public:
     for(int f = 0; f < cm.n_faces; ++f)
       if(input[f] == CGAL::POSITIVE && orient_[f] != CGAL::POSITIVE) r.unrepaired_faces.push_back(f);
     if(!r.unrepaired_faces.empty()) r.reasons = explain(r.unrepaired_faces, limit);
-    for(int f : r.unrepaired_faces) r.forced_degenerate += forced_degenerate(f) ? 1 : 0;
+    for(int f : r.unrepaired_faces) r.forced_degenerate += forced_degenerate(f) ? 1 : 0;   // cached by explain()
     return r;
   }
 
@@ -633,12 +645,16 @@ private:
 
   // x += sum_i coef_i basis_i (grid integers) on `vars`, then the propagation; false if a value
   // leaves F_delta (x is then partly changed: undo `ch`)
-  bool apply_node_move(const std::vector<int>& vars, const std::vector<std::vector<long> >& basis,
-                       const std::vector<std::pair<int, long> >& combo, Change& ch)
+  bool apply_node_move(const Local_null_space& ns, const std::vector<std::pair<int, long> >& combo, Change& ch)
   {
-    for(std::size_t j = 0; j < vars.size(); ++j) {
+    const std::vector<int>& vars = ns.vars;
+    std::vector<int> js;                         // the variables moved by some vector of the combination, increasing
+    for(const std::pair<int, long>& c : combo) js.insert(js.end(), ns.support[c.first].begin(), ns.support[c.first].end());
+    std::sort(js.begin(), js.end());
+    js.erase(std::unique(js.begin(), js.end()), js.end());
+    for(int j : js) {
       long d = 0;
-      for(const std::pair<int, long>& c : combo) d += c.second * basis[c.first][j];
+      for(const std::pair<int, long>& c : combo) d += c.second * ns.basis[c.first][j];
       if(d == 0) continue;
       if(!grid.contains(x[vars[j]])) return false;
       const std::int64_t z = grid.to_integer(x[vars[j]]) + d;
@@ -660,10 +676,16 @@ private:
     return true;
   }
 
-  bool try_node_move(int f, int radius, double max_move)
+  // the node cluster of face f at `radius` and an integer basis of the null space of C on it (computed once)
+  const Local_null_space& local_null_space(int f, int radius)
   {
-    std::vector<int> vars;
-    if(!node_cluster(f, radius, vars)) return false;
+    int& index = null_space_of_[f][radius];
+    if(index >= 0) return null_spaces_[std::size_t(index)];
+    index = int(null_spaces_.size());
+    null_spaces_.emplace_back();
+    Local_null_space& ns = null_spaces_.back();
+    std::vector<int>& vars = ns.vars;
+    if(!node_cluster(f, radius, vars)) return ns;
     // the rows of C that mention the cluster, restricted to its columns
     const Constraint_rows& C = rs.node_rows;
     for(std::size_t j = 0; j < vars.size(); ++j) col_of[vars[j]] = int(j);
@@ -677,16 +699,27 @@ private:
       for(std::size_t e = C.start[local_rows[i]]; e < C.start[local_rows[i] + 1]; ++e)
         if(col_of[C.col[e]] >= 0) a[i * vars.size() + std::size_t(col_of[C.col[e]])] += C.coef[e];
     for(int var : vars) col_of[var] = -1;
-    std::vector<std::vector<long> > basis;
-    integer_null_space(local_rows.size(), vars.size(), a, 1L << 16, basis);
-    if(basis.empty()) return false;
+    integer_null_space(local_rows.size(), vars.size(), a, 1L << 16, ns.basis);
+    for(const std::vector<long>& b : ns.basis) {
+      ns.support.emplace_back();
+      for(std::size_t j = 0; j < b.size(); ++j) if(b[j] != 0) ns.support.back().push_back(int(j));
+    }
+    ns.ok = !ns.basis.empty();
+    return ns;
+  }
+
+  bool try_node_move(int f, int radius, double max_move)
+  {
+    const Local_null_space& ns = local_null_space(f, radius);
+    if(!ns.ok) return false;
+    const std::vector<std::vector<long> >& basis = ns.basis;
 
     // the best candidate: largest gain, then the smallest move (the order of the search)
     std::vector<std::pair<int, long> > best, combo;
     long best_gain = 0;
     auto consider = [&]() {
       Change ch;
-      const bool ok = apply_node_move(vars, basis, combo, ch);
+      const bool ok = apply_node_move(ns, combo, ch);
       const long gain = ok ? commit_if_better(ch, max_move, true) : (ch.undo(x), -1);
       if(gain > best_gain) { best_gain = gain; best = combo; }
     };
@@ -705,7 +738,7 @@ private:
             }
     if(best_gain == 0) return false;
     Change ch;
-    if(!apply_node_move(vars, basis, best, ch)) { ch.undo(x); return false; }
+    if(!apply_node_move(ns, best, ch)) { ch.undo(x); return false; }
     return commit_if_better(ch, max_move, false) > 0;
   }
 
@@ -716,6 +749,12 @@ private:
   // (radius 2). Example: a cut branch with rotation k != 0 between two vertices with one sector
   // each, such as two cones joined by a lone cut edge, (R^k - I)(u_s - u_t) = 0.
   bool forced_degenerate(int f) const
+  {
+    if(forced_[f] < 0) forced_[f] = compute_forced_degenerate(f) ? 1 : 0;
+    return forced_[f] == 1;
+  }
+
+  bool compute_forced_degenerate(int f) const
   {
     std::vector<int> vars;
     node_cluster(f, 2, vars);
@@ -742,12 +781,19 @@ private:
       for(std::size_t e = r.start[local[i].second]; e < r.start[local[i].second + 1]; ++e) a[i * nc + column(r.col[e])] += r.coef[e];
       a[i * nc + nc - 1] = r.rhs[std::size_t(local[i].second)];
     }
+    for(int i = 0; i < 3; ++i)
+      if(face_sector(f, i) == face_sector(f, (i + 1) % 3)) return true;
+    const Exact_row_space row_space(local.size(), nc, a);
     for(int i = 0; i < 3; ++i) {
       const int s = face_sector(f, i), t = face_sector(f, (i + 1) % 3);
-      if(s == t) return true;
-      std::vector<long> b(2 * nc, 0);
-      for(int c = 0; c < 2; ++c) { b[c * nc + column(2 * s + c)] = 1; b[c * nc + column(2 * t + c)] = -1; }
-      if(rows_in_row_space(local.size(), nc, a, 2, b)) return true;
+      bool both = true;
+      for(int c = 0; c < 2 && both; ++c) {
+        std::vector<long> b(nc, 0);
+        b[column(2 * s + c)] = 1;
+        b[column(2 * t + c)] = -1;
+        both = row_space.contains(b);
+      }
+      if(both) return true;
     }
     return false;
   }
