@@ -74,6 +74,8 @@ struct Snap_report
   std::size_t degenerate_forced = 0;   ///< of the unrepaired triangles: those degenerate in every exact solution (two corners forced to one UV point by the constraints)
   std::size_t repair_moves = 0;        ///< accepted flip-repair moves
   std::size_t repair_node_moves = 0;   ///< of which moves of node vertices (with their branches) in the null space of the node system
+  std::size_t repair_cluster_moves = 0; ///< of which moves of a vertex together with the free vertices next to it, or moves that let a triangle fall back to its input orientation
+  std::size_t repair_relaxed_moves = 0; ///< of `repair_cluster_moves`: moves that repair a triangle made worse by snapping by letting others fall back to their input orientation (e.g. flipped as in the input), never below it
   /// @}
 
   /// \name Integer-grid structure (both modes; grid units: UVs times the grid scale)
@@ -128,6 +130,7 @@ struct Snap_report
     num("flips_unrepaired", double(flips_unrepaired)); num("degenerate_unrepaired", double(degenerate_unrepaired));
     num("degenerate_forced", double(degenerate_forced));
     num("repair_moves", double(repair_moves)); num("repair_node_moves", double(repair_node_moves));
+    num("repair_cluster_moves", double(repair_cluster_moves)); num("repair_relaxed_moves", double(repair_relaxed_moves));
     num("integer_translations_before", double(integer_translations_before));
     num("integer_translations_after", double(integer_translations_after));
     num("field_cones", double(field_cones));

@@ -13,7 +13,8 @@
 // Flip repair after snapping (Sec. 5.4, Sec. 6, generalized as Sec. 7 suggests): a UV triangle
 // whose orientation got worse than in the input (negative, or degenerate = zero area) is fixed by
 // moving vertices while every constraint row keeps holding exactly. Orientations are ordered
-// NEGATIVE < ZERO < POSITIVE; a move is kept only if no triangle gets worse and one gets better.
+// NEGATIVE < ZERO < POSITIVE; a move is kept only if no triangle gets worse and one gets better
+// (relaxed moves, 4., excepted).
 //
 // 1. Group moves (Sec. 5.4: "parametrically moving one of the vertices of the inverted triangle
 //    into the kernel of its 1-ring"). A move displaces the sectors of one *move group* by t:
@@ -42,14 +43,29 @@
 //    non-node sectors of the branches starting at a moved node follow by the propagation of
 //    Sec. 5.3.1 (u^- = u_0^- - R^k u_0^+ + R^k u^+, exact integer sums on F_delta; aligned
 //    components are copied). Of all candidates the one with the largest gain is kept.
+// 3. Cluster moves, for faces that 1. and 2. cannot fix: a group with its *followers*, the free
+//    sectors that share a face with one of its sectors and lie within 2 max_move of it; each follower
+//    moves by the displacement of its sector (R^k t). Snapping moves constrained sectors by up to
+//    max_move and leaves free ones in place, so a sliver whose free corner sat that close to a moved
+//    one in the input blocks every move of the group alone; moved together it keeps its shape. The
+//    half-plane of a face is the sum of those of its moved corners (exact for corners moved by one
+//    M t). Example (integer-grid map of the Directional dragon): a vertex of a cut branch one grid
+//    step from a cone, with a free vertex 0.2 steps next to it on the other side of the cut.
+// 4. Relaxed moves, for faces made worse by snapping only, after 1.-3. failed: group and cluster
+//    moves that may let other faces fall back to their input orientation (never below it); accepted
+//    iff the total deficit sum_f max(0, input_f - o_f) decreases, or stays and the gain is positive.
+//    Example: two cones forced onto one integer point P with faces (a, P, b) and (a, b, P') (P' = P)
+//    on both sides of the edge ab: one orientation is minus the other in every exact solution. In the
+//    input the first was positive, the second negative; snapping swapped them; the relaxed move swaps
+//    them back (no face ends worse than in the input).
 // Every candidate is only accepted after exact tests on the doubles that would be stored:
 //   - CGAL::orientation (exact predicate) on every face around a changed sector: none gets worse,
-//     at least one gets better;
+//     at least one gets better (relaxed moves: see 4.);
 //   - every row of the full system that mentions a changed variable evaluates to zero exactly
 //     (and the pipeline checks every row again at the end, verify_stage).
-// So the number of bad faces decreases monotonically and exactness is never traded. Faces made
-// worse by snapping are repaired first (group moves, then node moves), then faces flipped in the
-// input (group moves only).
+// So the number of bad faces decreases monotonically (relaxed moves decrease the deficit, which no
+// move increases) and exactness is never traded. Faces made worse by snapping
+// are repaired first (moves 1.-4.), then faces flipped in the input (moves 1. and 3.).
 // Bound: every moved coordinate stays within max_i |x_i - ubar_i| (the largest change made by
 // snapping) of its input value, so the repair never increases the maximal change.
 // What is left is explained: a face is *forced degenerate* when u_s - u_t = 0 for two of its
@@ -129,6 +145,8 @@ struct Flip_repair_result
   Orientation_counts introduced_after;  // on exit, among the faces positive in the input
   std::size_t moves = 0;                // accepted moves (all kinds)
   std::size_t node_moves = 0;           // of which moves of node vertices (local null space of C)
+  std::size_t cluster_moves = 0;        // of which group moves with free neighbours, or relaxed (Flip_repair::cluster_move)
+  std::size_t relaxed_moves = 0;        // of these, moves that let faces fall back to their input orientation
   std::vector<int> unrepaired_faces;    // positive in the input, not on exit (Corner_mesh numbering), ascending
   std::size_t forced_degenerate = 0;    // of these, faces degenerate in every exact solution (forced_degenerate())
   std::string reasons;                  // why they could not be repaired
@@ -142,8 +160,7 @@ class Flip_repair
   struct Group
   {
     int kind = 0;                                  // 0 free, 1 cut branch, 2 align branch
-    int n = 0;
-    Member m[2];
+    std::vector<Member> m;                         // the group's sectors; in a cluster move, then its followers
     int axis = -1;                                 // align: the moving component (1 - c); -1: t in R^2
   };
   struct Halfplane { double g[2]; double h; double norm; };   // g . tau >= h (+ margin * norm)
@@ -160,6 +177,8 @@ class Flip_repair
   std::vector<int> group_of;                       // per sector: group index, -1 = fixed
   std::vector<Group> groups;
   std::vector<signed char> orient_;                // current orientation per face (exact)
+  std::vector<signed char> input_;                 // orientation per face in the input ubar (exact)
+  bool relaxed_ = false;                           // faces may fall back to their input orientation (see orientation_gain)
   // node moves
   const Reduced_system& rs;
   std::vector<std::size_t> vs_start; std::vector<int> vs_sector;   // vertex -> its sectors (CSR)
@@ -224,27 +243,27 @@ public:
     std::vector<Group> candidates;
     for(const Cut_branch_plan& p : rs.cut_branches)
       for(const std::pair<int, int>& s : p.inner) {
-        Group g; g.kind = 1; g.n = 2; g.m[0] = Member{s.first, 0}; g.m[1] = Member{s.second, p.k};
+        Group g; g.kind = 1; g.m = {Member{s.first, 0}, Member{s.second, p.k}};
         candidates.push_back(g);
       }
     for(const Align_branch_plan& p : rs.align_branches)
       for(int s : p.inner) {
-        Group g; g.kind = 2; g.n = 1; g.m[0] = Member{s, 0}; g.axis = 1 - p.component;
+        Group g; g.kind = 2; g.m = {Member{s, 0}}; g.axis = 1 - p.component;
         candidates.push_back(g);
       }
     std::vector<int> uses(ns, 0);
-    for(const Group& g : candidates) for(int i = 0; i < g.n; ++i) ++uses[g.m[i].sector];
+    for(const Group& g : candidates) for(const Member& mb : g.m) ++uses[mb.sector];
     group_of.assign(ns, -1);
     for(const Group& g : candidates) {
       bool unique = true;
-      for(int i = 0; i < g.n; ++i) unique = unique && uses[g.m[i].sector] == 1;
+      for(const Member& mb : g.m) unique = unique && uses[mb.sector] == 1;
       if(!unique) continue;
-      for(int i = 0; i < g.n; ++i) group_of[g.m[i].sector] = int(groups.size());
+      for(const Member& mb : g.m) group_of[mb.sector] = int(groups.size());
       groups.push_back(g);
     }
     for(int s = 0; s < ns; ++s) {
       if(uses[s] > 0 || vr_start[2 * s + 2] != vr_start[2 * s]) continue;   // on a branch, or in some row
-      Group g; g.kind = 0; g.n = 1; g.m[0] = Member{s, 0};
+      Group g; g.kind = 0; g.m = {Member{s, 0}};
       group_of[s] = int(groups.size());
       groups.push_back(g);
     }
@@ -279,7 +298,8 @@ public:
   Flip_repair_result run(const std::vector<double>& ubar)
   {
     Flip_repair_result r;
-    const std::vector<signed char> input = face_orientations(cm, st, ubar);
+    input_ = face_orientations(cm, st, ubar);
+    const std::vector<signed char>& input = input_;
     orient_ = face_orientations(cm, st, x);
     r.input = count_orientations(input);
     r.before = count_orientations(orient_);
@@ -324,7 +344,44 @@ private:
     // then the node vertices of the face, alone and with their neighbours in C
     for(int radius = 0; radius < 3 && node_moves; ++radius)
       if(try_node_move(f, radius, max_move)) { ++r.moves; ++r.node_moves; return true; }
+    // then the groups with the free sectors next to them (cluster moves), for faces made worse by
+    // snapping also relaxed (a face may fall back to its input orientation)
+    for(int relaxed = 0; relaxed < (node_moves ? 2 : 1); ++relaxed) {
+      relaxed_ = relaxed == 1;
+      bool done = false;
+      for(int i = 0; i < 3 && !done; ++i) {
+        if(order[i] < 0) continue;
+        Group cluster;
+        if(relaxed_ && try_move(groups[order[i]], f, max_move)) done = true;
+        else if(cluster_move(groups[order[i]], max_move, cluster) && try_move(cluster, f, max_move)) done = true;
+      }
+      relaxed_ = false;
+      if(done) { ++r.moves; ++r.cluster_moves; r.relaxed_moves += relaxed; return true; }
+    }
     return false;
+  }
+
+  // The group g with its followers: the free sectors (in no row) that share a face with a sector of g
+  // and lie within 2 max_move of it (L-infinity, in that face's chart); each moves with its sector
+  // (by R^k t). Snapping moves constrained sectors by up to max_move and leaves free ones in place,
+  // so a free vertex that sat this close to a moved one in the input (a sliver) is moved along.
+  // false if g has no followers.
+  bool cluster_move(const Group& g, double max_move, Group& cluster) const
+  {
+    cluster = g;
+    for(std::size_t i = 0; i < g.m.size(); ++i) {
+      const int s = g.m[i].sector;
+      for(std::size_t k = sc_start[s]; k < sc_start[s + 1]; ++k)
+        for(int h : {cm.next[sc_corner[k]], cm.prev[sc_corner[k]]}) {
+          const int t = st.sector_of[h];
+          if(group_of[t] < 0 || groups[std::size_t(group_of[t])].kind != 0 || group_of[t] == group_of[s]) continue;
+          if(!(std::fabs(x[2 * t] - x[2 * s]) <= 2 * max_move && std::fabs(x[2 * t + 1] - x[2 * s + 1]) <= 2 * max_move)) continue;
+          bool known = false;
+          for(const Member& mb : cluster.m) known = known || mb.sector == t;
+          if(!known) cluster.m.push_back(Member{t, g.m[i].k});
+        }
+    }
+    return cluster.m.size() > g.m.size();
   }
 
   int rank(int g) const { return g < 0 ? 3 : (groups[g].kind == 0 ? 0 : (groups[g].kind == 2 ? 1 : 2)); }
@@ -333,7 +390,7 @@ private:
   void group_faces(const Group& g, std::vector<int>& corners, std::vector<int>& member) const
   {
     corners.clear(); member.clear();
-    for(int i = 0; i < g.n; ++i)
+    for(int i = 0; i < int(g.m.size()); ++i)
       for(std::size_t k = sc_start[g.m[i].sector]; k < sc_start[g.m[i].sector + 1]; ++k) {
         corners.push_back(sc_corner[k]);
         member.push_back(i);
@@ -431,36 +488,49 @@ private:
     group_faces(g, corners, member);
     const int dim = g.axis >= 0 ? 1 : 2;
 
-    // current orientations (exact) and half-planes in the parameter space
-    std::vector<CGAL::Orientation> old_sign(corners.size());
-    std::vector<Halfplane> all, required;
-    std::size_t old_bad = 0;
+    // current orientations (exact) and half-planes in the parameter space, per face of the fans: a
+    // corner q moved by M t (M = R^k of its member) changes orient(q, a, b) by (M^T n) . t,
+    // n = (a_v - b_v, b_u - a_u) (a, b the next corners counter-clockwise); these add up over the
+    // moved corners of the face (exact when they move by the same M t: a cluster move)
+    struct Fan_face { int face; int corner; CGAL::Orientation sign; double G[2]; };
+    std::vector<Fan_face> faces;
     double L = 0;
     for(std::size_t i = 0; i < corners.size(); ++i) {
       const int c = corners[i];
       const int s = st.sector_of[c], sa = st.sector_of[cm.next[c]], sb = st.sector_of[cm.prev[c]];
       const double qx = x[2 * s], qy = x[2 * s + 1];
       const double ax = x[2 * sa], ay = x[2 * sa + 1], bx = x[2 * sb], by = x[2 * sb + 1];
-      old_sign[i] = CGAL::orientation(P(qx, qy), P(ax, ay), P(bx, by));
-      if(old_sign[i] != CGAL::POSITIVE) ++old_bad;
       L = (std::max)({L, std::fabs(ax - qx), std::fabs(ay - qy), std::fabs(bx - qx), std::fabs(by - qy)});
       const double n[2] = {ay - by, bx - ax};
-      if(n[0] == 0 && n[1] == 0) continue;      // a == b: the face is degenerate whatever we do
       double mn[2];                              // M^T n, M = R^k: (R^k)^T = R^-k
       rotate_quarter_turns(-g.m[member[i]].k, n[0], n[1], mn[0], mn[1]);
+      std::size_t j = 0;
+      while(j < faces.size() && faces[j].face != cm.face[c]) ++j;
+      if(j == faces.size())
+        faces.push_back(Fan_face{cm.face[c], c, CGAL::orientation(P(qx, qy), P(ax, ay), P(bx, by)), {0, 0}});
+      faces[j].G[0] += mn[0];
+      faces[j].G[1] += mn[1];
+    }
+    std::vector<Halfplane> all, required;
+    std::size_t old_bad = 0;
+    for(const Fan_face& ff : faces) {
+      if(ff.sign != CGAL::POSITIVE) ++old_bad;
+      if(ff.G[0] == 0 && ff.G[1] == 0) continue;     // e.g. a == b: the face is degenerate whatever we do
+      const int c = ff.corner;
+      const int s = st.sector_of[c], sa = st.sector_of[cm.next[c]], sb = st.sector_of[cm.prev[c]];
       Halfplane p;
-      if(dim == 1) { p.g[0] = mn[g.axis]; p.g[1] = 0; }
-      else { p.g[0] = mn[0]; p.g[1] = mn[1]; }
-      p.norm = std::sqrt(n[0] * n[0] + n[1] * n[1]);
-      p.h = -exact_orient_to_double(qx, qy, ax, ay, bx, by);
+      if(dim == 1) { p.g[0] = ff.G[g.axis]; p.g[1] = 0; }
+      else { p.g[0] = ff.G[0]; p.g[1] = ff.G[1]; }
+      p.norm = std::sqrt(ff.G[0] * ff.G[0] + ff.G[1] * ff.G[1]);
+      p.h = -exact_orient_to_double(x[2 * s], x[2 * s + 1], x[2 * sa], x[2 * sa + 1], x[2 * sb], x[2 * sb + 1]);
       all.push_back(p);
-      if(old_sign[i] != CGAL::NEGATIVE || cm.face[c] == target) required.push_back(p);
+      if(floor_of(ff.face, ff.sign) != CGAL::NEGATIVE || ff.face == target) required.push_back(p);
     }
     if(old_bad == 0 || !(L > 0)) return false;
     L *= 4;
     // |new - ubar| <= max_move for every moved coordinate: (R^k t)_c = sign_c t_{col_c} within
     // [lo, hi] = [ubar - x - max_move, ubar - x + max_move]; the margin does not shrink these
-    for(int i = 0; i < g.n; ++i) {
+    for(int i = 0; i < int(g.m.size()); ++i) {
       const Quarter_turn R(g.m[i].k);
       for(int c = 0; c < 2; ++c) {
         const int var = 2 * g.m[i].sector + c;
@@ -479,7 +549,7 @@ private:
     double q = grid.quantum;
     if(g.kind != 1) {
       double mx = 0;
-      for(int i = 0; i < g.n; ++i)
+      for(int i = 0; i < int(g.m.size()); ++i)
         mx = (std::max)({mx, std::fabs(x[2 * g.m[i].sector]), std::fabs(x[2 * g.m[i].sector + 1])});
       q = std::nextafter(mx, std::numeric_limits<double>::infinity()) - mx;
     }
@@ -520,7 +590,7 @@ private:
     if(!std::isfinite(t[0]) || !std::isfinite(t[1]) || (t[0] == 0 && t[1] == 0)) return false;
 
     Change ch;
-    for(int i = 0; i < g.n; ++i) {
+    for(int i = 0; i < int(g.m.size()); ++i) {
       double d[2];
       rotate_quarter_turns(g.m[i].k, t[0], t[1], d[0], d[1]);
       for(int c = 0; c < 2; ++c) ch.set(x, 2 * g.m[i].sector + c, x[2 * g.m[i].sector + c] + d[c]);
@@ -546,10 +616,14 @@ private:
 
   // Exact orientations of the faces around the changed sectors: the total gain in orientation
   // (NEGATIVE < ZERO < POSITIVE), or -1 if a face gets worse. `updates` receives the new values.
+  // Relaxed (for faces made worse by snapping that strict moves cannot repair): a face may also fall
+  // back to its input orientation, e.g. a face that snapping unflipped flips back as in the input;
+  // the score is then led by the decrease of the total deficit sum_f max(0, input_f - o_f) (how much
+  // the faces are worse than in the input), which never increases, then the gain.
   long orientation_gain(const Change& ch, std::vector<std::pair<int, signed char> >* updates)
   {
     ++stamp;
-    long gain = 0;
+    long gain = 0, deficit_decrease = 0;
     for(const std::pair<int, double>& v : ch.old) {
       const int s = v.first / 2;
       for(std::size_t k = sc_start[s]; k < sc_start[s + 1]; ++k) {
@@ -557,12 +631,19 @@ private:
         if(face_stamp[f] == stamp) continue;
         face_stamp[f] = stamp;
         const signed char o = static_cast<signed char>(face_orientation(f, x));
-        if(o < orient_[f]) return -1;
+        if(o < floor_of(f, CGAL::Orientation(orient_[f]))) return -1;
         gain += o - orient_[f];
+        deficit_decrease += (std::max)(0, input_[f] - orient_[f]) - (std::max)(0, input_[f] - o);
         if(updates != nullptr && o != orient_[f]) updates->emplace_back(f, o);
       }
     }
-    return gain;
+    return relaxed_ ? deficit_decrease * (1L << 20) + gain : gain;   // |gain| <= 2 * (faces around a move) < 2^20
+  }
+
+  // the lowest orientation face f may take in a move: its current one; relaxed, its input one if lower
+  CGAL::Orientation floor_of(int f, CGAL::Orientation current) const
+  {
+    return relaxed_ && input_[f] < current ? CGAL::Orientation(input_[f]) : current;
   }
 
   // every changed value is finite and within `max_move` of the input, and every row of the full
@@ -814,8 +895,9 @@ private:
         << "by the constraints (u_s - u_t = 0 is a combination of constraint rows, e.g. two cones joined by a cut branch "
         << "with rotation k != 0: (R^k - I)(u_s - u_t) = 0)";
     if(other >= 0)
-      o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices, of their node neighbours in C "
-        << "or of their branches within " << max_move / grid.quantum << " grid steps keeps every row exact and makes no face worse";
+      o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices (alone or with the free vertices next "
+        << "to them), of their node neighbours in C or of their branches within " << max_move / grid.quantum
+        << " grid steps keeps every row exact and makes no face worse than now or than in the input";
     return o.str();
   }
 };

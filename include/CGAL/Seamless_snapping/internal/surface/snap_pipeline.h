@@ -497,6 +497,8 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
   report.degenerate_unrepaired = fr.introduced_after.degenerate;
   report.repair_moves = fr.moves;
   report.repair_node_moves = fr.node_moves;
+  report.repair_cluster_moves = fr.cluster_moves;
+  report.repair_relaxed_moves = fr.relaxed_moves;
   report.degenerate_forced = fr.forced_degenerate;
   if(!fr.unrepaired_faces.empty()) {
     S.flip_note = "; " + std::to_string(fr.introduced_after.negative) + " flipped and " +
