@@ -21,6 +21,7 @@
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 
 #include "mesh_test_support.h"
+#include "connection_test_utils.h"
 
 #include <CGAL/Seamless_snapping/IO/Patch_layout.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
@@ -36,6 +37,7 @@
 
 #include <array>
 #include <cassert>
+#include <random>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -390,6 +392,125 @@ static void test_bear_orbifold()
   assert(g.cones == 3 && g.separatrices.size() == 4);     // cones of 1, 1 and 2 quarter turns
 }
 
+// Connection constraints realized by traces (Fig. 4 of the paper): on CGAL's bear with an Orbifold Tutte
+// square map, every pair of cones that the input puts on a common isoline up to solver error (along the
+// shortest edge path, to 1e-6 of the UV diameter) becomes a connection constraint. After snapping with
+// them, one of the rays of the first cone ends exactly at the second cone; after plain snapping they miss.
+static void test_connections_realized()
+{
+  const fs::path p = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
+  Mesh m;
+  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), m)) {
+    std::cout << "trace: connections: SKIPPED (no " << p.string() << ")\n";
+    return;
+  }
+  UV_map uv = uv_of(m);
+  std::string msg;
+  assert(SS::internal::make_orbifold_tutte_uv(m, uv, SS::internal::farthest_point_cones(m, 3), SMP::Square, msg) == SS::SUCCESS);
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for(halfedge_descriptor h : m.halfedges()) {
+    if(m.is_border(h)) continue;
+    lo[0] = (std::min)(lo[0], get(uv, h).x()); hi[0] = (std::max)(hi[0], get(uv, h).x());
+    lo[1] = (std::min)(lo[1], get(uv, h).y()); hi[1] = (std::max)(hi[1], get(uv, h).y());
+  }
+  const double diameter = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  const std::vector<vertex_descriptor> cones = connection_test::find_cones(m, uv);
+  std::vector<connection_test::Constraint> cc;
+  for(vertex_descriptor a : cones)
+    for(vertex_descriptor b : cones)
+      for(int comp : {0, 1}) {
+        if(a == b) continue;
+        connection_test::Constraint c(connection_test::shortest_path(m, a, b), comp);
+        const connection_test::Check_result cr = connection_test::unfold_path(m, uv, uv, false, c);
+        const double d[2] = {CGAL::to_double(cr.end.x - cr.start.x), CGAL::to_double(cr.end.y - cr.start.y)};
+        if(std::abs(d[comp]) > 1e-6 * diameter || std::abs(d[1 - comp]) < 1e-3 * diameter) continue;
+        cc.push_back(c);
+      }
+  assert(!cc.empty());
+  Mesh plain = m, connected = m;
+  UV_map uv_plain = uv_of(plain), uv_conn = uv_of(connected);
+  assert(SS::snap_seamless_parameterization(plain, uv_plain).status == SS::SUCCESS);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(connected, uv_conn, SS::parameters::connection_constraints(cc));
+  assert(r.status == SS::SUCCESS);
+  Tracer t_plain(plain, uv_plain), t_conn(connected, uv_conn);
+  std::size_t realized = 0, missed_plain = 0;
+  for(std::size_t i = 0; i < cc.size(); ++i) {
+    const connection_test::Constraint& c = cc[i];
+    assert(connection_test::exact_connection_holds(connected, uv_conn, uv, c).holds);
+    const vertex_descriptor a = m.source(c.path.front()), b = m.target(c.path.back());
+    SS::Trace_options<Mesh> o;
+    o.has_target_vertex = true;
+    o.target_vertex = b;
+    o.max_faces = 5000;                          // a connecting isoline crosses a few hundred faces; a miss spirals on
+    // the rays from a (a cone: only the axis directions inside its sectors start); one must end at b
+    auto reaches_b = [&](const Tracer& tracer, std::string& ends) {
+      bool hit = false;
+      for(halfedge_descriptor corner : CGAL::halfedges_around_target(a, m)) {
+        if(m.is_border(corner)) continue;
+        for(int d = 0; d < 4; ++d) {
+          const Trace t = tracer.trace_from_vertex(corner, SS::Trace_direction(d), o);
+          if(t.end == SS::Trace_end::INVALID_START || t.start_corner != corner) continue;   // the ray of another sector
+          ends += std::string(" ") + SS::trace_end_name(t.end);
+          hit = hit || (t.end == SS::Trace_end::TARGET && t.inexact_transfers == 0);
+        }
+      }
+      return hit;
+    };
+    std::string ends_conn, ends_plain;
+    const bool hit = reaches_b(t_conn, ends_conn);
+    if(!hit) std::cerr << "connection " << a << " -> " << b << " (" << c.component << "): rays end" << ends_conn << std::endl;
+    assert(hit);
+    ++realized;
+    missed_plain += reaches_b(t_plain, ends_plain) ? 0 : 1;
+  }
+  std::cout << "trace: connections: " << cc.size() << " cone pairs on a common isoline (input error <= 1e-6 of the UV"
+            << " diameter): realized exactly by a trace after snapping with them " << realized << ", missed after plain snapping "
+            << missed_plain << "\n";
+  assert(realized == cc.size() && missed_plain > 0);
+}
+
+// A cycle constraint closes its isoline: a flat n x n torus whose corner UVs carry noise of 1e-9 is
+// snapped (a) plainly: the +u isoline through a vertex spirals (the transition's v-translation is not 0);
+// (b) with the cycle constraint "v agrees once around the row j = 0": the same trace closes exactly.
+static void test_cycle_closes()
+{
+  const int n = 4;
+  Mesh m;
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
+  UV_map uv = uv_of(m);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> noise(-1e-9, 1e-9);
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int I[4] = {i, i + 1, i + 1, i}, J[4] = {j, j, j + 1, j + 1};
+      for(const std::array<int, 3>& t : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
+        const face_descriptor f = m.add_face(vs[(J[t[0]] % n) * n + I[t[0]] % n], vs[(J[t[1]] % n) * n + I[t[1]] % n],
+                                             vs[(J[t[2]] % n) * n + I[t[2]] % n]);
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+          for(int c : t)
+            if(target(h, m) == vs[(J[c] % n) * n + I[c] % n]) put(uv, h, Point_2(I[c] + noise(rng), J[c] + noise(rng)));
+      }
+    }
+  connection_test::Constraint cycle;
+  cycle.component = 1;
+  for(int i = 0; i < n; ++i) cycle.path.push_back(CGAL::halfedge(vs[i], vs[(i + 1) % n], m).first);
+  const halfedge_descriptor corner = m.prev(cycle.path.front());   // (vs[0], the face above the row)
+  Mesh plain = m;
+  UV_map uv_plain = uv_of(plain);
+  assert(SS::snap_seamless_parameterization(plain, uv_plain).status == SS::SUCCESS);
+  const std::vector<connection_test::Constraint> cc(1, cycle);
+  assert(SS::snap_seamless_parameterization(m, uv, SS::parameters::connection_constraints(cc)).status == SS::SUCCESS);
+  const Trace spiral = Tracer(plain, uv_plain).trace_from_vertex(corner, SS::Trace_direction::PLUS_U);
+  const Trace loop = Tracer(m, uv).trace_from_vertex(corner, SS::Trace_direction::PLUS_U);
+  std::cout << "trace: cycle: plain snap: " << SS::trace_end_name(spiral.end) << " after " << spiral.faces_crossed
+            << " faces; with the cycle constraint: " << SS::trace_end_name(loop.end) << " after " << loop.faces_crossed << " faces\n";
+  assert(spiral.end != SS::Trace_end::CLOSED_LOOP);
+  assert(loop.end == SS::Trace_end::CLOSED_LOOP && loop.inexact_transfers == 0);
+  assert(target(loop.segments.back().target.halfedge, m) == vs[0]);
+}
+
 static void test_shared_data()
 {
   std::vector<fs::path> files;
@@ -425,7 +546,9 @@ int main(int argc, char** argv)
   parse_test_arguments(argc, argv);
   test_grid();
   test_torus_closed_loops();
+  test_cycle_closes();
   if(!sanitizer_subset()) test_bear_orbifold();
+  if(!sanitizer_subset()) test_connections_realized();
   test_shared_data();
   std::cout << "test_trace: all passed\n";
   return 0;
