@@ -2,8 +2,10 @@
 // graph's separatrices traced exactly on the input (inexact) map and on its snapped (exact) output,
 // with the number that ended at a cone and at a T-junction, the cut crossings where the exit point X did
 // not map onto the edge by R^k X + t (the transition is inexact there), the number of failures of each kind
-// (Trace_end), whether the layout is valid (every separatrix ended at a cone, the border or an earlier trace)
-// and the time.
+// (Trace_end), the patch layout (patches, quad patches: disks with 4 right-angle corners whose UV image is
+// an axis-aligned rectangle, checked exactly; "-" when the map has flipped or degenerate triangles), whether
+// the layout is valid (every separatrix ended at a cone, the border or an earlier trace, and every patch is
+// a quad) and the time (graph and layout).
 //
 // usage: bench_trace [--svg DIR] <file.obj | directory>...   (directories searched recursively for *.obj;
 //        files under a "directional" folder are welded, as Directional writes cut meshes). Without
@@ -59,7 +61,10 @@ static void row(const std::string& name, const char* which, const Mesh& m, UV_ma
   std::printf("| %s | %s | %zu | %zu | %zu | %zu | %zu |", name.c_str(), which, g.separatrices.size(),
               g.ends[int(SS::Trace_end::CONE)], g.ends[int(SS::Trace_end::EARLIER_TRACE)], inexact, g.failed);
   for(SS::Trace_end e : kinds) std::printf(" %zu |", g.ends[int(e)]);
-  std::printf(" %s | %.0f |\n", regular == g.separatrices.size() ? "yes" : "no", ms);
+  const SS::Patch_layout& L = g.layout;
+  if(L.status == SS::SUCCESS) std::printf(" %zu | %zu |", L.patches.size(), L.quad_patches);
+  else std::printf(" - | - |");
+  std::printf(" %s | %.0f |\n", regular == g.separatrices.size() && L.is_valid() ? "yes" : "no", ms);
   std::fflush(stdout);
   if(!svg.empty()) { std::ofstream os(svg); SS::IO::write_motorcycle_graph_svg(os, m, uv, g); }
 }
@@ -86,9 +91,9 @@ int main(int argc, char** argv)
   std::sort(files.begin(), files.end());
   std::printf("| model | map | separatrices | to cone | T-junction | inexact cut crossings | failed |");
   for(SS::Trace_end e : kinds) std::printf(" %s |", SS::trace_end_name(e));
-  std::printf(" valid layout | ms |\n|---|---|---|---|---|---|---|");
+  std::printf(" patches | quad patches | valid layout | ms |\n|---|---|---|---|---|---|---|");
   for(std::size_t i = 0; i < sizeof(kinds) / sizeof(kinds[0]); ++i) std::printf("---|");
-  std::printf("---|---|\n");
+  std::printf("---|---|---|---|\n");
   for(const fs::path& p : files) {
     Mesh m;
     UV_map uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;

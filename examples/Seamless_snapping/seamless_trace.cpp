@@ -1,17 +1,23 @@
 // seamless_trace: the isoline-tracing study of Sec. 6.2 (Mandad & Campen 2019) on one file.
 //
-//   seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE]
+//   seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]
 //
 // Reads a triangle mesh with a per-corner UV map (OBJ, f v/vt), traces the separatrices of its
 // motorcycle graph exactly (rational arithmetic) and prints how each ended: counts per reason,
 // and the failures (traces that ended in an inconsistency of the map: Fig. 3). On an exactly
-// seamless, locally injective map there are none. Exit status: 0 when the map was read and traced
-// (whatever the failures), 1 when it could not be read or traced, 2 for a command-line error.
+// seamless, locally injective map there are none. Then it cuts the faces along the separatrices
+// into the patch layout and prints the patches, how many are quads (disks with 4 right-angle corners
+// whose UV image is a rectangle, checked exactly), nodes, arcs and the Euler characteristics; the
+// refined mesh (arcs as edges, patch ids) is written with --layout-obj / --layout-ply. A map with
+// flipped or degenerate UV triangles gets no layout (the reason is printed; JSON: null).
+// Exit status: 0 when the map was read and traced (whatever the failures), 1 when it could not be
+// read or traced or a file could not be written, 2 for a command-line error.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/Patch_layout.h>
 #include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
@@ -41,18 +47,21 @@ static std::string json_string(const std::string& s)
 
 int main(int argc, char** argv)
 {
-  std::string in, json, svg;
+  const char* usage = "usage: seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]\n";
+  std::string in, json, svg, layout_obj, layout_ply;
   bool weld = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--weld") weld = true;
     else if(a == "--json" && i + 1 < argc) json = argv[++i];
     else if(a == "--svg" && i + 1 < argc) svg = argv[++i];
-    else if(a == "--help") { std::cout << "usage: seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE]\n"; return 0; }
+    else if(a == "--layout-obj" && i + 1 < argc) layout_obj = argv[++i];
+    else if(a == "--layout-ply" && i + 1 < argc) layout_ply = argv[++i];
+    else if(a == "--help") { std::cout << usage; return 0; }
     else if(in.empty() && a[0] != '-') in = a;
-    else { std::cerr << "usage: seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE]\n"; return 2; }
+    else { std::cerr << usage; return 2; }
   }
-  if(in.empty()) { std::cerr << "usage: seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE]\n"; return 2; }
+  if(in.empty()) { std::cerr << usage; return 2; }
 
   Mesh mesh;
   UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
@@ -82,7 +91,13 @@ int main(int argc, char** argv)
     if(SS::is_failure(g.separatrices[i].end))
       std::printf("  failure: separatrix %zu: %s: %s\n", i, SS::trace_end_name(g.separatrices[i].end),
                   g.separatrices[i].message.c_str());
-  std::printf("patches: not computed yet (the patch decomposition is not implemented)\n");
+  const SS::Patch_layout& L = g.layout;
+  if(L.status == SS::SUCCESS)
+    std::printf("patches %zu, quad patches %zu%s; nodes %zu, arcs %zu, Euler characteristic %d (surface %d)%s\n",
+                L.patches.size(), L.quad_patches, L.is_valid() ? " (a valid quad layout)" : "", L.nodes, L.arcs,
+                L.euler_characteristic, L.surface_euler_characteristic,
+                L.unplaced_segments ? (", " + std::to_string(L.unplaced_segments) + " segments not placed").c_str() : "");
+  else std::printf("patches: none (%s)\n", L.message.c_str());
 
   if(!json.empty()) {
     std::ofstream os(json);
@@ -90,7 +105,13 @@ int main(int argc, char** argv)
        << ",\n  \"faces\": " << num_faces(mesh) << ",\n  \"cones\": " << g.cones
        << ",\n  \"border_corners\": " << g.border_corners << ",\n  \"seeded\": " << (g.seeded ? "true" : "false")
        << ",\n  \"separatrices\": " << g.separatrices.size() << ",\n  \"failed\": " << g.failed
-       << ",\n  \"patches\": null,\n  \"quad_patches\": null,\n  \"ends\": {";
+       << ",\n  \"patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.patches.size()) : "null")
+       << ",\n  \"quad_patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.quad_patches) : "null")
+       << ",\n  \"valid_layout\": " << (L.is_valid() ? "true" : "false")
+       << ",\n  \"layout_message\": " << json_string(L.message)
+       << ",\n  \"nodes\": " << L.nodes << ",\n  \"arcs\": " << L.arcs
+       << ",\n  \"euler_characteristic\": " << L.euler_characteristic
+       << ",\n  \"surface_euler_characteristic\": " << L.surface_euler_characteristic << ",\n  \"ends\": {";
     bool first = true;
     for(int e = 0; e < SS::number_of_trace_ends; ++e) {
       os << (first ? "" : ", ") << "\"" << SS::trace_end_name(SS::Trace_end(e)) << "\": " << g.ends[e];
@@ -98,6 +119,13 @@ int main(int argc, char** argv)
     }
     os << "},\n  \"milliseconds\": " << ms << "\n}\n";
     if(!os) { std::cerr << "seamless_trace: cannot write " << json << std::endl; return EXIT_FAILURE; }
+  }
+  for(const std::string* file : {&layout_obj, &layout_ply}) {
+    if(file->empty()) continue;
+    const SS::Status s = file == &layout_obj ? SS::IO::write_patch_layout_OBJ(*file, L, message)
+                                             : SS::IO::write_patch_layout_PLY(*file, L, message);
+    if(s != SS::SUCCESS) { std::cerr << "seamless_trace: " << message << std::endl; return EXIT_FAILURE; }
+    std::printf("%s\n", message.c_str());
   }
   if(!svg.empty()) {
     std::ofstream os(svg);

@@ -138,7 +138,12 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
               "earlier_trace", ..., and the failures "missed_at_cut", "oscillation_at_cut", ...);
       "seeded": True when the four traces were seeded (no cones, no border corners);
       "separatrices": one dict per trace (index = the "hit_trace" of the others), see `trace_isoline`, plus
-              "source": "cone", "border_corner" or "seed".
+              "source": "cone", "border_corner" or "seed";
+      "layout": the patch layout of the separatrices (faces cut along them, exactly): "status" ("SUCCESS", or
+              "INVALID_INPUT" when a UV triangle is flipped or degenerate), "message", "patches", "quad_patches"
+              (disks with 4 right-angle corners whose UV image is an axis-aligned rectangle, checked exactly),
+              "nodes", "arcs", "euler_characteristic" (nodes - arcs + patches), "surface_euler_characteristic",
+              "valid" (every patch a quad and the Euler characteristics equal).
     A map that is not exactly seamless still gets a graph: its inexactness shows as failure ends.
     `max_faces` limits each trace (0: 20 times the number of faces, plus 100).
     """

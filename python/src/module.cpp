@@ -256,6 +256,18 @@ py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXd
   d["ends"] = ends;
   d["seeded"] = g.seeded;
   d["separatrices"] = seps;
+  py::dict layout;                       // the patch layout's counts (the refined mesh stays in C++)
+  const SS::Patch_layout& L = g.layout;
+  layout["status"] = SS::status_name(L.status);
+  layout["message"] = L.message;
+  layout["patches"] = L.patches.size();
+  layout["quad_patches"] = L.quad_patches;
+  layout["nodes"] = L.nodes;
+  layout["arcs"] = L.arcs;
+  layout["euler_characteristic"] = L.euler_characteristic;
+  layout["surface_euler_characteristic"] = L.surface_euler_characteristic;
+  layout["valid"] = L.is_valid();
+  d["layout"] = layout;
   return d;
 }
 

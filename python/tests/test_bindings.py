@@ -315,6 +315,10 @@ def test_motorcycle_graph_flat_torus():
     ends = [s["end"] for s in g["separatrices"]]
     assert all(e in ("closed_loop", "earlier_trace") for e in ends)
     assert all(0 <= s["hit_trace"] < 4 for s in g["separatrices"] if s["end"] == "earlier_trace")
+    # the layout: the torus cut along the two loops through the seed is one square patch
+    lay = g["layout"]
+    assert lay["status"] == "SUCCESS" and lay["valid"] and lay["patches"] == 1 and lay["quad_patches"] == 1
+    assert lay["euler_characteristic"] == lay["surface_euler_characteristic"] == 0
     for s in g["separatrices"]:
         assert s["inexact_transfers"] == 0
         assert axis_parallel_exactly(s)
@@ -334,6 +338,7 @@ def test_motorcycle_graph_flat_torus():
     g2 = ss.motorcycle_graph(Vn, Fn, UV2, FUV2)
     assert g2["counts"]["failed"] == 0 and g2["counts"]["inexact_transfers"] == 0 and g2["seeded"]
     assert all(s["end"] in ("closed_loop", "earlier_trace") for s in g2["separatrices"])
+    assert g2["layout"]["valid"] and g2["layout"]["quad_patches"] == g2["layout"]["patches"]
 
 
 def quarter_turns_at_interior_vertices(F, UV, FUV):

@@ -25,7 +25,8 @@ namespace IO {
  * \ingroup PkgSeamlessSnappingRef
  * draws the UV triangles of `tm` (grey; flipped ones red) and the separatrices of `g` in the charts of their
  * faces (blue; a trace that ended in an inconsistency orange, with a red circle at its end) as an SVG image,
- * `width` pixels wide. UV coordinates are rounded to double for drawing only.
+ * `width` pixels wide. When `g` has a patch layout, its polygons are filled by patch: quad patches in pastel
+ * colours (one per patch), the others in salmon. UV coordinates are rounded to double for drawing only.
  */
 template <class TriangleMesh, class HalfedgeUVMap>
 void write_motorcycle_graph_svg(std::ostream& os, const TriangleMesh& tm, HalfedgeUVMap uv,
@@ -46,6 +47,23 @@ void write_motorcycle_graph_svg(std::ostream& os, const TriangleMesh& tm, Halfed
   std::snprintf(buf, sizeof buf, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n",
                 width + 10, height + 10);
   os << buf << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  if(g.layout.status == SUCCESS) {
+    const Layout_mesh& lm = g.layout.mesh;
+    auto luv = lm.property_map<Layout_mesh::Halfedge_index, CGAL::Epick::Point_2>("h:uv").first;
+    auto patch = lm.property_map<Layout_mesh::Face_index, std::int32_t>("f:patch_id").first;
+    for(auto f : lm.faces()) {
+      const std::size_t p = std::size_t(get(patch, f));
+      if(g.layout.patches[p].is_quad())
+        std::snprintf(buf, sizeof buf, "<polygon fill=\"hsl(%d,45%%,84%%)\" stroke=\"none\" points=\"", int((p * 137) % 360));
+      else std::snprintf(buf, sizeof buf, "<polygon fill=\"#ff9c8c\" stroke=\"none\" points=\"");
+      os << buf;
+      for(auto h : CGAL::halfedges_around_face(lm.halfedge(f), lm)) {
+        std::snprintf(buf, sizeof buf, "%.2f,%.2f ", X(get(luv, h).x()), Y(get(luv, h).y()));
+        os << buf;
+      }
+      os << "\"/>\n";
+    }
+  }
   for(auto f : faces(tm)) {
     auto h = halfedge(f, tm);
     const auto a = get(uv, h), b = get(uv, next(h, tm)), c = get(uv, next(next(h, tm), tm));
