@@ -130,15 +130,16 @@ static void test_grid()
 // A flat n x n torus (each vertex (i, j) once, seams where the grid wraps, transitions: translations by
 // n): isolines close. From a vertex along +u the trace runs along n edges and closes at its start
 // corner; from the rational point (1/3, 1/7) along +v it closes after crossing 2n faces; both exactly.
-static void test_torus_closed_loops()
+// A flat n x n torus: vertex (i, j) once, corner UVs unwrapped (i, j) plus `noise` (uniform, seed 7);
+// returns the vertices row by row and the triangle (0,0), (1,0), (1,1) in f_start.
+static std::vector<vertex_descriptor> flat_torus(Mesh& m, UV_map& uv, int n, double noise, face_descriptor& f_start)
 {
-  const int n = 4;
-  Mesh m;
   std::vector<vertex_descriptor> vs;
   for(int j = 0; j < n; ++j)
     for(int i = 0; i < n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
-  UV_map uv = uv_of(m);
-  face_descriptor f_start;
+  uv = uv_of(m);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> e(-noise, noise);
   for(int j = 0; j < n; ++j)
     for(int i = 0; i < n; ++i) {
       const int I[4] = {i, i + 1, i + 1, i}, J[4] = {j, j, j + 1, j + 1};   // unwrapped corners a, b, c, d
@@ -148,10 +149,21 @@ static void test_torus_closed_loops()
         assert(f != Mesh::null_face());
         for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
           for(int c : t)
-            if(target(h, m) == vs[(J[c] % n) * n + I[c] % n]) put(uv, h, Point_2(I[c], J[c]));
-        if(i == 0 && j == 0 && t[2] == 2) f_start = f;     // the triangle (0,0), (1,0), (1,1)
+            if(target(h, m) == vs[(J[c] % n) * n + I[c] % n])
+              put(uv, h, Point_2(I[c] + (noise > 0 ? e(rng) : 0.), J[c] + (noise > 0 ? e(rng) : 0.)));
+        if(i == 0 && j == 0 && t[2] == 2) f_start = f;
       }
     }
+  return vs;
+}
+
+static void test_torus_closed_loops()
+{
+  const int n = 4;
+  Mesh m;
+  UV_map uv;
+  face_descriptor f_start;
+  const std::vector<vertex_descriptor> vs = flat_torus(m, uv, n, 0, f_start);
   Tracer tracer(m, uv);
   assert(tracer.status() == SS::SUCCESS && SS::is_exactly_seamless(m, uv));
   halfedge_descriptor corner;
@@ -371,18 +383,25 @@ static void print_inexact_graph(const Mesh& m, UV_map uv, const std::string& wha
   failures += g.failed;
 }
 
-static void test_bear_orbifold()
+// CGAL's bear with an Orbifold Tutte square map (3 farthest-point cones); false (and a note) without CGAL's data
+static bool bear_orbifold(Mesh& m, UV_map& uv, const std::string& what)
 {
   const fs::path p = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
-  Mesh m;
   if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), m)) {
-    std::cout << "trace: bear orbifold: SKIPPED (no " << p.string() << ")\n";
-    return;
+    std::cout << "trace: " << what << ": SKIPPED (no " << p.string() << ")\n";
+    return false;
   }
-  UV_map uv = uv_of(m);
+  uv = uv_of(m);
   std::string msg;
-  const auto cones = SS::internal::farthest_point_cones(m, 3);
-  assert(SS::internal::make_orbifold_tutte_uv(m, uv, cones, SMP::Square, msg) == SS::SUCCESS);
+  assert(SS::internal::make_orbifold_tutte_uv(m, uv, SS::internal::farthest_point_cones(m, 3), SMP::Square, msg) == SS::SUCCESS);
+  return true;
+}
+
+static void test_bear_orbifold()
+{
+  Mesh m;
+  UV_map uv;
+  if(!bear_orbifold(m, uv, "bear orbifold")) return;
   std::size_t failures = 0, inexact = 0;
   print_inexact_graph(m, uv, "bear orbifold Square", failures, inexact);
   assert(!SS::is_exactly_seamless(m, uv) && inexact > 0);   // the tracer sees the solver error at the cuts
@@ -398,15 +417,9 @@ static void test_bear_orbifold()
 // them, one of the rays of the first cone ends exactly at the second cone; after plain snapping they miss.
 static void test_connections_realized()
 {
-  const fs::path p = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
   Mesh m;
-  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), m)) {
-    std::cout << "trace: connections: SKIPPED (no " << p.string() << ")\n";
-    return;
-  }
-  UV_map uv = uv_of(m);
-  std::string msg;
-  assert(SS::internal::make_orbifold_tutte_uv(m, uv, SS::internal::farthest_point_cones(m, 3), SMP::Square, msg) == SS::SUCCESS);
+  UV_map uv;
+  if(!bear_orbifold(m, uv, "connections")) return;
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h)) continue;
@@ -476,23 +489,9 @@ static void test_cycle_closes()
 {
   const int n = 4;
   Mesh m;
-  std::vector<vertex_descriptor> vs;
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) vs.push_back(m.add_vertex(Point_3(i, j, 0)));
-  UV_map uv = uv_of(m);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> noise(-1e-9, 1e-9);
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const int I[4] = {i, i + 1, i + 1, i}, J[4] = {j, j, j + 1, j + 1};
-      for(const std::array<int, 3>& t : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
-        const face_descriptor f = m.add_face(vs[(J[t[0]] % n) * n + I[t[0]] % n], vs[(J[t[1]] % n) * n + I[t[1]] % n],
-                                             vs[(J[t[2]] % n) * n + I[t[2]] % n]);
-        for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
-          for(int c : t)
-            if(target(h, m) == vs[(J[c] % n) * n + I[c] % n]) put(uv, h, Point_2(I[c] + noise(rng), J[c] + noise(rng)));
-      }
-    }
+  UV_map uv;
+  face_descriptor f_start;
+  const std::vector<vertex_descriptor> vs = flat_torus(m, uv, n, 1e-9, f_start);
   connection_test::Constraint cycle;
   cycle.component = 1;
   for(int i = 0; i < n; ++i) cycle.path.push_back(CGAL::halfedge(vs[i], vs[(i + 1) % n], m).first);
