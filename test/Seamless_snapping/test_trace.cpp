@@ -252,9 +252,24 @@ static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Me
     const bool border = r.is_border(e);
     assert(border || get(patch_id.first, r.face(r.halfedge(e))) >= 0);
   }
+  // the layout graph: every arc a chain of arc/border edges from a node to a node, each such edge in one arc
+  assert(L.node_vertices.size() == L.nodes && L.arc_chains.size() == L.arcs);
+  std::size_t chain_edges = 0, border_edges = 0;
+  for(const auto& chain : L.arc_chains) {
+    assert(chain.size() >= 2);
+    assert(std::find(L.node_vertices.begin(), L.node_vertices.end(), chain.front()) != L.node_vertices.end());
+    assert(std::find(L.node_vertices.begin(), L.node_vertices.end(), chain.back()) != L.node_vertices.end());
+    for(std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      const auto h = CGAL::halfedge(chain[i], chain[i + 1], r);
+      assert(h.second && (get(is_arc.first, r.edge(h.first)) || r.is_border(r.edge(h.first))));
+      ++chain_edges;
+    }
+  }
+  for(auto e : r.edges()) border_edges += !get(is_arc.first, e) && r.is_border(e) ? 1 : 0;
   std::size_t traced = 0;
   for(const Trace& t : g.separatrices) traced += t.segments.empty() ? 0 : 1;
   assert(traced == 0 || arc_edges >= traced);
+  assert(chain_edges == arc_edges + border_edges);
   double refined3 = 0;                                           // convex planar polygons: fans
   for(auto f : r.faces()) {
     std::vector<Point_3> p;

@@ -91,6 +91,8 @@ struct Patch_layout
   std::size_t arcs = 0;                ///< chains of arc/border edges between nodes (closed chains without a node are not counted)
   int euler_characteristic = 0;        ///< nodes - arcs + patches
   int surface_euler_characteristic = 0;///< vertices - edges + faces of the traced mesh
+  std::vector<Layout_mesh::Vertex_index> node_vertices;              ///< the nodes, as vertices of `mesh`
+  std::vector<std::vector<Layout_mesh::Vertex_index> > arc_chains;   ///< every arc as the vertices of `mesh` from one node to the next along arc and border edges
   std::size_t unplaced_segments = 0;   ///< trace segments that fit no piece of their face (inexact maps only)
   CGAL::Gmpq uv_area;                  ///< UV area of the traced mesh, exact (sum over its faces)
 

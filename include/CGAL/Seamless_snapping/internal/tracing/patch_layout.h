@@ -297,6 +297,30 @@ private:
     }
   }
 
+  // the arcs as vertex chains from node to node along arc and border edges
+  void arc_chains()
+  {
+    std::vector<char> is_node(mesh_.number_of_vertices(), 0), used(mesh_.number_of_edges(), 0);
+    for(Layout_vertex_index v : L_.node_vertices) is_node[std::size_t(v)] = 1;
+    for(Layout_vertex_index v : L_.node_vertices)
+      for(Layout_halfedge_index h0 : CGAL::halfedges_around_source(v, mesh_)) {
+        if(!cuts(h0) || used[std::size_t(mesh_.edge(h0))]) continue;
+        std::vector<Layout_vertex_index> chain(1, v);
+        Layout_halfedge_index h = h0;
+        for(;;) {
+          used[std::size_t(mesh_.edge(h))] = 1;
+          const Layout_vertex_index w = mesh_.target(h);
+          chain.push_back(w);
+          if(is_node[std::size_t(w)]) break;
+          bool next = false;                               // w has degree 2: the other cut edge
+          for(Layout_halfedge_index g : CGAL::halfedges_around_source(w, mesh_))
+            if(cuts(g) && !used[std::size_t(mesh_.edge(g))]) { h = g; next = true; break; }
+          if(!next) break;
+        }
+        L_.arc_chains.push_back(std::move(chain));
+      }
+  }
+
   // the graph of arc and border edges: nodes, arcs, Euler characteristic of the layout
   void graph()
   {
@@ -314,9 +338,11 @@ private:
       const Corner_mesh& cm = map_.cm;
       const bool input_vertex = v < std::size_t(cm.n_vertices);
       const bool corner = input_vertex && (cm.vertex_on_border[v] ? map_.fan_quarter_turns[v] != 2 : map_.st.is_cone[v] != 0);
-      if(degree[v] != 2 || corner) ++L_.nodes;
+      if(degree[v] != 2 || corner) L_.node_vertices.push_back(Layout_vertex_index(std::uint32_t(v)));
     }
+    L_.nodes = L_.node_vertices.size();
     L_.arcs = graph_edges - graph_vertices + L_.nodes;
+    arc_chains();
     L_.euler_characteristic = int(L_.nodes) - int(L_.arcs) + int(L_.patches.size());
     const Corner_mesh& cm = map_.cm;
     L_.surface_euler_characteristic = cm.n_vertices - cm.n_edges + cm.n_faces;
