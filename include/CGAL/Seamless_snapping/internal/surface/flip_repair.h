@@ -58,6 +58,12 @@
 //    on both sides of the edge ab: one orientation is minus the other in every exact solution. In the
 //    input the first was positive, the second negative; snapping swapped them; the relaxed move swaps
 //    them back (no face ends worse than in the input).
+// 5. Joint moves, for faces made worse by snapping that 1.-4. cannot repair: a node move of 2. (radius
+//    0, 1, 2; each basis vector, then pairs, times +-m grid quanta) together with a group or cluster
+//    move of a vertex of the face, computed for the x of the node move and tested as one change;
+//    strict, then relaxed as in 4. Example (Directional dragon, plain snapping, face 3085): a sliver
+//    of area 0.12 square quanta between two node vertices next to a cone and a vertex of a cut
+//    branch; neither the node vertices nor the branch vertex can move alone.
 // Every candidate is only accepted after exact tests on the doubles that would be stored:
 //   - CGAL::orientation (exact predicate) on every face around a changed sector: none gets worse,
 //     at least one gets better (relaxed moves: see 4.);
@@ -65,7 +71,7 @@
 //     (and the pipeline checks every row again at the end, verify_stage).
 // So the number of bad faces decreases monotonically (relaxed moves decrease the deficit, which no
 // move increases) and exactness is never traded. Faces made worse by snapping
-// are repaired first (moves 1.-4.), then faces flipped in the input (moves 1. and 3.).
+// are repaired first (moves 1.-5.), then faces flipped in the input (moves 1. and 3.).
 // Bound: every moved coordinate stays within max_i |x_i - ubar_i| (the largest change made by
 // snapping) of its input value, so the repair never increases the maximal change.
 // What is left is explained: a face is *forced degenerate* when u_s - u_t = 0 for two of its
@@ -146,6 +152,7 @@ struct Flip_repair_result
   std::size_t moves = 0;                // accepted moves (all kinds)
   std::size_t node_moves = 0;           // of which moves of node vertices (local null space of C)
   std::size_t cluster_moves = 0;        // of which group moves with free neighbours, or relaxed (Flip_repair::cluster_move)
+  std::size_t joint_moves = 0;          // of the node moves, those with a group or cluster move (Flip_repair::try_joint_move)
   std::size_t relaxed_moves = 0;        // of these, moves that let faces fall back to their input orientation
   std::vector<int> unrepaired_faces;    // positive in the input, not on exit (Corner_mesh numbering), ascending
   std::size_t forced_degenerate = 0;    // of these, faces degenerate in every exact solution (forced_degenerate())
@@ -179,6 +186,9 @@ class Flip_repair
   std::vector<signed char> orient_;                // current orientation per face (exact)
   std::vector<signed char> input_;                 // orientation per face in the input ubar (exact)
   bool relaxed_ = false;                           // faces may fall back to their input orientation (see orientation_gain)
+  struct Change;
+  const Change* prefix_ = nullptr;                 // joint moves: the node move that x holds (try_joint_move)
+  std::vector<std::pair<int, double> > prefix_new_; // its new values
   // node moves
   const Reduced_system& rs;
   std::vector<std::size_t> vs_start; std::vector<int> vs_sector;   // vertex -> its sectors (CSR)
@@ -357,6 +367,15 @@ private:
       }
       relaxed_ = false;
       if(done) { ++r.moves; ++r.cluster_moves; r.relaxed_moves += relaxed; return true; }
+    }
+    // then node moves with a group or cluster move of a vertex of the face (joint moves), strict, then relaxed
+    // (not for faces degenerate in every exact solution: no move repairs them)
+    for(int relaxed = 0; relaxed < 2 && node_moves && !forced_degenerate(f); ++relaxed) {
+      relaxed_ = relaxed == 1;
+      bool done = false;
+      for(int radius = 0; radius < 3 && !done; ++radius) done = try_joint_move(f, radius, max_move);
+      relaxed_ = false;
+      if(done) { ++r.moves; ++r.node_moves; ++r.joint_moves; return true; }
     }
     return false;
   }
@@ -590,12 +609,64 @@ private:
     if(!std::isfinite(t[0]) || !std::isfinite(t[1]) || (t[0] == 0 && t[1] == 0)) return false;
 
     Change ch;
+    if(prefix_ != nullptr) ch.old = prefix_->old;          // a joint move: x already holds the node move
     for(int i = 0; i < int(g.m.size()); ++i) {
       double d[2];
       rotate_quarter_turns(g.m[i].k, t[0], t[1], d[0], d[1]);
       for(int c = 0; c < 2; ++c) ch.set(x, 2 * g.m[i].sector + c, x[2 * g.m[i].sector + c] + d[c]);
     }
-    return commit_if_better(ch, max_move, false);
+    const bool ok = commit_if_better(ch, max_move, false) > 0;
+    if(!ok && prefix_ != nullptr)                              // undone with the group move: apply the node move again
+      for(const std::pair<int, double>& v : prefix_new_) x[v.first] = v.second;
+    return ok;
+  }
+
+  // Joint moves, for faces made worse by snapping that 1.-4. cannot repair: a node move (as in
+  // try_node_move) together with a group or cluster move of a vertex of the face, computed for the
+  // node move's x and accepted as one change (every test on the union). Example (Directional dragon,
+  // plain snapping): a sliver between two node vertices next to a cone and a cut-branch vertex; the
+  // node vertices cannot move without flipping the sliver further, nor the branch vertex alone
+  // without flipping its other faces.
+  bool try_joint_move(int f, int radius, double max_move)
+  {
+    const Local_null_space& ns = local_null_space(f, radius);
+    if(!ns.ok) return false;
+    int order[3] = {-1, -1, -1};
+    bool any = false;
+    for(int i = 0; i < 3; ++i) { order[i] = group_of[face_sector(f, i)]; any = any || order[i] >= 0; }
+    if(!any) return false;
+    std::stable_sort(order, order + 3, [&](int a, int b) { return rank(a) < rank(b); });
+    std::vector<std::pair<int, long> > combo;
+    auto consider = [&]() {
+      Change pre;
+      if(!apply_node_move(ns, combo, pre) || pre.old.empty()) { pre.undo(x); return false; }
+      prefix_ = &pre;
+      prefix_new_.clear();
+      for(const std::pair<int, double>& v : pre.old) prefix_new_.emplace_back(v.first, x[v.first]);
+      bool done = false;
+      for(int i = 0; i < 3 && !done; ++i) {
+        if(order[i] < 0 || (i > 0 && order[i] == order[i - 1])) continue;
+        Group cluster;
+        done = try_move(groups[order[i]], f, max_move) ||
+               (cluster_move(groups[order[i]], max_move, cluster) && try_move(cluster, f, max_move));
+      }
+      prefix_ = nullptr;
+      if(!done) pre.undo(x);
+      return done;
+    };
+    const std::vector<std::vector<long> >& basis = ns.basis;
+    for(long m : {1L, 2L, 3L, 4L, 6L, 8L, 12L, 16L})
+      for(std::size_t i = 0; i < basis.size(); ++i)
+        for(long sign : {1L, -1L}) { combo.assign(1, std::make_pair(int(i), sign * m)); if(consider()) return true; }
+    for(long m : {1L, 2L, 4L})
+      for(std::size_t i = 0; i < basis.size(); ++i)
+        for(std::size_t j = i + 1; j < basis.size(); ++j)
+          for(long si : {1L, -1L}) for(long sj : {1L, -1L}) {
+            combo.assign(1, std::make_pair(int(i), si * m));
+            combo.emplace_back(int(j), sj * m);
+            if(consider()) return true;
+          }
+    return false;
   }
 
   // A tentative change of x: (variable, old value); x holds the new values while it is tested.
@@ -896,7 +967,7 @@ private:
         << "with rotation k != 0: (R^k - I)(u_s - u_t) = 0)";
     if(other >= 0)
       o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices (alone or with the free vertices next "
-        << "to them), of their node neighbours in C or of their branches within " << max_move / grid.quantum
+        << "to them), of their node neighbours in C or of their branches, alone or jointly, within " << max_move / grid.quantum
         << " grid steps keeps every row exact and makes no face worse than now or than in the input";
     return o.str();
   }
