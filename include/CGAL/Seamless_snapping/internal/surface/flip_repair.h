@@ -184,6 +184,7 @@ class Flip_repair
   std::vector<int> group_of;                       // per sector: group index, -1 = fixed
   std::vector<Group> groups;
   std::vector<signed char> orient_;                // current orientation per face (exact)
+  std::vector<unsigned char> joint_tries_;         // per face: passes that searched joint moves for it (at most 2)
   std::vector<signed char> input_;                 // orientation per face in the input ubar (exact)
   bool relaxed_ = false;                           // faces may fall back to their input orientation (see orientation_gain)
   struct Change;
@@ -311,6 +312,7 @@ public:
     input_ = face_orientations(cm, st, ubar);
     const std::vector<signed char>& input = input_;
     orient_ = face_orientations(cm, st, x);
+    joint_tries_.assign(orient_.size(), 0);
     r.input = count_orientations(input);
     r.before = count_orientations(orient_);
     r.introduced_before = count_orientations(orient_, &input);
@@ -369,7 +371,11 @@ private:
       if(done) { ++r.moves; ++r.cluster_moves; r.relaxed_moves += relaxed; return true; }
     }
     // then node moves with a group or cluster move of a vertex of the face (joint moves), strict, then relaxed
-    // (not for faces degenerate in every exact solution: no move repairs them)
+    // (not for faces degenerate in every exact solution: no move repairs them); the search is costly (every
+    // node move times every group move), so a face gets it in two passes at most: many flips (e.g. after
+    // random connection constraints) would otherwise repeat it in every pass
+    if(node_moves && joint_tries_[std::size_t(f)] >= 2) return false;
+    if(node_moves) ++joint_tries_[std::size_t(f)];
     for(int relaxed = 0; relaxed < 2 && node_moves && !forced_degenerate(f); ++relaxed) {
       relaxed_ = relaxed == 1;
       bool done = false;
