@@ -107,6 +107,12 @@ inline Exact_uv lerp(const Exact_uv& a, const Exact_uv& b, const FT& lambda)
   return Exact_uv{a.u + lambda * (b.u - a.u), a.v + lambda * (b.v - a.v)};
 }
 
+// The parameter lambda of a point p of the line through a != b: p = lerp(a, b, lambda).
+inline FT lerp_parameter(const Exact_uv& a, const Exact_uv& b, const Exact_uv& p)
+{
+  return a.u != b.u ? (p.u - a.u) / (b.u - a.u) : (p.v - a.v) / (b.v - a.v);
+}
+
 } // namespace tracing
 } // namespace internal
 } // namespace Seamless_snapping

@@ -109,22 +109,15 @@ private:
   // parameter along the edge_halfedge of the edge of h, of the point p of h's side (chart of face(h))
   FT edge_parameter(int h, const Exact_uv& p) const
   {
-    const Exact_uv A = corner_uv(cm_, cm_.prev[h]), B = corner_uv(cm_, h);
-    const FT t = A.u != B.u ? (p.u - A.u) / (B.u - A.u) : (p.v - A.v) / (B.v - A.v);
+    const FT t = lerp_parameter(corner_uv(cm_, cm_.prev[h]), corner_uv(cm_, h), p);
     return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : FT(1) - t;
   }
 
   // where the point p of the closed UV triangle of face f lies
   Place place(int f, const Exact_uv& p) const
   {
-    for(int i = 0; i < 3; ++i)
-      if(corner_uv(cm_, corner(f, i)) == p) return Place{AT_VERTEX, corner(f, i), FT(0)};
-    for(int i = 0; i < 3; ++i) {
-      const int h = corner(f, i);
-      if(CGAL::is_zero(orientation_determinant(corner_uv(cm_, cm_.prev[h]), corner_uv(cm_, h), p)))
-        return Place{ON_EDGE, h, edge_parameter(h, p)};
-    }
-    return Place{IN_FACE, -1, FT(0)};
+    const Raw_point r = locate_in_face(cm_, map_.face_halfedge[std::size_t(f)], p);
+    return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0)};
   }
 
   int vertex_id(int f, const Exact_uv& p)

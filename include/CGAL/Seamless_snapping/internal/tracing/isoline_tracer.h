@@ -71,6 +71,18 @@ struct Raw_point
   Exact_uv uv;         // in the chart of the segment's face
 };
 
+// location of a point x of the closed UV triangle of face(h): a corner (h, next, next-next, in this
+// order) it equals, else a side it lies on (its halfedge), else the interior
+inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x)
+{
+  const int c[3] = {h, cm.next[h], cm.next[cm.next[h]]};
+  for(int i = 0; i < 3; ++i) if(corner_uv(cm, c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
+  for(int j = 0; j < 3; ++j)
+    if(CGAL::is_zero(orientation_determinant(corner_uv(cm, cm.prev[c[j]]), corner_uv(cm, c[j]), x)))
+      return Raw_point{ON_EDGE, c[j], x};
+  return Raw_point{IN_FACE, -1, x};
+}
+
 struct Raw_segment
 {
   int face = -1;
@@ -184,8 +196,7 @@ public:
       if(cm().is_border_halfedge(cm().opp[e]))
         return finish(r, Trace_end::INVALID_START, "the start direction leaves the mesh through a border edge");
       const Exact_uv A = corner_uv(cm(), cm().prev[e]), B = corner_uv(cm(), e);
-      const FT lambda = (A.u != B.u) ? (p.u - A.u) / (B.u - A.u) : (p.v - A.v) / (B.v - A.v);
-      const Edge_transfer tr = transfer_through_edge(cm(), map.rot, e, p, lambda, r.m);
+      const Edge_transfer tr = transfer_through_edge(cm(), map.rot, e, p, lerp_parameter(A, B, p), r.m);
       if(tr.kind != TRANSFER_EDGE)
         return finish(r, Trace_end::INVALID_START, "the start point does not continue across its edge");
       r.face_h = cm().opp[e]; r.p = tr.point; r.m = tr.m; r.loc = Raw_point{ON_EDGE, cm().opp[e], tr.point};
@@ -246,7 +257,7 @@ public:
       }
     if(stopped) {
       const Exact_uv x = advance(r.p, r.m, stop_at);
-      if(CGAL::is_positive(stop_at)) push_segment(r, f, locate(r.face_h, x));
+      if(CGAL::is_positive(stop_at)) push_segment(r, f, locate_in_face(cm(), r.face_h, x));
       r.hit_trace = hit;
       return finish(r, stop, stop == Trace_end::EARLIER_TRACE ? "T-junction with trace " + std::to_string(hit) : "");
     }
@@ -317,17 +328,6 @@ private:
       }
     }
     r.segments.push_back(std::move(s));
-  }
-
-  // location of a point x of the closed triangle of face(h)
-  Raw_point locate(int h, const Exact_uv& x) const
-  {
-    const int c[3] = {h, cm().next[h], cm().next[cm().next[h]]};
-    for(int i = 0; i < 3; ++i) if(corner_uv(cm(), c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
-    for(int j = 0; j < 3; ++j)
-      if(CGAL::is_zero(orientation_determinant(corner_uv(cm(), cm().prev[c[j]]), corner_uv(cm(), c[j]), x)))
-        return Raw_point{ON_EDGE, c[j], x};
-    return Raw_point{IN_FACE, -1, x};
   }
 
   // the trace reached the vertex target(corner) in the chart of face(corner), direction m
