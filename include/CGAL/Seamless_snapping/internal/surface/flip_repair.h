@@ -96,6 +96,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -345,10 +346,8 @@ private:
   bool try_face(int f, double max_move, bool node_moves, Flip_repair_result& r)
   {
     if(orient_[f] == CGAL::POSITIVE) return false;
-    // prefer groups that move freely, then align, then cut-branch groups
-    int order[3] = {-1, -1, -1};
-    for(int i = 0; i < 3; ++i) order[i] = group_of[face_sector(f, i)];
-    std::stable_sort(order, order + 3, [&](int a, int b) { return rank(a) < rank(b); });
+    int order[3];
+    face_groups(f, order);
     for(int g : order) {
       if(g < 0) continue;
       if(try_move(groups[g], f, max_move)) { ++r.moves; return true; }
@@ -410,6 +409,41 @@ private:
   }
 
   int rank(int g) const { return g < 0 ? 3 : (groups[g].kind == 0 ? 0 : (groups[g].kind == 2 ? 1 : 2)); }
+
+  // the move groups of the corners of face f (-1: fixed), those that move freely first, then align,
+  // then cut-branch groups
+  void face_groups(int f, int order[3]) const
+  {
+    for(int i = 0; i < 3; ++i) order[i] = group_of[face_sector(f, i)];
+    std::stable_sort(order, order + 3, [&](int a, int b) { return rank(a) < rank(b); });
+  }
+
+  // Node-move candidates, in the order of the search: visit(combo) for one basis vector times +-m,
+  // m in `scales` (each_single_move), or two basis vectors times +-m each (each_pair_move); stops
+  // and returns true at the first visit that returns true.
+  template <class Visit>
+  static bool each_single_move(std::size_t n, std::initializer_list<long> scales, Visit visit)
+  {
+    std::vector<std::pair<int, long> > combo;
+    for(long m : scales)
+      for(std::size_t i = 0; i < n; ++i)
+        for(long sign : {1L, -1L}) { combo.assign(1, std::make_pair(int(i), sign * m)); if(visit(combo)) return true; }
+    return false;
+  }
+  template <class Visit>
+  static bool each_pair_move(std::size_t n, std::initializer_list<long> scales, Visit visit)
+  {
+    std::vector<std::pair<int, long> > combo;
+    for(long m : scales)
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = i + 1; j < n; ++j)
+          for(long si : {1L, -1L}) for(long sj : {1L, -1L}) {
+            combo.assign(1, std::make_pair(int(i), si * m));
+            combo.emplace_back(int(j), sj * m);
+            if(visit(combo)) return true;
+          }
+    return false;
+  }
 
   // the faces of the group's fans, with their moved corner
   void group_faces(const Group& g, std::vector<int>& corners, std::vector<int>& member) const
@@ -637,13 +671,10 @@ private:
   {
     const Local_null_space& ns = local_null_space(f, radius);
     if(!ns.ok) return false;
-    int order[3] = {-1, -1, -1};
-    bool any = false;
-    for(int i = 0; i < 3; ++i) { order[i] = group_of[face_sector(f, i)]; any = any || order[i] >= 0; }
-    if(!any) return false;
-    std::stable_sort(order, order + 3, [&](int a, int b) { return rank(a) < rank(b); });
-    std::vector<std::pair<int, long> > combo;
-    auto consider = [&]() {
+    int order[3];
+    face_groups(f, order);
+    if(order[0] < 0) return false;                       // no corner can move (fixed ones sort last)
+    auto consider = [&](const std::vector<std::pair<int, long> >& combo) {
       Change pre;
       if(!apply_node_move(ns, combo, pre) || pre.old.empty()) { pre.undo(x); return false; }
       prefix_ = &pre;
@@ -660,19 +691,8 @@ private:
       if(!done) pre.undo(x);
       return done;
     };
-    const std::vector<std::vector<long> >& basis = ns.basis;
-    for(long m : {1L, 2L, 3L, 4L, 6L, 8L, 12L, 16L})
-      for(std::size_t i = 0; i < basis.size(); ++i)
-        for(long sign : {1L, -1L}) { combo.assign(1, std::make_pair(int(i), sign * m)); if(consider()) return true; }
-    for(long m : {1L, 2L, 4L})
-      for(std::size_t i = 0; i < basis.size(); ++i)
-        for(std::size_t j = i + 1; j < basis.size(); ++j)
-          for(long si : {1L, -1L}) for(long sj : {1L, -1L}) {
-            combo.assign(1, std::make_pair(int(i), si * m));
-            combo.emplace_back(int(j), sj * m);
-            if(consider()) return true;
-          }
-    return false;
+    return each_single_move(ns.basis.size(), {1, 2, 3, 4, 6, 8, 12, 16}, consider) ||
+           each_pair_move(ns.basis.size(), {1, 2, 4}, consider);
   }
 
   // A tentative change of x: (variable, old value); x holds the new values while it is tested.
@@ -870,30 +890,18 @@ private:
   {
     const Local_null_space& ns = local_null_space(f, radius);
     if(!ns.ok) return false;
-    const std::vector<std::vector<long> >& basis = ns.basis;
-
     // the best candidate: largest gain, then the smallest move (the order of the search)
-    std::vector<std::pair<int, long> > best, combo;
+    std::vector<std::pair<int, long> > best;
     long best_gain = 0;
-    auto consider = [&]() {
+    auto consider = [&](const std::vector<std::pair<int, long> >& combo) {
       Change ch;
       const bool ok = apply_node_move(ns, combo, ch);
       const long gain = ok ? commit_if_better(ch, max_move, true) : (ch.undo(x), -1);
       if(gain > best_gain) { best_gain = gain; best = combo; }
+      return false;                                      // try them all
     };
-    const long scales[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128};
-    for(long m : scales)
-      for(std::size_t i = 0; i < basis.size(); ++i)
-        for(long sign : {1L, -1L}) { combo.assign(1, std::make_pair(int(i), sign * m)); consider(); }
-    if(best_gain == 0 && basis.size() > 1)
-      for(long m : {1L, 2L, 4L, 8L, 16L})
-        for(std::size_t i = 0; i < basis.size(); ++i)
-          for(std::size_t j = i + 1; j < basis.size(); ++j)
-            for(long si : {1L, -1L}) for(long sj : {1L, -1L}) {
-              combo.assign(1, std::make_pair(int(i), si * m));
-              combo.emplace_back(int(j), sj * m);
-              consider();
-            }
+    each_single_move(ns.basis.size(), {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 64, 128}, consider);
+    if(best_gain == 0) each_pair_move(ns.basis.size(), {1, 2, 4, 8, 16}, consider);
     if(best_gain == 0) return false;
     Change ch;
     if(!apply_node_move(ns, best, ch)) { ch.undo(x); return false; }
@@ -931,6 +939,8 @@ private:
     std::sort(cols.begin(), cols.end());
     cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
     if(local.empty() || cols.size() > 256) return false;
+    for(int i = 0; i < 3; ++i)
+      if(face_sector(f, i) == face_sector(f, (i + 1) % 3)) return true;   // two corners in one sector
     auto column = [&](int var) { return std::size_t(std::lower_bound(cols.begin(), cols.end(), var) - cols.begin()); };
     const std::size_t nc = cols.size() + 1;            // the last column: the right-hand side b
     std::vector<long> a(local.size() * nc, 0);
@@ -939,8 +949,6 @@ private:
       for(std::size_t e = r.start[local[i].second]; e < r.start[local[i].second + 1]; ++e) a[i * nc + column(r.col[e])] += r.coef[e];
       a[i * nc + nc - 1] = r.rhs[std::size_t(local[i].second)];
     }
-    for(int i = 0; i < 3; ++i)
-      if(face_sector(f, i) == face_sector(f, (i + 1) % 3)) return true;
     const Exact_row_space row_space(local.size(), nc, a);
     for(int i = 0; i < 3; ++i) {
       const int s = face_sector(f, i), t = face_sector(f, (i + 1) % 3);
