@@ -2,7 +2,7 @@
 # order for the IRREF of the exact projection (include/.../internal/projection/column_ordering.h).
 # Without it the package still builds and works; the IRREF then uses its own pivot rule alone,
 # which fills in much more on per-corner seam systems (see the manual, "Performance").
-option(SEAMLESS_SNAPPING_USE_COLAMD "Use SuiteSparse COLAMD to order the IRREF's pivots, when found (experimental)" OFF)
+option(SEAMLESS_SNAPPING_USE_COLAMD "Use SuiteSparse COLAMD to order the IRREF's pivots, when found" ON)
 function(seamless_snapping_use_colamd target)
   if(NOT SEAMLESS_SNAPPING_USE_COLAMD)
     return()

@@ -228,6 +228,11 @@ public:
   /// @}
 
 private:
+  internal::Pivot_order pivot_order() const
+  {
+    return m_options.fill_reducing_order ? internal::AUTOMATIC_PIVOT_ORDER : internal::PIVOT_RULE;
+  }
+
   // x̄ satisfies every row exactly (and, with a given grid, its constrained values lie on that grid,
   // as a caller sharing the grid relies on)
   bool input_is_exact(const std::vector<double>& xb) const
@@ -290,7 +295,7 @@ private:
       if(!need_gmp) {
         try {
           m_irref64.reset(new internal::Irref<std::int64_t>());
-          m_status = internal::compute_irref(m_system, *m_irref64, m_message);
+          m_status = internal::compute_irref(m_system, *m_irref64, m_message, pivot_order());
         } catch(const internal::Integer_overflow&) {
           m_irref64.reset();
           need_gmp = true;
@@ -298,7 +303,7 @@ private:
       }
       if(need_gmp) {
         m_irrefz.reset(new internal::Irref<CGAL::Gmpz>());
-        m_status = internal::compute_irref(m_system, *m_irrefz, m_message);
+        m_status = internal::compute_irref(m_system, *m_irrefz, m_message, pivot_order());
         // When the result fits in 64 bits (e.g. forced Gmpz on a small system) evaluation is faster in int64.
         std::unique_ptr<internal::Irref<std::int64_t>> narrow(new internal::Irref<std::int64_t>());
         if(m_status == SUCCESS && !m_options.force_multiprecision && internal::narrow_irref(*m_irrefz, *narrow)) {

@@ -131,6 +131,9 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
   options.delta_exponent = grid.K;
   options.minimal_change = minimal_change;   // x is the L2-closest point of the full system (step 3a): the
                                              // core's own projection only refines how it is rounded
+  options.fill_reducing_order = false;       // node systems are numbered by sectors, where the pivot rule fills in
+                                             // little; with COLAMD's order (another choice of free variables) the
+                                             // dragon's repair left 2 unforced degenerate triangles, not 0
   Exact_constraint_projection projection(options);
   Status s = projection.initialize(rows.size(), vars.size(), triplets, rows.rhs);
   const Irref_statistics& stats = projection.statistics();
