@@ -37,6 +37,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -245,6 +246,7 @@ private:
     m_too_large = false;
     m_stamp = 0;
     // Rows are read backwards and pushed at once: the queue's buckets are stacks, so lower indices come out first.
+    m_ordered.clear();
     m_buckets.assign(2 * NNZ_BUCKETS, std::vector<std::uint32_t>());
     m_buckets[std::min<std::uint32_t>(4, NNZ_BUCKETS - 1)].reserve(sys.n_rows);   // seamless rows: 4 unit entries
     m_cursor = 0;
@@ -369,8 +371,27 @@ private:
     for(std::uint32_t q = 0; q < row.size; ++q) if(Ops::is_unit(row.data[q].val)) { unit = true; break; }
     return (unsigned char)((unit ? 0 : NNZ_BUCKETS) + std::min(row.size, NNZ_BUCKETS - 1));
   }
+  // The ordered pass's queue: rows whose first column in the order comes latest go first (a heap
+  // keyed by NIL - position; entries whose row changed meanwhile are stale and skipped by pop()).
+  // Each row still takes its first column as the pivot, so the pivots are mostly those of any other
+  // row order (on the per-corner seam systems measured, the same IRREF as with the nonzero-count
+  // queue), but the rows eliminated early then hold the columns of the end of the order, whose
+  // pivots meet few other rows: fewer row updates (duck_miq_8 226k -> 169k, dragon-full 12.1k ->
+  // 9.8k), and far fewer than in order of position, where the front of rows keeps growing.
+  std::uint32_t ordered_key(const Row& row) const
+  {
+    std::uint32_t first = NIL;
+    for(std::uint32_t q = 0; q < row.size; ++q) first = std::min(first, m_position[row.data[q].col]);
+    return NIL - first;
+  }
   void push(std::uint32_t i)
   {
+    if(!m_position.empty()) {
+      m_rows[i].key = 0;                     // the window's key check does not apply (see pop())
+      m_ordered.push_back(std::make_pair(ordered_key(m_rows[i]), i));
+      std::push_heap(m_ordered.begin(), m_ordered.end(), std::greater<std::pair<std::uint32_t, std::uint32_t> >());
+      return;
+    }
     const unsigned char k = key(m_rows[i]);
     m_rows[i].key = k;
     m_buckets[k].push_back(i);
@@ -378,6 +399,16 @@ private:
   }
   bool pop(std::uint32_t& out)
   {
+    if(!m_position.empty()) {
+      while(!m_ordered.empty()) {
+        std::pop_heap(m_ordered.begin(), m_ordered.end(), std::greater<std::pair<std::uint32_t, std::uint32_t> >());
+        const std::pair<std::uint32_t, std::uint32_t> top = m_ordered.back();
+        m_ordered.pop_back();
+        const Row& row = m_rows[top.second];
+        if(row.state == ACTIVE && ordered_key(row) == top.first) { out = top.second; return true; }   // else stale
+      }
+      return false;
+    }
     while(m_cursor < m_buckets.size()) {
       std::vector<std::uint32_t>& bucket = m_buckets[m_cursor];
       while(!bucket.empty()) {
@@ -597,6 +628,7 @@ private:
   std::size_t m_arena_block = std::size_t(1) << 16;    // entries per block: a quarter of the input, at least 2^16
   std::size_t m_nonzeros = 0;                          // in the rows (active, pivot and zero)
   std::vector<std::uint32_t> m_position;               // fill-reducing column order, if any (column_ordering.h)
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > m_ordered;   // the ordered pass's queue: (ordered_key, row)
   bool m_growth_limit = false, m_too_large = false;    // ordered pass: stop once an entry exceeds GROWTH_LIMIT (or a pivot 2)
   const Int GROWTH_LIMIT = Ops::from_int64(std::int64_t(1) << 20);
 };
