@@ -136,15 +136,17 @@ bool front_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vect
   return true;
 }
 
-// position[c] = place of column c in the order (columns in no row come last). Returns false, with
-// `position` empty, when no order is available (no COLAMD, or it failed, e.g. out of memory).
+// position[c] = place of column c in the order (columns in no row come last); `front`: whether it
+// is the front order. Returns false, with `position` empty, when no order is available (no COLAMD,
+// or it failed, e.g. out of memory).
 template <typename Int>
-bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vector<std::uint32_t>& position)
+bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vector<std::uint32_t>& position, bool& front)
 {
   position.clear();
+  front = false;
 #ifdef CGAL_SEAMLESS_SNAPPING_HAS_COLAMD
   try {
-    if(front_column_order(rows, n_cols, position)) return true;
+    if(front_column_order(rows, n_cols, position)) { front = true; return true; }
   } catch(const std::bad_alloc&) {
     return false;
   }

@@ -173,8 +173,8 @@ public:
     const std::size_t spent = out.eliminations;
     out = Irref<Int>();
     out.eliminations = spent;                          // every row update performed, both passes
-    if(sys.fits_int64) fill_reducing_column_order(sys.rows64, sys.n_cols, m_position);   // none: the pivot rule alone
-    else               fill_reducing_column_order(sys.rowsz, sys.n_cols, m_position);
+    if(sys.fits_int64) fill_reducing_column_order(sys.rows64, sys.n_cols, m_position, m_latest_first);   // none: the pivot rule alone
+    else               fill_reducing_column_order(sys.rowsz, sys.n_cols, m_position, m_latest_first);
     load(sys);
     m_growth_limit = !m_position.empty();
     st = eliminate(out, message, unlimited, over_budget);
@@ -184,6 +184,7 @@ public:
       out = Irref<Int>();
       out.eliminations = spent_too;
       m_position.clear();
+      m_latest_first = false;
       load(sys);
       st = eliminate(out, message, unlimited, over_budget);
     }
@@ -371,13 +372,15 @@ private:
     for(std::uint32_t q = 0; q < row.size; ++q) if(Ops::is_unit(row.data[q].val)) { unit = true; break; }
     return (unsigned char)((unit ? 0 : NNZ_BUCKETS) + std::min(row.size, NNZ_BUCKETS - 1));
   }
-  // The ordered pass's queue: rows whose first column in the order comes latest go first (a heap
+  // The front order's queue: rows whose first column in the order comes latest go first (a heap
   // keyed by NIL - position; entries whose row changed meanwhile are stale and skipped by pop()).
   // Each row still takes its first column as the pivot, so the pivots are mostly those of any other
-  // row order (on the per-corner seam systems measured, the same IRREF as with the nonzero-count
-  // queue), but the rows eliminated early then hold the columns of the end of the order, whose
-  // pivots meet few other rows: fewer row updates (duck_miq_8 226k -> 169k, dragon-full 12.1k ->
-  // 9.8k), and far fewer than in order of position, where the front of rows keeps growing.
+  // row order (on the systems measured, the same IRREF as with the nonzero-count queue), but the
+  // rows eliminated early then hold the columns of the end of the order, whose pivots meet few
+  // other rows: with the front order 215k -> 99k row updates on duck_miq_8 (init 1075 -> 521 ms);
+  // in order of position the front of rows keeps growing (duck > 300 s). With COLAMD's order it
+  // saves updates too (duck 226k -> 169k, dragon-full 12.1k -> 9.8k) but no time (dragon: +20%,
+  // the heap), so the nonzero-count queue stays there.
   std::uint32_t ordered_key(const Row& row) const
   {
     std::uint32_t first = NIL;
@@ -386,7 +389,7 @@ private:
   }
   void push(std::uint32_t i)
   {
-    if(!m_position.empty()) {
+    if(m_latest_first) {
       m_rows[i].key = 0;                     // the window's key check does not apply (see pop())
       m_ordered.push_back(std::make_pair(ordered_key(m_rows[i]), i));
       std::push_heap(m_ordered.begin(), m_ordered.end(), std::greater<std::pair<std::uint32_t, std::uint32_t> >());
@@ -399,7 +402,7 @@ private:
   }
   bool pop(std::uint32_t& out)
   {
-    if(!m_position.empty()) {
+    if(m_latest_first) {
       while(!m_ordered.empty()) {
         std::pop_heap(m_ordered.begin(), m_ordered.end(), std::greater<std::pair<std::uint32_t, std::uint32_t> >());
         const std::pair<std::uint32_t, std::uint32_t> top = m_ordered.back();
@@ -628,7 +631,8 @@ private:
   std::size_t m_arena_block = std::size_t(1) << 16;    // entries per block: a quarter of the input, at least 2^16
   std::size_t m_nonzeros = 0;                          // in the rows (active, pivot and zero)
   std::vector<std::uint32_t> m_position;               // fill-reducing column order, if any (column_ordering.h)
-  std::vector<std::pair<std::uint32_t, std::uint32_t> > m_ordered;   // the ordered pass's queue: (ordered_key, row)
+  bool m_latest_first = false;                         // the order is the front order: rows in m_ordered
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > m_ordered;   // the front order's queue: (ordered_key, row)
   bool m_growth_limit = false, m_too_large = false;    // ordered pass: stop once an entry exceeds GROWTH_LIMIT (or a pivot 2)
   const Int GROWTH_LIMIT = Ops::from_int64(std::int64_t(1) << 20);
 };
