@@ -8,14 +8,15 @@
 #                 --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
 #                 on 20000 inputs with a fixed seed from generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
-# Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_CHECKS=0 leaves
+# Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_BUILD_BENCHMARKS=ON also builds
+# benchmark/ (off here: tables, not tests; scripts/build.sh builds them); SEAMLESS_SNAPPING_CHECKS=0 leaves
 # out the sanitizer and fuzz builds (a quick local run). Any failure makes the script exit non-zero.
 set -euo pipefail
 SECONDS=0
 phase() { echo "test: [$((SECONDS / 60))m$((SECONDS % 60))s] $*"; }   # elapsed time in the CI log
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 phase "Release build"
-bash "$root/scripts/build.sh"
+SEAMLESS_SNAPPING_BUILD_BENCHMARKS="${SEAMLESS_SNAPPING_BUILD_BENCHMARKS:-OFF}" bash "$root/scripts/build.sh"
 build="${SEAMLESS_SNAPPING_BUILD_DIR:-$root/build}"
 build="$(cd "$build" && pwd)"
 jobs="$(nproc)"
