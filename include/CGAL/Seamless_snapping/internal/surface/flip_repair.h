@@ -155,7 +155,6 @@ struct Flip_repair_result
   std::size_t cluster_moves = 0;        // of which group moves with free neighbours, or relaxed (Flip_repair::cluster_move)
   std::size_t joint_moves = 0;          // of the node moves, those with a group or cluster move (Flip_repair::try_joint_move)
   std::size_t joint_candidates = 0;     // node moves tried as the first half of a joint move (the search's cost)
-  bool joint_budget_spent = false;      // the joint-move search stopped at Flip_repair::joint_budget candidates
   std::size_t relaxed_moves = 0;        // of these, moves that let faces fall back to their input orientation
   std::vector<int> unrepaired_faces;    // positive in the input, not on exit (Corner_mesh numbering), ascending
   std::size_t forced_degenerate = 0;    // of these, faces degenerate in every exact solution (forced_degenerate())
@@ -194,6 +193,7 @@ class Flip_repair
   // joint moves found; Directional's dragon needs 6 (default mode) and tries 4.1-4.5k without success in the
   // other runs. The budget keeps a repair below about a second; what it leaves is reported (explain()).
   static constexpr std::size_t joint_budget = 20000;
+  bool joint_budget_spent() const { return joint_candidates_ >= joint_budget; }
   std::vector<signed char> input_;                 // orientation per face in the input ubar (exact)
   bool relaxed_ = false;                           // faces may fall back to their input orientation (see orientation_gain)
   struct Change;
@@ -342,12 +342,11 @@ public:
       if(!progress) break;
     }
     r.joint_candidates = joint_candidates_;
-    r.joint_budget_spent = joint_candidates_ >= joint_budget;
     r.after = count_orientations(orient_);
     r.introduced_after = count_orientations(orient_, &input);
     for(int f = 0; f < cm.n_faces; ++f)
       if(input[f] == CGAL::POSITIVE && orient_[f] != CGAL::POSITIVE) r.unrepaired_faces.push_back(f);
-    if(!r.unrepaired_faces.empty()) r.reasons = explain(r.unrepaired_faces, limit, r.joint_budget_spent);
+    if(!r.unrepaired_faces.empty()) r.reasons = explain(r.unrepaired_faces, limit);
     for(int f : r.unrepaired_faces) r.forced_degenerate += forced_degenerate(f) ? 1 : 0;   // cached by explain()
     return r;
   }
@@ -384,7 +383,7 @@ private:
     // node move times every group move), so a face gets it in two passes at most: many flips (e.g. after
     // random connection constraints) would otherwise repeat it in every pass; and a repair tries at most
     // joint_budget candidates in all
-    if(node_moves && (joint_tries_[std::size_t(f)] >= 2 || joint_candidates_ >= joint_budget)) return false;
+    if(node_moves && (joint_tries_[std::size_t(f)] >= 2 || joint_budget_spent())) return false;
     if(node_moves) ++joint_tries_[std::size_t(f)];
     for(int relaxed = 0; relaxed < 2 && node_moves && !forced_degenerate(f); ++relaxed) {
       relaxed_ = relaxed == 1;
@@ -686,7 +685,7 @@ private:
     face_groups(f, order);
     if(order[0] < 0) return false;                       // no corner can move (fixed ones sort last)
     auto consider = [&](const std::vector<std::pair<int, long> >& combo) {
-      if(joint_candidates_ >= joint_budget) return true;             // stops the enumeration (not a move)
+      if(joint_budget_spent()) return true;                          // stops the enumeration (not a move)
       ++joint_candidates_;
       Change pre;
       if(!apply_node_move(ns, combo, pre) || pre.old.empty()) { pre.undo(x); return false; }
@@ -706,7 +705,7 @@ private:
     };
     const bool stopped = each_single_move(ns.basis.size(), {1, 2, 3, 4, 6, 8, 12, 16}, consider) ||
                          each_pair_move(ns.basis.size(), {1, 2, 4}, consider);
-    return stopped && joint_candidates_ < joint_budget;   // at the budget: stopped without a move
+    return stopped && !joint_budget_spent();              // at the budget: stopped without a move
   }
 
   // A tentative change of x: (variable, old value); x holds the new values while it is tested.
@@ -979,7 +978,7 @@ private:
   }
 
   // why the faces positive in the input and not at the end could not be repaired
-  std::string explain(const std::vector<int>& faces, double max_move, bool joint_budget_spent) const
+  std::string explain(const std::vector<int>& faces, double max_move) const
   {
     std::size_t forced = 0;
     int other = -1;
@@ -997,7 +996,7 @@ private:
       o << (forced > 0 ? "; " : "") << "face " << other << ": no move of its vertices (alone or with the free vertices next "
         << "to them), of their node neighbours in C or of their branches, alone or jointly, within " << max_move / grid.quantum
         << " grid steps keeps every row exact and makes no face worse than now or than in the input"
-        << (joint_budget_spent ? " (joint moves: the search stopped at its budget of " + std::to_string(joint_budget) +
+        << (joint_budget_spent() ? " (joint moves: the search stopped at its budget of " + std::to_string(joint_budget) +
                                  " candidates)" : std::string());
     return o.str();
   }
