@@ -54,6 +54,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -976,6 +977,32 @@ void test_pivot_order()
   }
 }
 
+// Alg. 4 (makeDIV) in int64 for small divisors: the same grid integer as the multiprecision one, on
+// values near the range ends, halfway cases and ordinary ones, on fine and coarse grids.
+void test_make_div_int64()
+{
+  std::cout << "== makeDIV: int64 path against Gmpz" << std::endl;
+  std::mt19937_64 rng(5);
+  std::size_t compared = 0;
+  for(int K : { -1022, -40, 0, 1, 30, 1023 }) {
+    const SS::internal::Fixed_point_grid grid(K);
+    const double max_x = grid.delta * (1 - std::ldexp(1., -52));                 // largest double below delta
+    for(std::int64_t l : { std::int64_t(1), std::int64_t(2), std::int64_t(3), std::int64_t(4), std::int64_t(12), std::int64_t(1) << 20 }) {
+      std::vector<double> xs = { 0., max_x, -max_x, grid.quantum * double(l) * 0.5, -grid.quantum * double(l) * 0.5,
+                                 grid.quantum * (double(l) * 7 + double(l) / 2), -grid.quantum * 1.5 };
+      for(int t = 0; t < 200; ++t) xs.push_back(std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), K - int(rng() % 60)));
+      for(double x : xs) {
+        std::int64_t z_small = 0, z_big = 0;
+        const bool a = SS::internal::make_div(x, grid, l, z_small);
+        const bool b = SS::internal::make_div(x, grid, CGAL::Gmpz(std::to_string(l)), CGAL::Gmpz(0), z_big);
+        assert(a == b);
+        if(a) { assert(z_small == z_big && z_small % l == 0); ++compared; }
+      }
+    }
+  }
+  std::cout << "  " << compared << " values: identical" << std::endl;
+}
+
 } // namespace
 
 // Eigen vectors in and out: the same result as with std::vector, bit for bit; on failure the output
@@ -1016,6 +1043,7 @@ int main(int argc, char** argv)
   test_regressions();
   test_eigen_vectors();
   test_pivot_order();
+  test_make_div_int64();
   std::cout << "test_projection: all tests passed in " << ms_since(t0) / 1000. << " s" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -77,6 +77,22 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, const CGAL::Gmpz
   return false;
 }
 
+// make_div() for z0 = 0 and 0 < l <= 2^20 (the common case: pivots 2 or 4, b = 0), in int64: the
+// same z without multiprecision numbers (|2X + l| < 2^54, |(q + 1) l| < 2^53).
+inline bool make_div(double xbar, const Fixed_point_grid& grid, std::int64_t l, std::int64_t& z)
+{
+  CGAL_precondition(l > 0 && l <= (std::int64_t(1) << 20));
+  const std::int64_t Z_MAX = Fixed_point_grid::max_integer();
+  const std::int64_t X = std::int64_t(std::nearbyint(xbar / grid.quantum));
+  const std::int64_t num = 2 * X + l, den = 2 * l;
+  const std::int64_t q = num / den - std::int64_t(num % den < 0);   // floor: round(X / l), halves up
+  for(int t : {0, 1, -1}) {
+    const std::int64_t cand = (q + t) * l;
+    if(cand <= Z_MAX && cand >= -Z_MAX) { z = cand; return true; }
+  }
+  return false;
+}
+
 // The change x - x̄ of a successful projection, in the report.
 inline void report_success(const Integer_system& sys, const std::vector<double>& xbar, const std::vector<double>& out,
                            Projection_report& report)
@@ -168,7 +184,10 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       z[i] = grid.to_integer(out[i]);
     } else {
       const CGAL::Gmpz zero(0);
-      if(!make_div(xbar[i], grid, to_gmpz(ir.divisor[i]), it == z0.end() ? zero : it->second, z[i])) {
+      std::int64_t l = 0;
+      const bool small = it == z0.end() && Ops::to_int64(ir.divisor[i], l) && l <= (std::int64_t(1) << 20);
+      if(!(small ? make_div(xbar[i], grid, l, z[i])
+                 : make_div(xbar[i], grid, to_gmpz(ir.divisor[i]), it == z0.end() ? zero : it->second, z[i]))) {
         fail(RANGE_EXCEEDED, "free variable " + std::to_string(i) + " must be a multiple of " + Ops::to_string(ir.divisor[i])
                              + " grid quanta (lcm of its rows' pivots, Alg. 4), and no such multiple lies in the fixed-point range");
         return;
