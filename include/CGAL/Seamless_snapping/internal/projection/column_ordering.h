@@ -57,6 +57,31 @@ constexpr bool has_fill_reducing_column_order()
 #endif
 }
 
+// The columns that occur in a row, numbered 0..nc-1 in index order (ties in COLAMD go by index),
+// and the rows of each: the pattern of C by columns, the rows of column number k in
+// row[start[k] .. start[k + 1]), increasing. Index: COLAMD's (its input is a copy).
+template <typename Index>
+struct Column_rows
+{
+  std::vector<Index> compact;     // per column: its number, -1 when it occurs in no row
+  std::vector<Index> original;    // per number: the column
+  std::vector<Index> start, row;
+
+  template <typename Int>
+  Column_rows(const Csr_rows<Int>& rows, std::size_t n_cols) : compact(n_cols, -1)
+  {
+    for(const Sparse_entry<Int>& x : rows.e) compact[x.col] = 0;
+    for(std::size_t c = 0; c < n_cols; ++c) if(compact[c] == 0) { compact[c] = Index(original.size()); original.push_back(Index(c)); }
+    start.assign(original.size() + 1, 0);
+    for(const Sparse_entry<Int>& x : rows.e) ++start[std::size_t(compact[x.col]) + 1];
+    for(std::size_t k = 0; k < original.size(); ++k) start[k + 1] += start[k];
+    row.resize(rows.e.size());
+    std::vector<Index> next(start.begin(), start.end() - 1);
+    for(std::size_t i = 0; i + 1 < rows.ptr.size(); ++i)
+      for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) row[std::size_t(next[std::size_t(compact[rows.e[q].col])]++)] = Index(i);
+  }
+};
+
 // The front order: breadth-first over the rows (two rows adjacent when they share a column), a
 // row's columns numbered in index order when first met. Each connected component is searched from
 // a central row, so that the front stays short: the row closest to both ends of a pseudo-diameter
@@ -72,19 +97,10 @@ constexpr bool has_fill_reducing_column_order()
 // test_projection's flat per-corner grid (a disc, no rotations: 92 rows in 48 levels) stays with
 // COLAMD, which is right there (39.8k IRREF nonzeros against 69.2k with the front order), so the
 // front order's gain is measured on closed surfaces with cones only.
-template <typename Int>
-bool front_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vector<std::uint32_t>& position)
+template <typename Int, typename Index>
+bool front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
 {
-  const std::size_t n_rows = rows.ptr.size() - 1;
-  std::vector<std::size_t> cp(n_cols + 1, 0);                // the rows of each column
-  for(const Sparse_entry<Int>& x : rows.e) ++cp[x.col + 1];
-  for(std::size_t c = 0; c < n_cols; ++c) cp[c + 1] += cp[c];
-  std::vector<std::uint32_t> cr(rows.e.size());
-  {
-    std::vector<std::size_t> next(cp.begin(), cp.end() - 1);
-    for(std::size_t i = 0; i < n_rows; ++i)
-      for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) cr[next[rows.e[q].col]++] = std::uint32_t(i);
-  }
+  const std::size_t n_rows = rows.ptr.size() - 1, n_cols = cols.compact.size();
   const std::uint32_t unseen = std::uint32_t(-1);
   std::vector<std::uint32_t> queue, from_a(n_rows, unseen), from_b(n_rows, unseen);
   queue.reserve(n_rows);
@@ -97,15 +113,17 @@ bool front_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vect
     for(std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t i = queue[head];
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) {
-        const std::uint32_t c = rows.e[q].col;
-        for(std::size_t t = cp[c]; t < cp[c + 1]; ++t)
-          if(dist[cr[t]] == unseen) { dist[cr[t]] = dist[i] + 1; queue.push_back(cr[t]); }
+        const std::size_t k = std::size_t(cols.compact[rows.e[q].col]);
+        for(std::size_t t = std::size_t(cols.start[k]); t < std::size_t(cols.start[k + 1]); ++t) {
+          const std::size_t r = std::size_t(cols.row[t]);
+          if(dist[r] == unseen) { dist[r] = dist[i] + 1; queue.push_back(std::uint32_t(r)); }
+        }
       }
     }
     return queue.back();
   };
   auto forget = [&](std::vector<std::uint32_t>& dist) { for(const std::uint32_t i : queue) dist[i] = unseen; };
-  std::vector<std::uint32_t> order(n_cols, unseen), count;
+  std::vector<std::uint32_t> order(cols.original.size(), unseen), count;   // per compact column
   std::uint32_t numbered = 0;
   std::size_t largest = 0, levels = 0, width = 0;
   for(std::size_t first = 0; first < n_rows; ++first) {
@@ -131,11 +149,12 @@ bool front_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vect
     search(center, from_a);
     for(const std::uint32_t i : queue)
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q)
-        if(order[rows.e[q].col] == unseen) order[rows.e[q].col] = numbered++;
+        if(order[std::size_t(cols.compact[rows.e[q].col])] == unseen) order[std::size_t(cols.compact[rows.e[q].col])] = numbered++;
   }
   if(width <= 2 * levels) return false;
-  for(std::uint32_t& o : order) if(o == unseen) o = numbered;   // columns in no row come last
-  position.swap(order);
+  position.resize(n_cols);
+  for(std::size_t c = 0; c < n_cols; ++c)                  // columns in no row come last
+    position[c] = cols.compact[c] < 0 ? numbered : order[std::size_t(cols.compact[c])];
   return true;
 }
 
@@ -148,39 +167,27 @@ bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, s
   position.clear();
   front = false;
 #ifdef CGAL_SEAMLESS_SNAPPING_HAS_COLAMD
-  try {
-    if(front_column_order(rows, n_cols, position)) { front = true; return true; }
-  } catch(const std::bad_alloc&) {
-    return false;
-  }
   typedef SuiteSparse_long Index;                          // 64-bit: no overflow of COLAMD's workspace size
   const std::size_t n_rows = rows.ptr.size() - 1, nnz = rows.e.size();
-  // COLAMD reads the matrix by column (row indices of each column) and keeps its workspace in the
-  // same array: compressed to the columns that occur in a row.
-  std::vector<Index> compact(n_cols, -1), original;          // in column order: ties in COLAMD go by index
-  for(const Sparse_entry<Int>& x : rows.e) compact[x.col] = 0;
-  for(std::size_t c = 0; c < n_cols; ++c) if(compact[c] == 0) { compact[c] = Index(original.size()); original.push_back(Index(c)); }
-  const Index nc = Index(original.size());
-  std::vector<Index> p(std::size_t(nc) + 1, 0);
-  for(const Sparse_entry<Int>& x : rows.e) ++p[std::size_t(compact[x.col]) + 1];
-  for(Index c = 0; c < nc; ++c) p[std::size_t(c) + 1] += p[std::size_t(c)];
   try {
-    std::vector<Index> A(colamd_l_recommended(Index(nnz), Index(n_rows), nc));
+    const Column_rows<Index> cols(rows, n_cols);
+    if(front_column_order(rows, cols, position)) { front = true; return true; }
+    // COLAMD reads the matrix by column and keeps its workspace in the same array (A), and writes
+    // the order into p: both are copies.
+    const Index nc = Index(cols.original.size());
+    std::vector<Index> p(cols.start), A(colamd_l_recommended(Index(nnz), Index(n_rows), nc));
     if(A.size() < nnz) return false;
-    {
-      std::vector<Index> next(p.begin(), p.end() - 1);
-      for(std::size_t i = 0; i < n_rows; ++i)
-        for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) A[std::size_t(next[std::size_t(compact[rows.e[q].col])]++)] = Index(i);
-    }
+    std::copy(cols.row.begin(), cols.row.end(), A.begin());
     double knobs[COLAMD_KNOBS];
     Index stats[COLAMD_STATS];
     colamd_l_set_defaults(knobs);
     if(!colamd_l(Index(n_rows), nc, Index(A.size()), A.data(), p.data(), knobs, stats)) return false;
+    position.assign(n_cols, std::uint32_t(nc));
+    for(Index k = 0; k < nc; ++k) position[std::size_t(cols.original[std::size_t(p[std::size_t(k)])])] = std::uint32_t(k);   // p: the order
   } catch(const std::bad_alloc&) {
+    position.clear();
     return false;
   }
-  position.assign(n_cols, std::uint32_t(nc));
-  for(Index k = 0; k < nc; ++k) position[original[std::size_t(p[std::size_t(k)])]] = std::uint32_t(k);   // p: the order
   return true;
 #else
   (void)rows; (void)n_cols;
