@@ -15,20 +15,27 @@
 // those the order puts first, the free ones those it keeps for last. The IRREF depends only on
 // which columns end up free: a free column's IRREF column is the circuit (smallest dependent set)
 // that ties it to implied columns before it in the order, so a good order makes these short.
-// Two orders, chosen by the shape of the row graph (rows adjacent when they share a column):
-//  - surface-like row graphs (per-corner systems, one vt per face corner: every edge is cut and
-//    the rows form the medial graph of the mesh), where a breadth-first front is wide: the front
-//    order (front_column_order()). A column then becomes free where the front closes a short
-//    cycle (a face, a vertex ring), which keeps its circuit local; COLAMD (approximate minimum
-//    degree on C^T C), which takes low-degree columns all over the mesh first, leaves longer ones
-//    (measured: duck_miq_8 1.35M instead of 1.97M IRREF nonzeros, fandisk 1.29M instead of 1.69M);
-//  - path-like row graphs (seams of cut meshes: chains of cut edges), where the front stays narrow:
-//    COLAMD, whose circuits are there the shorter ones (dragon-full 25.0k IRREF nonzeros, 86.9k
-//    with the front order; horsers 3.3k against 5.0k; decimated-knight 2.5k against 5.7k).
-//
+// Three orders, chosen by the shape of the row graph (rows adjacent when they share a column),
+// measured by the widest level of a breadth-first search against the number of levels:
+//  - wide fronts (more than 2 rows per level: closed surface-like row graphs, e.g. per-corner
+//    systems, one vt per face corner, where every edge is cut and the rows form the medial graph of
+//    the mesh): the front order (front_column_order()). A column then becomes free where the front
+//    closes a short cycle (a face, a vertex ring), which keeps its circuit local; COLAMD (approximate
+//    minimum degree on C^T C), which takes low-degree columns all over the mesh first, leaves
+//    longer ones (measured: duck_miq_8 1.35M instead of 1.97M IRREF nonzeros, fandisk 1.29M
+//    instead of 1.69M);
+//  - thin fronts (at most 1 row per level: the seams of cut meshes, chains of cut edges): the
+//    static minimum degree order (static_degree_column_order(): columns by the number of other
+//    columns they share a row with), whose circuits are there the shortest of the three and which
+//    costs a fraction of COLAMD (IRREF nonzeros static / COLAMD / front: dragon-full 23.5k / 25.0k
+//    / 86.9k, dragon-rot 26.57k / 26.56k, horsers 2.7k / 3.3k / 5.0k, decimated-knight 2.3k / 2.5k
+//    / 5.7k, retinal 1.5k / 2.5k; dragon-full initialize 7.8 -> 4.9 ms);
+//  - in between (a flat disc seen from its boundary, as test_projection's per-corner grid): COLAMD
+//    (there 39.8k IRREF nonzeros; the front order 69.2k, the static degree order 104.6k: on a
+//    two-dimensional graph the degrees do not change where the elimination goes, COLAMD's do).
 // COLAMD is used when the build defines CGAL_SEAMLESS_SNAPPING_HAS_COLAMD (the package's CMake does
 // when SuiteSparse's colamd library is found; Debian: libsuitesparse-dev). Without it there is no
-// order (neither of the two) and the IRREF keeps its own pivot rule alone. The order depends only
+// order (none of the three) and the IRREF keeps its own pivot rule alone. The order depends only
 // on the canonical system, so results stay deterministic; they may differ between builds with and
 // without COLAMD (another exact solution: another set of free variables is rounded to the grid).
 
@@ -88,17 +95,23 @@ struct Column_rows
 // (a row farthest from the component's first row, and a row farthest from that one). On the
 // per-corner systems that is 6% fewer IRREF nonzeros than from the first row (duck_miq_8 1.35M
 // instead of 1.44M, fandisk 1.29M instead of 1.36M); from a peripheral row, 4-9% more.
-// Returns false, with `position` untouched, when the row graph is path-like: seen from the first
-// end of the pseudo-diameter, no level of the largest component holds more than twice as many rows
-// as there are levels (per-corner systems: duck_miq_8 692 rows in 151 levels, fandisk 513 in 162;
-// seams of cut meshes: decimated-knight 20 in 39, dragon 52 in 242, horsers 12 in 89). A component
-// with more than half of the rows is the largest one: when it is path-like the search stops there,
-// after two of its four searches (dragon: 1.1 -> 0.6 ms). The bound is not a clean divide:
-// test_projection's flat per-corner grid (a disc, no rotations: 92 rows in 48 levels) stays with
-// COLAMD, which is right there (39.8k IRREF nonzeros against 69.2k with the front order), so the
-// front order's gain is measured on closed surfaces with cones only.
+// The shape: seen from the first end of the pseudo-diameter, the widest level of the largest
+// component against its number of levels (per-corner systems: duck_miq_8 692 rows in 151 levels,
+// fandisk 513 in 162; seams of cut meshes: decimated-knight 20 in 39, dragon 52 in 242, horsers
+// 12 in 89; test_projection's flat per-corner grid, a disc without rotations: 92 in 48). Only for
+// a WIDE_FRONT is the order computed; otherwise `position` is left untouched. A component with
+// more than half of the rows is the largest one: when its front is not wide the search stops there,
+// after two of its four searches (dragon: 1.1 -> 0.6 ms). The bounds are no clean divide: the front
+// order's gain is measured on closed surfaces with cones only, the static degree order's on seams.
+enum Front_shape { THIN_FRONT, MEDIUM_FRONT, WIDE_FRONT };
+
+inline Front_shape front_shape(std::size_t width, std::size_t levels)
+{
+  return width > 2 * levels ? WIDE_FRONT : (width <= levels ? THIN_FRONT : MEDIUM_FRONT);
+}
+
 template <typename Int, typename Index>
-bool front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
+Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
 {
   const std::size_t n_rows = rows.ptr.size() - 1, n_cols = cols.compact.size();
   const std::uint32_t unseen = std::uint32_t(-1);
@@ -137,7 +150,7 @@ bool front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& col
       count.assign(levels, 0);
       for(const std::uint32_t i : queue) ++count[from_a[i]];
       width = *std::max_element(count.begin(), count.end());
-      if(2 * largest > n_rows && width <= 2 * levels) return false;   // the largest component, path-like: decided
+      if(2 * largest > n_rows && front_shape(width, levels) != WIDE_FRONT) return front_shape(width, levels);   // the largest: decided
     }
     search(b, from_b);
     std::uint32_t center = queue[0], eccentricity = unseen;
@@ -151,11 +164,37 @@ bool front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& col
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q)
         if(order[std::size_t(cols.compact[rows.e[q].col])] == unseen) order[std::size_t(cols.compact[rows.e[q].col])] = numbered++;
   }
-  if(width <= 2 * levels) return false;
+  if(front_shape(width, levels) != WIDE_FRONT) return front_shape(width, levels);
   position.resize(n_cols);
   for(std::size_t c = 0; c < n_cols; ++c)                  // columns in no row come last
     position[c] = cols.compact[c] < 0 ? numbered : order[std::size_t(cols.compact[c])];
-  return true;
+  return WIDE_FRONT;
+}
+
+// The static minimum degree order: columns by their degree in the column graph of C (the number of
+// columns, itself included, that share a row with it), ties by index; the degrees are those of the
+// input, not updated as the elimination goes (that is what COLAMD approximates).
+template <typename Int, typename Index>
+void static_degree_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
+{
+  const std::size_t nc = cols.original.size();
+  std::vector<Index> mark(nc, -1), degree(nc, 0);
+  for(std::size_t k = 0; k < nc; ++k)
+    for(std::size_t t = std::size_t(cols.start[k]); t < std::size_t(cols.start[k + 1]); ++t) {
+      const std::size_t r = std::size_t(cols.row[t]);
+      for(std::size_t q = rows.ptr[r]; q < rows.ptr[r + 1]; ++q) {
+        const std::size_t j = std::size_t(cols.compact[rows.e[q].col]);
+        if(mark[j] != Index(k)) { mark[j] = Index(k); ++degree[k]; }
+      }
+    }
+  std::vector<std::size_t> first;                          // counting sort by degree: stable, so ties go by index
+  for(std::size_t k = 0; k < nc; ++k) {
+    if(std::size_t(degree[k]) + 2 > first.size()) first.resize(std::size_t(degree[k]) + 2, 0);
+    ++first[std::size_t(degree[k]) + 1];
+  }
+  for(std::size_t d = 0; d + 1 < first.size(); ++d) first[d + 1] += first[d];
+  position.assign(cols.compact.size(), std::uint32_t(nc)); // columns in no row come last
+  for(std::size_t k = 0; k < nc; ++k) position[std::size_t(cols.original[k])] = std::uint32_t(first[std::size_t(degree[k])]++);
 }
 
 // position[c] = place of column c in the order (columns in no row come last); `front`: whether it
@@ -171,7 +210,9 @@ bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, s
   const std::size_t n_rows = rows.ptr.size() - 1, nnz = rows.e.size();
   try {
     const Column_rows<Index> cols(rows, n_cols);
-    if(front_column_order(rows, cols, position)) { front = true; return true; }
+    const Front_shape shape = front_column_order(rows, cols, position);
+    if(shape == WIDE_FRONT) { front = true; return true; }
+    if(shape == THIN_FRONT) { static_degree_column_order(rows, cols, position); return true; }
     // COLAMD reads the matrix by column and keeps its workspace in the same array (A), and writes
     // the order into p: both are copies.
     const Index nc = Index(cols.original.size());
