@@ -55,12 +55,13 @@ struct Projection_options
   /// where speed matters more than the size of the change.
   bool minimal_change = true;
   /// Pivot order of the IRREF (Sec. 4.1). `true` (default): the pivot rule (unit pivots first, then the
-  /// column with the fewest nonzeros) runs on a budget of nonzeros (those of `C` plus one per row);
-  /// past it, the elimination starts over with the pivots taken in a fill-reducing column order (a
-  /// breadth-first front order on surface-like row graphs, SuiteSparse COLAMD's elsewhere), when the
-  /// build has COLAMD (CMake option `SEAMLESS_SNAPPING_USE_COLAMD`, on by default). On per-corner seam
+  /// column with the fewest nonzeros) runs on a budget of nonzeros (those of `C` plus one per 16 rows);
+  /// past it, the elimination starts over with the pivots taken in a fill-reducing column order
+  /// chosen by the shape of the row graph (a breadth-first front order on closed surface-like row
+  /// graphs, a static minimum degree order on seams, SuiteSparse COLAMD's in between), when the build
+  /// has COLAMD (CMake option `SEAMLESS_SNAPPING_USE_COLAMD`, on by default). On per-corner seam
   /// systems (one variable pair per texture corner) this fills in 2-8 times less (Directional's dragon:
-  /// 25.0k IRREF nonzeros instead of 134k; libQEx's duck: 1.35M instead of 3.74M; manual, "Pivot order
+  /// 23.5k IRREF nonzeros instead of 134k; libQEx's duck: 1.35M instead of 3.74M; manual, "Pivot order
   /// and fill-in"). `false`: the pivot rule alone.
   /// Both give exact solutions, with other free variables, so the results differ slightly.
   bool fill_reducing_order = true;

@@ -133,7 +133,8 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
                                              // core's own projection only refines how it is rounded
   options.fill_reducing_order = false;       // node systems are numbered by sectors, where the pivot rule fills in
                                              // little; with COLAMD's order (another choice of free variables) the
-                                             // dragon's repair left 2 unforced degenerate triangles, not 0
+                                             // dragon's repair left 2 unforced degenerate triangles, not 0 (not
+                                             // measured with the static degree order of column_ordering.h)
   Exact_constraint_projection projection(options);
   Status s = projection.initialize(rows.size(), vars.size(), triplets, rows.rhs);
   const Irref_statistics& stats = projection.statistics();
