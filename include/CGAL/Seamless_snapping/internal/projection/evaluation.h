@@ -171,6 +171,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   // -- free variables (Alg. 3 "fix free variable", Alg. 4 makeDIV); unconstrained ones keep x̄
   std::vector<double> out(xbar);
   std::vector<std::int64_t> z(n, 0);            // grid integers of the constrained variables
+  const CGAL::Gmpz zero(0);                     // the shift of unshifted variables (multiprecision makeDIV)
   for(std::size_t i = 0; i < n; ++i) {
     if(ir.kind[i] != FREE_COLUMN) continue;
     const bool unit = Ops::is_unit(ir.divisor[i]);
@@ -183,7 +184,6 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       }
       z[i] = grid.to_integer(out[i]);
     } else {
-      const CGAL::Gmpz zero(0);
       std::int64_t l = 0;
       const bool small = it == z0.end() && Ops::to_int64(ir.divisor[i], l) && l <= (std::int64_t(1) << 20);
       if(!(small ? make_div(xbar[i], grid, l, z[i])
