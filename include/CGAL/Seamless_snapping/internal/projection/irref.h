@@ -384,7 +384,8 @@ private:
   // other rows: with the front order 215k -> 99k row updates on duck_miq_8 (init 1075 -> 521 ms);
   // in order of position the front of rows keeps growing (duck > 300 s). With COLAMD's order it
   // saves updates too (duck 226k -> 169k, dragon-full 12.1k -> 9.8k) but no time (dragon: +20%,
-  // the heap), so the nonzero-count queue stays there.
+  // the heap), so the nonzero-count queue stays there, and with the static degree order (the heap
+  // not tried there).
   std::uint32_t ordered_key(const Row& row) const
   {
     std::uint32_t first = NIL;
