@@ -65,29 +65,24 @@ constexpr bool has_fill_reducing_column_order()
 #endif
 }
 
-// The columns that occur in a row, numbered 0..nc-1 in index order (ties in COLAMD go by index),
-// and the rows of each: the pattern of C by columns, the rows of column number k in
-// row[start[k] .. start[k + 1]), increasing. Index: COLAMD's (its input is a copy).
-template <typename Index>
+// The pattern of C by columns: the rows of column k in row[start[k] .. start[k + 1]), increasing.
+// Precondition (here and in the orders below): the columns are numbered 0..nc-1 and each occurs in
+// a row (the IRREF's input is so numbered, see Irref_eliminator::compact_input()).
 struct Column_rows
 {
-  std::vector<Index> compact;     // per column: its number, -1 when it occurs in no row
-  std::vector<Index> original;    // per number: the column
-  std::vector<Index> start, row;
+  std::vector<std::size_t> start;
+  std::vector<std::uint32_t> row;
 
   template <typename Int>
-  Column_rows(const Csr_rows<Int>& rows, std::size_t n_cols) : compact(n_cols, -1)
+  Column_rows(const Csr_rows<Int>& rows, std::size_t nc) : start(nc + 1, 0), row(rows.e.size())
   {
-    for(const Sparse_entry<Int>& x : rows.e) compact[x.col] = 0;
-    for(std::size_t c = 0; c < n_cols; ++c) if(compact[c] == 0) { compact[c] = Index(original.size()); original.push_back(Index(c)); }
-    start.assign(original.size() + 1, 0);
-    for(const Sparse_entry<Int>& x : rows.e) ++start[std::size_t(compact[x.col]) + 1];
-    for(std::size_t k = 0; k < original.size(); ++k) start[k + 1] += start[k];
-    row.resize(rows.e.size());
-    std::vector<Index> next(start.begin(), start.end() - 1);
+    for(const Sparse_entry<Int>& x : rows.e) ++start[std::size_t(x.col) + 1];
+    for(std::size_t k = 0; k < nc; ++k) start[k + 1] += start[k];
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for(std::size_t i = 0; i + 1 < rows.ptr.size(); ++i)
-      for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) row[std::size_t(next[std::size_t(compact[rows.e[q].col])]++)] = Index(i);
+      for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) row[next[rows.e[q].col]++] = std::uint32_t(i);
   }
+  std::size_t columns() const { return start.size() - 1; }
 };
 
 // The front order: breadth-first over the rows (two rows adjacent when they share a column), a
@@ -111,10 +106,10 @@ inline Front_shape front_shape(std::size_t width, std::size_t levels)
   return width > 2 * levels ? WIDE_FRONT : (width <= levels ? THIN_FRONT : MEDIUM_FRONT);
 }
 
-template <typename Int, typename Index>
-Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
+template <typename Int>
+Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows& cols, std::vector<std::uint32_t>& position)
 {
-  const std::size_t n_rows = rows.ptr.size() - 1, n_cols = cols.compact.size();
+  const std::size_t n_rows = rows.ptr.size() - 1;
   const std::uint32_t unseen = std::uint32_t(-1);
   std::vector<std::uint32_t> queue, from_a(n_rows, unseen), from_b(n_rows, unseen);
   queue.reserve(n_rows);
@@ -127,17 +122,17 @@ Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows<Inde
     for(std::size_t head = 0; head < queue.size(); ++head) {
       const std::uint32_t i = queue[head];
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) {
-        const std::size_t k = std::size_t(cols.compact[rows.e[q].col]);
-        for(std::size_t t = std::size_t(cols.start[k]); t < std::size_t(cols.start[k + 1]); ++t) {
-          const std::size_t r = std::size_t(cols.row[t]);
-          if(dist[r] == unseen) { dist[r] = dist[i] + 1; queue.push_back(std::uint32_t(r)); }
+        const std::size_t k = rows.e[q].col;
+        for(std::size_t t = cols.start[k]; t < cols.start[k + 1]; ++t) {
+          const std::uint32_t r = cols.row[t];
+          if(dist[r] == unseen) { dist[r] = dist[i] + 1; queue.push_back(r); }
         }
       }
     }
     return queue.back();
   };
   auto forget = [&](std::vector<std::uint32_t>& dist) { for(const std::uint32_t i : queue) dist[i] = unseen; };
-  std::vector<std::uint32_t> order(cols.original.size(), unseen), count;   // per compact column
+  std::vector<std::uint32_t> order(cols.columns(), unseen), count;
   std::uint32_t numbered = 0;
   std::size_t largest = 0, levels = 0, width = 0;
   for(std::size_t first = 0; first < n_rows; ++first) {
@@ -163,12 +158,10 @@ Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows<Inde
     search(center, from_a);
     for(const std::uint32_t i : queue)
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q)
-        if(order[std::size_t(cols.compact[rows.e[q].col])] == unseen) order[std::size_t(cols.compact[rows.e[q].col])] = numbered++;
+        if(order[rows.e[q].col] == unseen) order[rows.e[q].col] = numbered++;
   }
   if(front_shape(width, levels) != WIDE_FRONT) return front_shape(width, levels);
-  position.resize(n_cols);
-  for(std::size_t c = 0; c < n_cols; ++c)                  // columns in no row come last
-    position[c] = cols.compact[c] < 0 ? numbered : order[std::size_t(cols.compact[c])];
+  position.swap(order);                                    // every column occurs in a row: all are numbered
   return WIDE_FRONT;
 }
 
@@ -177,19 +170,19 @@ Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows<Inde
 // input, not updated as the elimination goes (that is what COLAMD approximates). Dense rows (more
 // than 10 sqrt(nc) entries, COLAMD's default) are left out of the degrees, as COLAMD leaves them
 // out of its order: the cost is then at most 10 sqrt(nc) per nonzero, not the square of a row.
-template <typename Int, typename Index>
-void static_degree_column_order(const Csr_rows<Int>& rows, const Column_rows<Index>& cols, std::vector<std::uint32_t>& position)
+template <typename Int>
+void static_degree_column_order(const Csr_rows<Int>& rows, const Column_rows& cols, std::vector<std::uint32_t>& position)
 {
-  const std::size_t nc = cols.original.size();
+  const std::size_t nc = cols.columns();
   const std::size_t dense = std::max<std::size_t>(16, std::size_t(10 * std::sqrt(double(nc))));
-  std::vector<Index> mark(nc, -1), degree(nc, 0);
+  std::vector<std::size_t> mark(nc, std::size_t(-1)), degree(nc, 0);
   for(std::size_t k = 0; k < nc; ++k)
-    for(std::size_t t = std::size_t(cols.start[k]); t < std::size_t(cols.start[k + 1]); ++t) {
-      const std::size_t r = std::size_t(cols.row[t]);
+    for(std::size_t t = cols.start[k]; t < cols.start[k + 1]; ++t) {
+      const std::size_t r = cols.row[t];
       if(rows.ptr[r + 1] - rows.ptr[r] > dense) continue;
       for(std::size_t q = rows.ptr[r]; q < rows.ptr[r + 1]; ++q) {
-        const std::size_t j = std::size_t(cols.compact[rows.e[q].col]);
-        if(mark[j] != Index(k)) { mark[j] = Index(k); ++degree[k]; }
+        const std::size_t j = rows.e[q].col;
+        if(mark[j] != k) { mark[j] = k; ++degree[k]; }
       }
     }
   std::vector<std::size_t> first;                          // counting sort by degree: stable, so ties go by index
@@ -198,15 +191,15 @@ void static_degree_column_order(const Csr_rows<Int>& rows, const Column_rows<Ind
     ++first[std::size_t(degree[k]) + 1];
   }
   for(std::size_t d = 0; d + 1 < first.size(); ++d) first[d + 1] += first[d];
-  position.assign(cols.compact.size(), std::uint32_t(nc)); // columns in no row come last
-  for(std::size_t k = 0; k < nc; ++k) position[std::size_t(cols.original[k])] = std::uint32_t(first[std::size_t(degree[k])]++);
+  position.resize(nc);
+  for(std::size_t k = 0; k < nc; ++k) position[k] = std::uint32_t(first[degree[k]]++);
 }
 
-// position[c] = place of column c in the order (columns in no row come last); `front`: whether it
-// is the front order. Returns false, with `position` empty, when no order is available (no COLAMD,
+// position[c] = place of column c in the order, for the nc columns of `rows` (each occurs in a row,
+// see Column_rows); `front`: whether it is the front order. Returns false, with `position` empty, when no order is available (no COLAMD,
 // or it failed, e.g. out of memory).
 template <typename Int>
-bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, std::vector<std::uint32_t>& position, bool& front)
+bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t nc, std::vector<std::uint32_t>& position, bool& front)
 {
   position.clear();
   front = false;
@@ -214,29 +207,28 @@ bool fill_reducing_column_order(const Csr_rows<Int>& rows, std::size_t n_cols, s
   typedef SuiteSparse_long Index;                          // 64-bit: no overflow of COLAMD's workspace size
   const std::size_t n_rows = rows.ptr.size() - 1, nnz = rows.e.size();
   try {
-    const Column_rows<Index> cols(rows, n_cols);
+    const Column_rows cols(rows, nc);
     const Front_shape shape = front_column_order(rows, cols, position);
     if(shape == WIDE_FRONT) { front = true; return true; }
     if(shape == THIN_FRONT) { static_degree_column_order(rows, cols, position); return true; }
     // COLAMD reads the matrix by column and keeps its workspace in the same array (A), and writes
     // the order into p: both are copies.
-    const Index nc = Index(cols.original.size());
-    std::vector<Index> p(cols.start), A(colamd_l_recommended(Index(nnz), Index(n_rows), nc));
+    std::vector<Index> p(cols.start.begin(), cols.start.end()), A(colamd_l_recommended(Index(nnz), Index(n_rows), Index(nc)));
     if(A.size() < nnz) return false;
     std::copy(cols.row.begin(), cols.row.end(), A.begin());
     double knobs[COLAMD_KNOBS];
     Index stats[COLAMD_STATS];
     colamd_l_set_defaults(knobs);
-    if(!colamd_l(Index(n_rows), nc, Index(A.size()), A.data(), p.data(), knobs, stats)) return false;
-    position.assign(n_cols, std::uint32_t(nc));
-    for(Index k = 0; k < nc; ++k) position[std::size_t(cols.original[std::size_t(p[std::size_t(k)])])] = std::uint32_t(k);   // p: the order
+    if(!colamd_l(Index(n_rows), Index(nc), Index(A.size()), A.data(), p.data(), knobs, stats)) return false;
+    position.resize(nc);
+    for(std::size_t k = 0; k < nc; ++k) position[std::size_t(p[k])] = std::uint32_t(k);   // p: the order
   } catch(const std::bad_alloc&) {
     position.clear();
     return false;
   }
   return true;
 #else
-  (void)rows; (void)n_cols;
+  (void)rows; (void)nc;
   return false;
 #endif
 }
