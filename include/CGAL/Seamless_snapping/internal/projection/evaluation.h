@@ -100,7 +100,7 @@ inline void report_success(const Integer_system& sys, const std::vector<double>&
   report.max_abs_change = 0;
   report.changed_variables = 0;
   for(std::size_t i = 0; i < out.size(); ++i) {
-    if(out[i] != xbar[i]) ++report.changed_variables;
+    report.changed_variables += std::size_t(out[i] != xbar[i]);
     report.max_abs_change = std::max(report.max_abs_change, std::fabs(out[i] - xbar[i]));
   }
   report.status = SUCCESS;
@@ -137,8 +137,11 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   auto fail = [&](Status s, const std::string& msg) { report.status = s; report.message = msg; };
   report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
   if(!grid.in_range) { fail(RANGE_EXCEEDED, grid.range_message()); return; }
-  for(std::size_t i = 0; i < n; ++i)
-    if(ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta)) {
+  auto outside = [&](std::size_t i) { return ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta); };
+  bool any_outside = false;                     // without a branch per column: which are constrained follows no pattern
+  for(std::size_t i = 0; i < n; ++i) any_outside = any_outside | outside(i);
+  for(std::size_t i = 0; i < n && any_outside; ++i)
+    if(outside(i)) {
       fail(RANGE_EXCEEDED, "|x̄[" + std::to_string(i) + "]| is outside the fixed-point range (-2^" + std::to_string(grid.K)
                            + ", 2^" + std::to_string(grid.K) + ")");
       return;
@@ -351,7 +354,7 @@ void evaluate_on_common_grid(const Irref<Int>& ir, const Integer_system& sys, co
   typedef Integer_ops<Int> Ops;
   const bool refine = options.minimal_change;
   double max_x = 0, max_b = 0;
-  for(std::size_t i = 0; i < ir.n_cols; ++i) if(ir.kind[i] != UNCONSTRAINED_COLUMN) max_x = std::max(max_x, std::fabs(xbar[i]));
+  for(std::size_t i = 0; i < ir.n_cols; ++i) max_x = std::max(max_x, ir.kind[i] != UNCONSTRAINED_COLUMN ? std::fabs(xbar[i]) : 0.);
   for(std::size_t j = 0; j < ir.rank(); ++j)
     if(!Ops::is_zero(ir.rhs[j]))
       max_b = std::max(max_b, std::fabs(Ops::to_double(ir.rhs[j]) / Ops::to_double(ir.pivot[j])));
