@@ -56,7 +56,9 @@ struct Projection_options
   bool minimal_change = true;
   /// Pivot order of the IRREF (Sec. 4.1). `true` (default): the pivot rule (unit pivots first, then the
   /// column with the fewest nonzeros) runs on a budget of nonzeros (those of `C` plus one per 16 rows);
-  /// past it, the elimination starts over with the pivots taken in a fill-reducing column order
+  /// past it, or at once where at least 90% of the columns lie in exactly two rows (long chains of
+  /// rows: the sides of cuts, as in per-corner seam systems, where the pivot rule alone always fills
+  /// in), the elimination runs with the pivots taken in a fill-reducing column order
   /// chosen by the shape of the row graph (a breadth-first front order on closed surface-like row
   /// graphs, a static minimum degree order on seams, SuiteSparse COLAMD's in between), when the build
   /// has COLAMD (CMake option `SEAMLESS_SNAPPING_USE_COLAMD`, on by default). On per-corner seam

@@ -161,7 +161,8 @@ public:
     // budget is small because the pass is thrown away past it: on the generated seamless systems
     // the pivot rule never holds more nonzeros than the input (peak = input, 500-20k rows), on the
     // dragon's per-corner system it passes n/16 after 1424 of the 4370 row updates it took to pass
-    // n (dragon full-seamless initialize 6.4 -> 4.9 ms with the front order's earlier exit). The
+    // n (dragon full-seamless initialize 6.4 -> 4.9 ms with the front order's earlier exit); such
+    // chain-like systems now skip the trial (below). The
     // order ignores the values: if an entry then grows beyond 2^20 or a pivot beyond 2 (random
     // systems; large pivots make the divisibility of Alg. 4 costly), the pivot rule alone, which
     // takes small pivots, redoes the elimination.
