@@ -170,8 +170,13 @@ public:
     const bool ordered = has_fill_reducing_column_order() && order != PIVOT_RULE;
     bool over_budget = true;
     Status st = SUCCESS;
-    compact_input(sys);
-    m_prefetch = m_input.e.size() > PREFETCH_NONZEROS;
+    number_columns(sys);
+    // The pivot rule reads the caller's int64 rows as they are where numbering the columns would
+    // shorten the per-column arrays by less than half (the generated seamless systems: no copy of
+    // the input, and none of its page faults); the orders need the numbered columns.
+    const Csr_rows<Int>* as_given = sys.fits_int64 ? same_type(sys.rows64) : nullptr;
+    use_rows(sys, as_given != nullptr && 2 * m_original.size() >= sys.n_cols ? as_given : nullptr);
+    m_prefetch = m_in->e.size() > PREFETCH_NONZEROS;
     // Where nearly every column lies in exactly two rows, the rows form long chains (the sides of
     // cuts): there the pivot rule alone fills in and its trial would be thrown away, so it is left out
     // (columns in two rows: every per-corner seam system of ../shared/data 95-100%, the generated
@@ -185,7 +190,8 @@ public:
     const std::size_t spent = out.eliminations;
     out = Irref<Int>();
     out.eliminations = spent;                          // every row update performed, both passes
-    fill_reducing_column_order(m_input, m_original.size(), m_position, m_latest_first);   // none: the pivot rule alone
+    use_rows(sys, nullptr);
+    fill_reducing_column_order(*m_in, m_original.size(), m_position, m_latest_first);   // none: the pivot rule alone
     load();
     m_growth_limit = !m_position.empty();
     st = eliminate(out, message, unlimited, over_budget);
@@ -244,10 +250,10 @@ private:
 
   void load()
   {
-    const Csr_rows<Int>& in = m_input;
+    const Csr_rows<Int>& in = *m_in;
     const std::vector<std::size_t>& ptr = in.ptr;
     const std::size_t n_rows = ptr.size() - 1;
-    m_n_cols = m_original.size();
+    m_n_cols = numbered() ? m_original.size() : m_number.size();
     m_rows.assign(n_rows, Row());
     if(!FLAT) m_own.assign(n_rows, std::vector<Entry>());
     m_cols.assign(m_n_cols, Column());
@@ -276,19 +282,20 @@ private:
     }
   }
 
-  // The input in Int with its columns numbered 0..nc-1 in index order, over the columns that occur
-  // in a row only (a per-corner system: 7.8k of the dragon's 29k): every per-column array of the
-  // elimination and of the orders is then that short. The numbering keeps the order of the
-  // columns, so ties by column index go as with the original indices; extract() maps them back.
-  void compact_input(const Integer_system& sys)
+  // The columns numbered 0..nc-1 in index order, over the columns that occur in a row only (a
+  // per-corner system: 7.8k of the dragon's 29k): every per-column array of the elimination and of
+  // the orders is then that short. The numbering keeps the order of the columns, so ties by column
+  // index go as with the original indices; extract() maps them back.
+  void number_columns(const Integer_system& sys)
   {
-    if(sys.fits_int64) compact_input(sys.rows64, sys.n_cols);
-    else               compact_input(sys.rowsz, sys.n_cols);
+    if(sys.fits_int64) number_columns(sys.rows64, sys.n_cols);
+    else               number_columns(sys.rowsz, sys.n_cols);
   }
   template <typename From>
-  void compact_input(const Csr_rows<From>& in, std::size_t n_cols)
+  void number_columns(const Csr_rows<From>& in, std::size_t n_cols)
   {
-    std::vector<std::uint32_t> number(n_cols, 0);
+    std::vector<std::uint32_t>& number = m_number;
+    number.assign(n_cols, 0);
     for(const Sparse_entry<From>& x : in.e) ++number[x.col];
     m_original.resize(n_cols);
     std::uint32_t nc = 0;
@@ -301,12 +308,32 @@ private:
       nc += occurs;
     }
     m_original.resize(nc);
+  }
+  // The rows the elimination reads: `as_given` (the caller's, columns of the system), or if null the
+  // input in Int with the numbered columns (made once).
+  void use_rows(const Integer_system& sys, const Csr_rows<Int>* as_given)
+  {
+    m_in = as_given;
+    if(m_in != nullptr) return;
+    if(m_input.ptr.empty()) {
+      if(sys.fits_int64) number_rows(sys.rows64);
+      else               number_rows(sys.rowsz);
+    }
+    m_in = &m_input;
+  }
+  bool numbered() const { return m_in == &m_input; }
+  std::uint32_t original(std::uint32_t c) const { return numbered() ? m_original[c] : c; }
+  template <typename From>
+  void number_rows(const Csr_rows<From>& in)
+  {
     m_input.ptr = in.ptr;
     m_input.e.resize(in.e.size());
     m_input.b.resize(in.b.size());
-    for(std::size_t q = 0; q < in.e.size(); ++q) m_input.e[q] = Entry{number[in.e[q].col], convert(in.e[q].val)};
+    for(std::size_t q = 0; q < in.e.size(); ++q) m_input.e[q] = Entry{m_number[in.e[q].col], convert(in.e[q].val)};
     for(std::size_t i = 0; i < in.b.size(); ++i) m_input.b[i] = convert(in.b[i]);
   }
+  static const Csr_rows<Int>* same_type(const Csr_rows<Int>& rows) { return &rows; }
+  template <typename From> static const Csr_rows<Int>* same_type(const Csr_rows<From>&) { return nullptr; }
   static Int convert(const Int& v) { return v; }
   template <typename From> static Int convert(const From& v)
   {
@@ -596,11 +623,11 @@ private:
   // The pivot rows in row order (the order of IRREF rows does not matter, Eq. 2' uses free variables only).
   void extract(const Integer_system& sys, Irref<Int>& out)
   {
-    out.n_cols = sys.n_cols;                        // columns are the system's from here on (m_original)
+    out.n_cols = sys.n_cols;                        // columns are the system's from here on (original())
     out.kind.assign(sys.n_cols, (unsigned char)UNCONSTRAINED_COLUMN);
     for(const std::uint32_t c : m_original) out.kind[c] = FREE_COLUMN;
     std::size_t rank = 0, total = 0;
-    for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[m_original[row.pivot_col]] = IMPLIED_COLUMN; }
+    for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[original(row.pivot_col)] = IMPLIED_COLUMN; }
     out.ptr.resize(rank + 1); out.ptr[0] = 0;
     out.col.resize(total + 1); out.val.resize(total + 1);   // + 1: see the entry loop
     out.pivot_col.resize(rank); out.pivot.resize(rank); out.rhs.resize(rank);
@@ -615,13 +642,13 @@ private:
       const Int* pv = find(row, row.pivot_col);
       const bool flip = Ops::sign(*pv) < 0;           // normalize: pivot > 0
       const Int p = flip ? Ops::neg(*pv) : *pv;
-      out.pivot_col[j] = m_original[row.pivot_col];
+      out.pivot_col[j] = original(row.pivot_col);
       out.rhs[j] = note(Ops::negatable(flip ? Ops::neg(row.b) : row.b));
       if(!Ops::is_zero(out.rhs[j])) out.homogeneous = false;
       const std::size_t first = t;
       for(std::uint32_t q = 0; q < row.size; ++q) {  // every entry is written; the pivot's is then overwritten
         const Entry& x = row.data[q];                 // (the last row's lands in the extra slot): no branch on its place
-        out.col[t] = m_original[x.col];
+        out.col[t] = original(x.col);
         out.val[t] = note(Ops::negatable(flip ? Ops::neg(x.val) : x.val));
         t += std::size_t(x.col != row.pivot_col);
       }
@@ -645,15 +672,17 @@ private:
     void operator()(Entry* p) const { Huge_page_allocator<Entry>().deallocate(p, n); }   // entries are trivial (int64 only)
   };
 
-  std::size_t m_n_cols = 0;                            // columns that occur in a row
+  std::size_t m_n_cols = 0;                            // columns of the rows read (m_in)
   bool m_prefetch = true;                              // see Window
   std::size_t m_columns_in_two_rows = 0;               // see run()
   Big_vector<Row> m_rows;
   std::vector<std::vector<Entry> > m_own;              // Gmpz only: the entries of modified rows
   Big_vector<Column> m_cols;
   Big_vector<Occurrence> m_pool;                       // column occurrences beyond r0, r1
-  Csr_rows<Int> m_input;                               // the input in Int, columns numbered (see compact_input())
-  std::vector<std::uint32_t> m_original;               // per column number: the system's column
+  const Csr_rows<Int>* m_in = nullptr;                // the rows read: the caller's or m_input (see use_rows())
+  Csr_rows<Int> m_input;                               // the input in Int, columns numbered (see number_columns())
+  std::vector<std::uint32_t> m_number;                 // per column of the system: its number
+  std::vector<std::uint32_t> m_original;               // per column number: the system's column (those that occur in a row)
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
   std::vector<std::uint32_t> m_targets;
