@@ -191,16 +191,17 @@ public:
       if(report.status == SUCCESS) report.message += note;
     }
     if(report.status == SUCCESS) {
-      report.max_abs_change = 0;
-      report.changed_variables = 0;
-      for(std::size_t i = 0; i < n; ++i) {
-        if(result[i] != xb[i]) ++report.changed_variables;
-        report.max_abs_change = (std::max)(report.max_abs_change, std::fabs(result[i] - xb[i]));
-      }
-      if(report.minimal_change)
+      if(report.minimal_change) {                        // the evaluation measured the change from the projected point
+        report.max_abs_change = 0;
+        report.changed_variables = 0;
+        for(std::size_t i = 0; i < n; ++i) {
+          if(result[i] != xb[i]) ++report.changed_variables;
+          report.max_abs_change = (std::max)(report.max_abs_change, std::fabs(result[i] - xb[i]));
+        }
         report.message = "all " + std::to_string(m_statistics.rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
                        + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change)
                        + " (floating-point projection snapped)";
+      }
       x.swap(result);
     }
     report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
