@@ -192,12 +192,7 @@ public:
     }
     if(report.status == SUCCESS) {
       if(report.minimal_change) {                        // the evaluation measured the change from the projected point
-        report.max_abs_change = 0;
-        report.changed_variables = 0;
-        for(std::size_t i = 0; i < n; ++i) {
-          if(result[i] != xb[i]) ++report.changed_variables;
-          report.max_abs_change = (std::max)(report.max_abs_change, std::fabs(result[i] - xb[i]));
-        }
+        internal::measure_change(xb, result, report);
         report.message = "all " + std::to_string(m_statistics.rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
                        + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change)
                        + " (floating-point projection snapped)";

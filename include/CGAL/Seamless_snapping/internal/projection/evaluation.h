@@ -93,9 +93,8 @@ inline bool make_div(double xbar, const Fixed_point_grid& grid, std::int64_t l, 
   return false;
 }
 
-// The change x - x̄ of a successful projection, in the report.
-inline void report_success(const Integer_system& sys, const std::vector<double>& xbar, const std::vector<double>& out,
-                           Projection_report& report)
+// The change from xbar to out, in the report: max |out_i - xbar_i| and how many variables changed.
+inline void measure_change(const std::vector<double>& xbar, const std::vector<double>& out, Projection_report& report)
 {
   report.max_abs_change = 0;
   report.changed_variables = 0;
@@ -103,6 +102,13 @@ inline void report_success(const Integer_system& sys, const std::vector<double>&
     report.changed_variables += std::size_t(out[i] != xbar[i]);
     report.max_abs_change = std::max(report.max_abs_change, std::fabs(out[i] - xbar[i]));
   }
+}
+
+// A successful projection, in the report.
+inline void report_success(const Integer_system& sys, const std::vector<double>& xbar, const std::vector<double>& out,
+                           Projection_report& report)
+{
+  measure_change(xbar, out, report);
   report.status = SUCCESS;
   report.message = "all " + std::to_string(sys.n_rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
                    + " of " + std::to_string(out.size()) + " variables changed, by at most " + std::to_string(report.max_abs_change);
