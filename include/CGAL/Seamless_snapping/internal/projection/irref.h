@@ -182,7 +182,7 @@ public:
     // (columns in two rows: every per-corner seam system of ../shared/data 95-100%, the generated
     // seamless systems 70-72%; dragon full-seamless initialize -8%, same IRREF).
     const bool chains = 10 * m_columns_in_two_rows >= 9 * m_original.size();
-    if(order == PIVOT_RULE || (order == AUTOMATIC_PIVOT_ORDER && !(ordered && chains))) {
+    if(order != FILL_REDUCING_ORDER && !(ordered && chains)) {
       load();
       st = eliminate(out, message, ordered ? sys.nonzeros() + sys.n_rows / 16 : unlimited, over_budget);
       if(!over_budget) { if(st == SUCCESS) extract(sys, out); return st; }
