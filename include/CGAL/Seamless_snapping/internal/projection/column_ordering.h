@@ -67,7 +67,7 @@ constexpr bool has_fill_reducing_column_order()
 
 // The pattern of C by columns: the rows of column k in row[start[k] .. start[k + 1]), increasing.
 // Precondition (here and in the orders below): the columns are numbered 0..nc-1 and each occurs in
-// a row (the IRREF's input is so numbered, see Irref_eliminator::compact_input()).
+// a row (the IRREF's input is so numbered, see Irref_eliminator::number_columns()).
 struct Column_rows
 {
   std::vector<std::size_t> start;
