@@ -45,6 +45,7 @@ struct Fixed_point_grid
   bool in_range = true;// min_exponent <= K <= max_exponent
   double delta = 1;    // the range is (-delta, delta)
   double quantum = 0;  // s = 2^(K-52)
+  double inverse_quantum = 0;   // 1/s = 2^(52-K) where that is a double (K > -972), else 0
 
   Fixed_point_grid() : Fixed_point_grid(0) {}
   explicit Fixed_point_grid(int k) : K(k), in_range(k >= min_exponent && k <= max_exponent)
@@ -53,6 +54,7 @@ struct Fixed_point_grid
     const int kk = k < min_exponent ? min_exponent : (k > max_exponent ? max_exponent : k);
     delta = std::ldexp(1.0, kk);
     quantum = std::ldexp(1.0, kk - 52);
+    if(52 - kk <= 1023) inverse_quantum = std::ldexp(1.0, 52 - kk);
   }
 
   // why a grid with `in_range == false` cannot be used
@@ -101,18 +103,19 @@ struct Fixed_point_grid
   }
 
   // z = v / s. Precondition: contains(v) (then |z| < 2^52 and the conversion is exact); use
-  // to_integer_checked() for a value not known to be on the grid.
+  // to_integer_checked() for a value not known to be on the grid. Multiplying by 1/s, a power of 2,
+  // gives the same z (both are exact) without a division: the evaluation converts every variable.
   std::int64_t to_integer(double v) const
   {
     CGAL_precondition(contains(v));
-    return std::int64_t(v / quantum);
+    return std::int64_t(inverse_quantum != 0 ? v * inverse_quantum : v / quantum);
   }
   // z = v / s if v is in F_delta; false (z untouched) otherwise, e.g. for a value outside (-delta, delta),
   // whose conversion to an integer could overflow.
   bool to_integer_checked(double v, std::int64_t& z) const
   {
     if(!contains(v)) return false;
-    z = std::int64_t(v / quantum);
+    z = to_integer(v);
     return true;
   }
   // v = z s; exact for |z| <= 2^53.
