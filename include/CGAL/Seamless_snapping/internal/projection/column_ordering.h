@@ -112,10 +112,15 @@ Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows& col
   const std::size_t n_rows = rows.ptr.size() - 1;
   const std::uint32_t unseen = std::uint32_t(-1);
   std::vector<std::uint32_t> queue, from_a(n_rows, unseen), from_b(n_rows, unseen);
+  std::vector<std::uint32_t> scanned(cols.columns(), 0);   // the last search that went through a column
+  std::uint32_t searches = 0;
   queue.reserve(n_rows);
   // Breadth-first from `start` (dist: unseen on its component): distances in dist, the rows
   // reached in `queue` in order; returns the last one, a farthest row. forget() resets them.
+  // A column's rows are all reached from the first row that meets it, so it is gone through
+  // once per search (same levels and queue; dragon full-seamless: 4% of initialize less).
   auto search = [&](std::uint32_t start, std::vector<std::uint32_t>& dist) {
+    ++searches;
     queue.clear();
     dist[start] = 0;
     queue.push_back(start);
@@ -123,6 +128,8 @@ Front_shape front_column_order(const Csr_rows<Int>& rows, const Column_rows& col
       const std::uint32_t i = queue[head];
       for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) {
         const std::size_t k = rows.e[q].col;
+        if(scanned[k] == searches) continue;
+        scanned[k] = searches;
         for(std::size_t t = cols.start[k]; t < cols.start[k + 1]; ++t) {
           const std::uint32_t r = cols.row[t];
           if(dist[r] == unseen) { dist[r] = dist[i] + 1; queue.push_back(r); }
