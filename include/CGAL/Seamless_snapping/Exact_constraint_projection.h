@@ -236,7 +236,7 @@ private:
     if(m_options.delta_exponent) {
       const internal::Fixed_point_grid grid(*m_options.delta_exponent);
       for(std::size_t i = 0; i < xb.size(); ++i)
-        if(m_system.column_used[i] && !grid.contains(xb[i])) return false;
+        if(m_system.column_used(i) && !grid.contains(xb[i])) return false;
     }
     return internal::satisfies_exactly(m_system, xb);
   }

@@ -58,11 +58,13 @@ struct Integer_system
   bool fits_int64 = true;              // which of the two stores is filled
   Csr_rows<std::int64_t> rows64;
   Csr_rows<CGAL::Gmpz> rowsz;
-  std::vector<char> column_used;       // column has a nonzero entry
-  std::size_t n_constrained_columns = 0;
+  std::vector<std::uint32_t> column_rows;   // per column: the number of rows it has a nonzero entry in
+  std::size_t n_constrained_columns = 0;    // columns in at least one row
+  std::size_t n_columns_in_two_rows = 0;    // columns in exactly two rows (see Irref_eliminator::run())
 
   std::size_t nonzeros() const { return fits_int64 ? rows64.e.size() : rowsz.e.size(); }
   std::size_t constrained_columns() const { return n_constrained_columns; }
+  bool column_used(std::size_t c) const { return column_rows[c] != 0; }
 };
 
 // Converts a caller's integer into Int; false when it does not fit.
@@ -83,17 +85,19 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
   out.ptr.assign(n_rows + 1, 0);
   bool bad_index = false;
   std::size_t bad_r = 0, bad_c = 0;
-  bool ordered = true;                                            // entries come by row, then by strictly increasing column
-  std::size_t last_r = 0, last_c = 0;
-  bool seen = false;
+  // Entries come by row, then by strictly increasing column, when their keys (r, c) -> r 2^32 + c + 1
+  // increase strictly (the caller's sizes are below 2^32, see build_integer_system()).
+  bool ordered = true;
+  std::uint64_t last_key = 0;
   visit([&](std::size_t r, std::size_t c, const auto& v) {      // pass 1: count
     if(r >= n_rows || c >= n_cols) { if(!bad_index) { bad_index = true; bad_r = r; bad_c = c; } return; }
     Int iv;
     if(!convert_integer(v, iv)) throw Integer_overflow();
     if(Ops::is_zero(iv)) return;                                  // explicit zeros are not entries
     ++out.ptr[r + 1];
-    ordered = ordered && (!seen || r > last_r || (r == last_r && c > last_c));
-    seen = true; last_r = r; last_c = c;
+    const std::uint64_t key = (std::uint64_t(r) << 32) + c + 1;
+    ordered = ordered & (key > last_key);
+    last_key = key;
   });
   if(bad_index) {
     message = "entry (" + std::to_string(std::int64_t(bad_r)) + ", " + std::to_string(std::int64_t(bad_c)) + ") is outside the "
@@ -147,6 +151,23 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
   return SUCCESS;
 }
 
+// Integer_system::column_rows and the counts derived from it (canonical rows: the entries of a row
+// have distinct columns). The counts are 32-bit: incrementing bytes (and fixing up columns in 256
+// rows or more) was slower on rows numbered along chains, where a column's two rows are close and
+// each increment waits for the store of the one before.
+inline void count_column_rows(Integer_system& sys)
+{
+  std::vector<std::uint32_t>& rows = sys.column_rows;
+  rows.assign(sys.n_cols, 0);
+  if(sys.fits_int64) { for(const auto& x : sys.rows64.e) ++rows[x.col]; }
+  else               { for(const auto& x : sys.rowsz.e)  ++rows[x.col]; }
+  sys.n_constrained_columns = sys.n_columns_in_two_rows = 0;
+  for(const std::uint32_t r : rows) {             // no branch: which columns occur follows no pattern
+    sys.n_constrained_columns += std::size_t(r != 0);
+    sys.n_columns_in_two_rows += std::size_t(r == 2);
+  }
+}
+
 // Fills `sys` from the caller's entries (visit(add) calls add(row, col, value) for every entry).
 template <typename BRange, typename Visit>
 Status build_integer_system(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit visit,
@@ -173,10 +194,7 @@ Status build_integer_system(std::size_t n_rows, std::size_t n_cols, const BRange
     st = build_rows<CGAL::Gmpz>(n_rows, n_cols, b, visit, sys.rowsz, message);
   }
   if(st != SUCCESS) return st;
-  sys.column_used.assign(n_cols, 0);
-  if(sys.fits_int64) { for(const auto& x : sys.rows64.e) sys.column_used[x.col] = 1; }
-  else               { for(const auto& x : sys.rowsz.e)  sys.column_used[x.col] = 1; }
-  sys.n_constrained_columns = std::size_t(std::count(sys.column_used.begin(), sys.column_used.end(), char(1)));
+  count_column_rows(sys);
   return SUCCESS;
 }
 

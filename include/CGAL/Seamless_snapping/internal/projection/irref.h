@@ -71,6 +71,7 @@ struct Irref
   std::vector<std::uint32_t> col;
   std::vector<Int> val;
   std::vector<unsigned char> kind;        // Column_kind per column
+  std::vector<std::uint32_t> free_columns;// the columns of kind FREE_COLUMN, in increasing order
   std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none
   Int max_abs = Integer_ops<Int>::from_int64(0);  // largest |entry| of the pivots, rhs and val
   bool unit_pivots = true;                // all pivots are 1: every divisor is 1
@@ -106,7 +107,7 @@ inline bool narrow_irref(const Irref<CGAL::Gmpz>& z, Irref<std::int64_t>& r)
   };
   if(!conv(z.pivot, r.pivot) || !conv(z.rhs, r.rhs) || !conv(z.val, r.val) || !conv(z.divisor, r.divisor)) return false;
   Z::to_int64(z.max_abs, r.max_abs);      // fits: it is one of the converted values
-  r.n_cols = z.n_cols; r.pivot_col = z.pivot_col; r.ptr = z.ptr; r.col = z.col; r.kind = z.kind;
+  r.n_cols = z.n_cols; r.pivot_col = z.pivot_col; r.ptr = z.ptr; r.col = z.col; r.kind = z.kind; r.free_columns = z.free_columns;
   r.unit_pivots = z.unit_pivots; r.homogeneous = z.homogeneous;
   r.dependent_rows = z.dependent_rows; r.eliminations = z.eliminations;
   return true;
@@ -170,18 +171,17 @@ public:
     const bool ordered = has_fill_reducing_column_order() && order != PIVOT_RULE;
     bool over_budget = true;
     Status st = SUCCESS;
-    number_columns(sys);
     // The pivot rule reads the caller's int64 rows as they are where numbering the columns would
     // shorten the per-column arrays by less than half (the generated seamless systems: no copy of
     // the input, and none of its page faults); the orders need the numbered columns.
     const Csr_rows<Int>* as_given = sys.fits_int64 ? same_type(sys.rows64) : nullptr;
-    use_rows(sys, as_given != nullptr && 2 * m_original.size() >= sys.n_cols ? as_given : nullptr);
+    use_rows(sys, as_given != nullptr && 2 * sys.constrained_columns() >= sys.n_cols ? as_given : nullptr);
     m_prefetch = m_in->e.size() > PREFETCH_NONZEROS;
     // Where nearly every column lies in exactly two rows, the rows form long chains (the sides of
     // cuts): there the pivot rule alone fills in and its trial would be thrown away, so it is left out
     // (columns in two rows: every per-corner seam system of ../shared/data 95-100%, the generated
     // seamless systems 70-72%; dragon full-seamless initialize -8%, same IRREF).
-    const bool chains = 10 * m_columns_in_two_rows >= 9 * m_original.size();
+    const bool chains = 10 * sys.n_columns_in_two_rows >= 9 * sys.constrained_columns();
     if(order != FILL_REDUCING_ORDER && !(ordered && chains)) {
       load();
       st = eliminate(out, message, ordered ? sys.nonzeros() + sys.n_rows / 16 : unlimited, over_budget);
@@ -253,7 +253,6 @@ private:
     const Csr_rows<Int>& in = *m_in;
     const std::vector<std::size_t>& ptr = in.ptr;
     const std::size_t n_rows = ptr.size() - 1;
-    m_n_cols = numbered() ? m_original.size() : m_number.size();
     m_rows.assign(n_rows, Row());
     if(!FLAT) m_own.assign(n_rows, std::vector<Entry>());
     m_cols.assign(m_n_cols, Column());
@@ -288,24 +287,13 @@ private:
   // index go as with the original indices; extract() maps them back.
   void number_columns(const Integer_system& sys)
   {
-    if(sys.fits_int64) number_columns(sys.rows64, sys.n_cols);
-    else               number_columns(sys.rowsz, sys.n_cols);
-  }
-  template <typename From>
-  void number_columns(const Csr_rows<From>& in, std::size_t n_cols)
-  {
-    std::vector<std::uint32_t>& number = m_number;
-    number.assign(n_cols, 0);
-    for(const Sparse_entry<From>& x : in.e) ++number[x.col];
-    m_original.resize(n_cols);
+    m_number.resize(sys.n_cols);
+    m_original.resize(sys.n_cols);
     std::uint32_t nc = 0;
-    m_columns_in_two_rows = 0;
-    for(std::size_t c = 0; c < n_cols; ++c) {             // no branch: which columns occur follows no pattern
-      const std::uint32_t occurs = number[c] != 0;
-      m_columns_in_two_rows += std::size_t(number[c] == 2);   // canonical rows: entries of a row have distinct columns
-      number[c] = nc;
+    for(std::size_t c = 0; c < sys.n_cols; ++c) {         // no branch: which columns occur follows no pattern
+      m_number[c] = nc;
       m_original[nc] = std::uint32_t(c);
-      nc += occurs;
+      nc += std::uint32_t(sys.column_used(c));
     }
     m_original.resize(nc);
   }
@@ -314,12 +302,15 @@ private:
   void use_rows(const Integer_system& sys, const Csr_rows<Int>* as_given)
   {
     m_in = as_given;
+    m_n_cols = sys.n_cols;
     if(m_in != nullptr) return;
     if(m_input.ptr.empty()) {
+      number_columns(sys);
       if(sys.fits_int64) number_rows(sys.rows64);
       else               number_rows(sys.rowsz);
     }
     m_in = &m_input;
+    m_n_cols = m_original.size();
   }
   bool numbered() const { return m_in == &m_input; }
   std::uint32_t original(std::uint32_t c) const { return numbered() ? m_original[c] : c; }
@@ -624,10 +615,22 @@ private:
   void extract(const Integer_system& sys, Irref<Int>& out)
   {
     out.n_cols = sys.n_cols;                        // columns are the system's from here on (original())
+    // the columns that occur in a row are free unless they are pivots; with numbered columns only those
+    // are visited (dragon full-seamless: 7.8k of 29k columns), else all, without a branch per column
+    const std::size_t occurring = numbered() ? m_original.size() : sys.n_cols;
     out.kind.assign(sys.n_cols, (unsigned char)UNCONSTRAINED_COLUMN);
-    for(const std::uint32_t c : m_original) out.kind[c] = FREE_COLUMN;
+    if(numbered()) for(const std::uint32_t c : m_original) out.kind[c] = FREE_COLUMN;
+    else for(std::size_t c = 0; c < sys.n_cols; ++c) out.kind[c] = (unsigned char)(sys.column_used(c) ? FREE_COLUMN : UNCONSTRAINED_COLUMN);
     std::size_t rank = 0, total = 0;
     for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[original(row.pivot_col)] = IMPLIED_COLUMN; }
+    out.free_columns.resize(occurring + 1);        // in increasing order (+ 1: every column visited is written,
+    std::size_t f = 0;                              // the free ones kept)
+    for(std::size_t k = 0; k < occurring; ++k) {
+      const std::uint32_t c = original(std::uint32_t(k));
+      out.free_columns[f] = c;
+      f += std::size_t(out.kind[c] == FREE_COLUMN);
+    }
+    out.free_columns.resize(f);
     out.ptr.resize(rank + 1); out.ptr[0] = 0;
     out.col.resize(total + 1); out.val.resize(total + 1);   // + 1: see the entry loop
     out.pivot_col.resize(rank); out.pivot.resize(rank); out.rhs.resize(rank);
@@ -672,16 +675,15 @@ private:
     void operator()(Entry* p) const { Huge_page_allocator<Entry>().deallocate(p, n); }   // entries are trivial (int64 only)
   };
 
-  std::size_t m_n_cols = 0;                            // columns of the rows read (m_in)
+  std::size_t m_n_cols = 0;                            // columns of the rows read (m_in, see use_rows())
   bool m_prefetch = true;                              // see Window
-  std::size_t m_columns_in_two_rows = 0;               // see run()
   Big_vector<Row> m_rows;
   std::vector<std::vector<Entry> > m_own;              // Gmpz only: the entries of modified rows
   Big_vector<Column> m_cols;
   Big_vector<Occurrence> m_pool;                       // column occurrences beyond r0, r1
   const Csr_rows<Int>* m_in = nullptr;                // the rows read: the caller's or m_input (see use_rows())
   Csr_rows<Int> m_input;                               // the input in Int, columns numbered (see number_columns())
-  std::vector<std::uint32_t> m_number;                 // per column of the system: its number
+  std::vector<std::uint32_t> m_number;                 // per column of the system: its number (numbered rows only)
   std::vector<std::uint32_t> m_original;               // per column number: the system's column (those that occur in a row)
   std::vector<std::vector<std::uint32_t> > m_buckets;
   std::size_t m_cursor = 0;
