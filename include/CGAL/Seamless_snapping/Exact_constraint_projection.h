@@ -20,6 +20,7 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -178,7 +179,8 @@ public:
       const auto t1 = std::chrono::steady_clock::now();
       m_least_squares->project(m_b_double, xb, start);
       report.least_squares_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
-      evaluate(start, result, report);
+      if(std::all_of(start.begin(), start.end(), [](double v) { return std::isfinite(v); })) evaluate(start, result, report);
+      else { report.status = INVALID_INPUT; report.message = "the floating-point projection is not finite"; }
       report.minimal_change = report.status == SUCCESS;
     }
     if(!report.minimal_change) {

@@ -42,6 +42,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -114,29 +115,70 @@ inline void report_success(const Integer_system& sys, const std::vector<double>&
                    + " of " + std::to_string(out.size()) + " variables changed, by at most " + std::to_string(report.max_abs_change);
 }
 
-// max_i |C_i x̄ - b_i| / ||C_i||_2 in double arithmetic (Projection_report::input_violation)
-inline double scaled_input_violation(const Integer_system& sys, const std::vector<double>& xbar)
+// max_i |C_i x̄ - b_i| / ||C_i||_2 in double arithmetic (Projection_report::input_violation); one
+// loop per number type (20k-row seamless system: 0.14 -> 0.08 ms), x̄ prefetched as in the other
+// passes over the rows (their columns are random on large shuffled systems)
+template <typename Int>
+double scaled_input_violation(const Csr_rows<Int>& rows, const std::vector<double>& xbar)
 {
-  const bool small = sys.fits_int64;
-  const std::vector<std::size_t>& ptr = small ? sys.rows64.ptr : sys.rowsz.ptr;
+  typedef Integer_ops<Int> Ops;
+  const std::size_t entries = rows.e.size();
   double worst = 0;
-  for(std::size_t i = 0; i < sys.n_rows; ++i) {
-    double r = small ? -double(sys.rows64.b[i]) : -CGAL::to_double(sys.rowsz.b[i]), norm2 = 0;
-    for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) {
-      const double c = small ? double(sys.rows64.e[q].val) : CGAL::to_double(sys.rowsz.e[q].val);
-      r += c * xbar[small ? sys.rows64.e[q].col : sys.rowsz.e[q].col];
+  for(std::size_t i = 0; i < rows.b.size(); ++i) {
+    double r = -Ops::to_double(rows.b[i]), norm2 = 0;
+    for(std::size_t q = rows.ptr[i]; q < rows.ptr[i + 1]; ++q) {
+      if(q + prefetch_distance < entries) __builtin_prefetch(&xbar[rows.e[q + prefetch_distance].col]);
+      const double c = Ops::to_double(rows.e[q].val);
+      r += c * xbar[rows.e[q].col];
       norm2 += c * c;
     }
     if(norm2 > 0) worst = std::max(worst, std::fabs(r) / std::sqrt(norm2));
   }
   return worst;
 }
+inline double scaled_input_violation(const Integer_system& sys, const std::vector<double>& xbar)
+{
+  return sys.fits_int64 ? scaled_input_violation(sys.rows64, xbar) : scaled_input_violation(sys.rowsz, xbar);
+}
+
+// The final check of the evaluation: every row of the caller's canonical system holds for the grid
+// integers z of the result, sum_k C_ik z_k == b_i / s, in exact integer arithmetic; false with the
+// first violated row otherwise. Every z_k is a grid integer (|z_k| < 2^52), so with int64 coefficients
+// (|C_ik| <= 2^63) and b_i = 0 a row of fewer than 2^12 entries is summed in 128 bits without an
+// overflow test (the common case); other rows in Gmpz.
+template <typename Int>
+bool rows_hold_exactly(const Csr_rows<Int>& rows, const Fixed_point_grid& grid, const std::vector<std::int64_t>& z,
+                       std::size_t& violated)
+{
+  const std::size_t entries = rows.e.size();
+  for(std::size_t i = 0; i < rows.b.size(); ++i) {
+    const std::size_t first = rows.ptr[i], last = rows.ptr[i + 1];
+    if constexpr(std::is_same<Int, std::int64_t>::value) {
+      if(rows.b[i] == 0 && last - first < Grid_sum::unchecked_terms) {
+        __int128 acc = 0;
+        for(std::size_t q = first; q < last; ++q) {
+          if(q + prefetch_distance < entries) __builtin_prefetch(&z[rows.e[q + prefetch_distance].col]);
+          acc += (__int128)rows.e[q].val * z[rows.e[q].col];
+        }
+        if(acc != 0) { violated = i; return false; }
+        continue;
+      }
+    }
+    CGAL::Gmpz acc(0), rhs;
+    for(std::size_t q = first; q < last; ++q) acc += to_gmpz(rows.e[q].val) * to_gmpz(z[rows.e[q].col]);
+    if(!(scale_by_power_of_two(to_gmpz(rows.b[i]), 52 - grid.K, rhs) && acc == rhs)) { violated = i; return false; }
+  }
+  return true;
+}
 
 // One attempt on a given grid. `refine`: minimal-change mode, xbar is the floating-point projection
 // and the free grid integers are chosen jointly (rounding_refinement.h) instead of rounded one by one.
+// `max_abs`: max |x̄_i| over the constrained columns where the caller knows it, else negative; a grid
+// whose range contains it contains every x̄_i, and the scan for values outside the range is left out.
 template <typename Int>
 void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
-                      const Fixed_point_grid& grid, std::vector<double>& x, Projection_report& report, bool refine = false)
+                      const Fixed_point_grid& grid, std::vector<double>& x, Projection_report& report, bool refine = false,
+                      double max_abs = -1)
 {
   typedef Integer_ops<Int> Ops;
   const std::size_t n = ir.n_cols, m = ir.rank();
@@ -145,7 +187,8 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   if(!grid.in_range) { fail(RANGE_EXCEEDED, grid.range_message()); return; }
   auto outside = [&](std::size_t i) { return ir.kind[i] != UNCONSTRAINED_COLUMN && !(std::fabs(xbar[i]) < grid.delta); };
   bool any_outside = false;                     // without a branch per column: which are constrained follows no pattern
-  for(std::size_t i = 0; i < n; ++i) any_outside = any_outside | outside(i);
+  if(!(max_abs >= 0 && max_abs < grid.delta))
+    for(std::size_t i = 0; i < n; ++i) any_outside = any_outside | outside(i);
   for(std::size_t i = 0; i < n && any_outside; ++i)
     if(outside(i)) {
       fail(RANGE_EXCEEDED, "|x̄[" + std::to_string(i) + "]| is outside the fixed-point range (-2^" + std::to_string(grid.K)
@@ -181,10 +224,9 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   std::vector<double> out(xbar);
   std::vector<std::int64_t> z(n, 0);            // grid integers of the constrained variables
   const CGAL::Gmpz zero(0);                     // the shift of unshifted variables (multiprecision makeDIV)
-  for(std::size_t i = 0; i < n; ++i) {
-    if(ir.kind[i] != FREE_COLUMN) continue;
-    const bool unit = Ops::is_unit(ir.divisor[i]);
-    auto it = z0.find(std::uint32_t(i));
+  for(const std::uint32_t i : ir.free_columns) {
+    const bool unit = ir.unit_pivots || Ops::is_unit(ir.divisor[i]);   // all pivots 1: every divisor is 1
+    const auto it = z0.empty() ? z0.end() : z0.find(i);
     if(unit && it == z0.end()) {
       out[i] = grid.round(xbar[i]);             // F_delta(x̄_i)
       if(!(std::fabs(out[i]) < grid.delta)) {
@@ -216,6 +258,7 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   Safe_dot_workspace ws;
   const bool shifted = !B.empty();                         // b != 0: constants c0_j and shifts z0
   CGAL::Gmpz c0;                                           // reused: no allocation per row
+  const std::size_t terms_total = ir.col.size();
   for(std::size_t j = 0; j < m; ++j) {
     const Int& p = ir.pivot[j];
     const bool unit = Ops::is_unit(p);
@@ -224,9 +267,12 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       // is below 2^52, this is the safe dot product's own fast path (safe_dot.h): no partial sum
       // can leave the range, and the value is the exact integer sum.
       Grid_sum acc;
-      for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
-        if(q + prefetch_distance < ir.col.size()) __builtin_prefetch(&z[ir.col[q + prefetch_distance]]);
-        acc.add(ir.val[q], z[ir.col[q]]);
+      const std::size_t first = ir.ptr[j], last = ir.ptr[j + 1];
+      const bool bounded = last - first < Grid_sum::unchecked_terms;
+      for(std::size_t q = first; q < last; ++q) {
+        if(q + prefetch_distance < terms_total) __builtin_prefetch(&z[ir.col[q + prefetch_distance]]);
+        if(bounded) acc.add_unchecked(ir.val[q], z[ir.col[q]]);
+        else        acc.add(ir.val[q], z[ir.col[q]]);
       }
       if(acc.is_safe()) {
         const std::int64_t zp = -std::int64_t(acc.sum);
@@ -311,38 +357,11 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
     out[ir.pivot_col[j]] = r;
   }
 
-  // -- exact check of every row of the caller's (canonical) system: sum C_ik z_k == b_i / s
-  {
-    const bool small = sys.fits_int64;
-    const std::size_t rows = sys.n_rows;
-    const std::vector<std::size_t>& ptr = small ? sys.rows64.ptr : sys.rowsz.ptr;
-    for(std::size_t i = 0; i < rows; ++i) {
-      bool ok = false, done = false;
-      if(small && sys.rows64.b[i] == 0) {      // fast path: 128-bit accumulation with overflow detection
-        __int128 acc = 0;
-        bool overflow = false;
-        for(std::size_t q = ptr[i]; q < ptr[i + 1] && !overflow; ++q) {
-          if(q + prefetch_distance < sys.rows64.e.size()) __builtin_prefetch(&z[sys.rows64.e[q + prefetch_distance].col]);
-          __int128 t;
-          overflow = __builtin_mul_overflow((__int128)sys.rows64.e[q].val, (__int128)z[sys.rows64.e[q].col], &t)
-                  || __builtin_add_overflow(acc, t, &acc);
-        }
-        if(!overflow) { ok = (acc == 0); done = true; }
-      }
-      if(!done) {                              // general path in Gmpz
-        CGAL::Gmpz acc(0), rhs;
-        for(std::size_t q = ptr[i]; q < ptr[i + 1]; ++q) {
-          if(small) acc += to_gmpz(sys.rows64.e[q].val) * to_gmpz(z[sys.rows64.e[q].col]);
-          else      acc += sys.rowsz.e[q].val * to_gmpz(z[sys.rowsz.e[q].col]);
-        }
-        const CGAL::Gmpz bi = small ? to_gmpz(sys.rows64.b[i]) : sys.rowsz.b[i];
-        ok = scale_by_power_of_two(bi, 52 - grid.K, rhs) && acc == rhs;
-      }
-      if(!ok) {
-        fail(EXACTNESS_CHECK_FAILED, "internal error: row " + std::to_string(i) + " of C x = b is violated after evaluation");
-        return;
-      }
-    }
+  // -- exact check of every row of the caller's (canonical) system
+  std::size_t violated = 0;
+  if(!(sys.fits_int64 ? rows_hold_exactly(sys.rows64, grid, z, violated) : rows_hold_exactly(sys.rowsz, grid, z, violated))) {
+    fail(EXACTNESS_CHECK_FAILED, "internal error: row " + std::to_string(violated) + " of C x = b is violated after evaluation");
+    return;
   }
 
   report_success(sys, xbar, out, report);
@@ -365,29 +384,25 @@ void evaluate_on_common_grid(const Irref<Int>& ir, const Integer_system& sys, co
     if(!Ops::is_zero(ir.rhs[j]))
       max_b = std::max(max_b, std::fabs(Ops::to_double(ir.rhs[j]) / Ops::to_double(ir.pivot[j])));
   const Fixed_point_grid g1 = Fixed_point_grid::from_max_abs(max_x, options.delta_margin_bits);
-  evaluate_on_grid(ir, sys, xbar, g1, x, report, refine);
+  evaluate_on_grid(ir, sys, xbar, g1, x, report, refine, max_x);
   if(report.status != RANGE_EXCEEDED || max_b <= max_x) return;
   const Fixed_point_grid g2 = Fixed_point_grid::from_max_abs(std::max(max_x, max_b), options.delta_margin_bits);
   if(g2.K == g1.K) return;
   Projection_report second;
-  evaluate_on_grid(ir, sys, xbar, g2, x, second, refine);
+  evaluate_on_grid(ir, sys, xbar, g2, x, second, refine, max_x);
   if(second.status == SUCCESS) report = second;
   else report.message += " (also with delta = 2^" + std::to_string(g2.K) + " from |b̂_j / p_j|: " + second.message + ")";
 }
 
-// Alg. 3 driver: validates x̄, evaluates on the common grid (given in the options, or chosen from x̄),
-// and flags a change that is huge relative to the input's violation (Projection_report::large_change).
+// Alg. 3 driver: evaluates on the common grid (given in the options, or chosen from x̄), and flags a
+// change that is huge relative to the input's violation (Projection_report::large_change).
 // Without a given grid, b = 0, and a large change or RANGE_EXCEEDED, the evaluation with one quantum
 // per IRREF row (row_grids.h) is tried, and kept if it is exact and changes x̄ less.
+// Precondition: every x̄_i is finite (Exact_constraint_projection::project() checks it).
 template <typename Int>
 void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
               const Projection_options& options, std::vector<double>& x, Projection_report& report)
 {
-  for(std::size_t i = 0; i < xbar.size(); ++i)
-    if(!std::isfinite(xbar[i])) {
-      report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite";
-      return;
-    }
   report.input_violation = scaled_input_violation(sys, xbar);
   auto flag = [&](Projection_report& r) {
     r.input_violation = report.input_violation;

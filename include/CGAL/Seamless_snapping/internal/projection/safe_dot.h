@@ -35,6 +35,7 @@
 #include <CGAL/Gmpz.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -58,6 +59,9 @@ struct Grid_sum
   __int128 sum = 0, magnitude = 0;
   bool overflow = false;
   static constexpr std::int64_t D = std::int64_t(1) << 52;   // delta / s
+  // With grid integers (|z| < 2^52) each product is below 2^115, so fewer than 2^12 terms cannot
+  // overflow either 128-bit sum: such sums may use add_unchecked().
+  static constexpr std::size_t unchecked_terms = std::size_t(1) << 12;
 
   void add(std::int64_t c, std::int64_t z)
   {
@@ -65,12 +69,25 @@ struct Grid_sum
     const __int128 ap = p < 0 ? -p : p;
     overflow |= __builtin_add_overflow(sum, p, &sum) | __builtin_add_overflow(magnitude, ap, &magnitude);
   }
+  void add_unchecked(std::int64_t c, std::int64_t z)        // precondition: see unchecked_terms
+  {
+    const __int128 p = (__int128)c * z;
+    sum += p;
+    magnitude += p < 0 ? -p : p;
+  }
   template <typename Int>
   void add(const Int& c, std::int64_t z)
   {
     std::int64_t c64;
     if(!Integer_ops<Int>::to_int64(c, c64)) overflow = true;
     else add(c64, z);
+  }
+  template <typename Int>
+  void add_unchecked(const Int& c, std::int64_t z)
+  {
+    std::int64_t c64;
+    if(!Integer_ops<Int>::to_int64(c, c64)) overflow = true;
+    else add_unchecked(c64, z);
   }
   // Alg. 5 needs no step here: no partial sum in any order can leave (-delta, delta), and the
   // result is the integer sum.
