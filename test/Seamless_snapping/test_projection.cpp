@@ -135,6 +135,32 @@ void check_statistics(const Linear_system& s, const SS::Irref_statistics& st)
   (void)s; (void)st; (void)constrained;
 }
 
+// max_i |C_i x - b_i| / ||C_i||_2 with residuals summed to about twice double precision (products by
+// fma, sums by TwoSum), and the rounding error a plain double sum of each row may add (`slack`): the
+// reference for Projection_report::input_violation, which sums in doubles
+struct Violation_reference { double value = 0, slack = 0; };
+Violation_reference scaled_violation(const Linear_system& s, const std::vector<double>& x)
+{
+  std::vector<double> hi(s.m), lo(s.m, 0.), norm2(s.m, 0.), magnitude(s.m), length(s.m, 0.);
+  for(std::size_t i = 0; i < s.m; ++i) { hi[i] = -double(s.b[i]); magnitude[i] = std::fabs(hi[i]); }
+  for(const auto& t : s.triplets) {
+    const std::size_t i = std::size_t(t.row());
+    const double c = double(t.value()), p = c * x[std::size_t(t.col())], pe = std::fma(c, x[std::size_t(t.col())], -p);
+    const double sum = hi[i] + p, z = sum - hi[i];
+    lo[i] += ((hi[i] - (sum - z)) + (p - z)) + pe;
+    hi[i] = sum;
+    norm2[i] += c * c; magnitude[i] += std::fabs(p); length[i] += 1;
+  }
+  Violation_reference v;
+  for(std::size_t i = 0; i < s.m; ++i) {
+    if(norm2[i] == 0) continue;
+    const double norm = std::sqrt(norm2[i]);
+    v.value = std::max(v.value, std::fabs(hi[i] + lo[i]) / norm);
+    v.slack = std::max(v.slack, 4 * (length[i] + 2) * 0x1p-53 * magnitude[i] / norm);
+  }
+  return v;
+}
+
 // the core result: SUCCESS, all rows exact, untouched (unconstrained) variables bit-identical
 void check_success(const Linear_system& s, const std::vector<double>& xbar, const Outcome& o)
 {
@@ -149,7 +175,14 @@ void check_success(const Linear_system& s, const std::vector<double>& xbar, cons
   std::size_t changed = 0;
   for(std::size_t j = 0; j < s.n; ++j) changed += !bit_identical(o.x[j], xbar[j]);
   assert(o.report.changed_variables == changed);
-  (void)xbar;
+  // the input's violation is x̄'s in every mode (the minimal-change mode snaps another point), and
+  // the large-change flag compares the change with it (0 for an exact x̄, which is returned as is)
+  const Violation_reference v = scaled_violation(s, xbar);
+  if(!(std::fabs(o.report.input_violation - v.value) <= 1e-9 * v.value + v.slack))
+    std::cout << "  input violation " << o.report.input_violation << ", reference " << v.value << " +- " << v.slack << " (" << o.report.message << ")" << std::endl;
+  assert(std::fabs(o.report.input_violation - v.value) <= 1e-9 * v.value + v.slack);
+  assert(o.report.large_change == (o.report.max_abs_change > SS::Projection_report::large_change_factor * o.report.input_violation));
+  (void)xbar; (void)v;
 }
 
 double max_abs(const std::vector<double>& v) { double r = 0; for(double a : v) r = std::max(r, std::abs(a)); return r; }

@@ -193,8 +193,10 @@ public:
       if(report.status == SUCCESS) report.message += note;
     }
     if(report.status == SUCCESS) {
-      if(report.minimal_change) {                        // the evaluation measured the change from the projected point
+      if(report.minimal_change) {                        // the evaluation measured from the projected point: now from x̄
         internal::measure_change(xb, result, report);
+        report.input_violation = internal::scaled_input_violation(m_system, xb);
+        report.large_change = report.max_abs_change > Projection_report::large_change_factor * report.input_violation;
         report.message = "all " + std::to_string(m_statistics.rows) + " rows hold exactly; " + std::to_string(report.changed_variables)
                        + " of " + std::to_string(n) + " variables changed, by at most " + std::to_string(report.max_abs_change)
                        + " (floating-point projection snapped)";

@@ -403,9 +403,9 @@ template <typename Int>
 void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector<double>& xbar,
               const Projection_options& options, std::vector<double>& x, Projection_report& report)
 {
-  report.input_violation = scaled_input_violation(sys, xbar);
+  const double violation = scaled_input_violation(sys, xbar);   // (a second grid's report replaces the first one)
   auto flag = [&](Projection_report& r) {
-    r.input_violation = report.input_violation;
+    r.input_violation = violation;
     r.large_change = r.status == SUCCESS && r.max_abs_change > Projection_report::large_change_factor * r.input_violation;
   };
   if(options.delta_exponent) {
