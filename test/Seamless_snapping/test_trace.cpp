@@ -306,7 +306,7 @@ static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Me
   fs::remove(base + ".obj");
   std::printf("trace: %-40s layout: %zu patches, %zu quads (%s); nodes %zu arcs %zu euler %d; %zu polygons, %zu arc edges\n",
               what.c_str(), L.patches.size(), L.quad_patches, aligned_border ? "all" : "unaligned border", L.nodes, L.arcs,
-              L.euler_characteristic, r.number_of_faces(), arc_edges);
+              L.euler_characteristic, std::size_t(r.number_of_faces()), arc_edges);
 }
 
 // Checks the properties of the motorcycle graph of an exactly seamless map without fold-overs and
