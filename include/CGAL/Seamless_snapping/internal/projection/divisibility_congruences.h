@@ -190,7 +190,7 @@ Status solve_divisibility_congruences(const Irref<Int>& ir, const std::vector<CG
       return INFEASIBLE;
     }
     for(std::size_t c = 0; c < cols.size(); ++c) {
-      const Z v = Integer_ops<Z>::mod_floor(y[c], to_gmpz(ir.divisor[cols[c]]));
+      const Z v = Integer_ops<Z>::mod_floor(y[c], to_gmpz(ir.divisor_of(cols[c])));
       if(v != 0) z0[cols[c]] = v;
     }
   }

@@ -225,7 +225,8 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   std::vector<std::int64_t> z(n, 0);            // grid integers of the constrained variables
   const CGAL::Gmpz zero(0);                     // the shift of unshifted variables (multiprecision makeDIV)
   for(const std::uint32_t i : ir.free_columns) {
-    const bool unit = ir.unit_pivots || Ops::is_unit(ir.divisor[i]);   // all pivots 1: every divisor is 1
+    const Int& l_i = ir.divisor_of(i);            // the divisor of Alg. 4 (1 where all pivots are)
+    const bool unit = Ops::is_unit(l_i);
     const auto it = z0.empty() ? z0.end() : z0.find(i);
     if(unit && it == z0.end()) {
       out[i] = grid.round(xbar[i]);             // F_delta(x̄_i)
@@ -236,10 +237,10 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
       z[i] = grid.to_integer(out[i]);
     } else {
       std::int64_t l = 0;
-      const bool small = it == z0.end() && Ops::to_int64(ir.divisor[i], l) && l <= (std::int64_t(1) << 20);
+      const bool small = it == z0.end() && Ops::to_int64(l_i, l) && l <= (std::int64_t(1) << 20);
       if(!(small ? make_div(xbar[i], grid, l, z[i])
-                 : make_div(xbar[i], grid, to_gmpz(ir.divisor[i]), it == z0.end() ? zero : it->second, z[i]))) {
-        fail(RANGE_EXCEEDED, "free variable " + std::to_string(i) + " must be a multiple of " + Ops::to_string(ir.divisor[i])
+                 : make_div(xbar[i], grid, to_gmpz(l_i), it == z0.end() ? zero : it->second, z[i]))) {
+        fail(RANGE_EXCEEDED, "free variable " + std::to_string(i) + " must be a multiple of " + Ops::to_string(l_i)
                              + " grid quanta (lcm of its rows' pivots, Alg. 4), and no such multiple lies in the fixed-point range");
         return;
       }

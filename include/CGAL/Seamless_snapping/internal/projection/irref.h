@@ -81,9 +81,13 @@ struct Irref
   std::vector<Int> val;
   std::vector<unsigned char> kind;        // Column_kind per column
   std::vector<std::uint32_t> free_columns;// the columns of kind FREE_COLUMN, in increasing order
-  std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none
+  std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none;
+                                          // empty when every pivot is 1 (read it through divisor_of())
   Int max_abs = Integer_ops<Int>::from_int64(0);  // largest |entry| of the pivots, rhs and val
   bool unit_pivots = true;                // all pivots are 1: every divisor is 1
+
+  const Int& divisor_of(std::size_t c) const { return unit_pivots ? one : divisor[c]; }
+  Int one = Integer_ops<Int>::from_int64(1);
   bool homogeneous = true;                // b̂ = 0
   std::size_t dependent_rows = 0;
   std::size_t eliminations = 0;
@@ -678,7 +682,6 @@ private:
     out.ptr.resize(rank + 1); out.ptr[0] = 0;
     out.col.resize(total + 1); out.val.resize(total + 1);   // + 1: see the entry loop
     out.pivot_col.resize(rank); out.pivot.resize(rank); out.rhs.resize(rank);
-    out.divisor.assign(sys.n_cols, Ops::from_int64(1));
     Int lo = Ops::from_int64(0), hi = lo;           // range of the values written: max_abs at the end
     auto note = [&](const Int& v) { if(Ops::less(hi, v)) hi = v; if(Ops::less(v, lo)) lo = v; return v; };
     std::size_t j = 0, t = 0;                       // next IRREF row, next entry
@@ -701,6 +704,7 @@ private:
       }
       for(std::size_t q = first; q < t; ++q) CGAL_assertion(out.kind[out.col[q]] == FREE_COLUMN);
       if(!Ops::is_unit(p)) {
+        if(out.unit_pivots) out.divisor.assign(sys.n_cols, Ops::from_int64(1));   // at the first pivot other than 1
         out.unit_pivots = false;
         for(std::size_t q = first; q < t; ++q) out.divisor[out.col[q]] = Ops::lcm(out.divisor[out.col[q]], p);   // Alg. 4
       }

@@ -152,7 +152,7 @@ bool evaluate_on_row_grids(const Irref<Int>& ir, const Integer_system& sys, cons
     if(F[i] > 1023) return false;
     // a fresh destination: CGAL::Gmpz copies share their representation, and an in-place write
     // through to_gmpz()'s copy would change the IRREF's divisor for every later projection
-    const CGAL::Gmpz divisor = to_gmpz(Ops::abs(ir.divisor[i]));
+    const CGAL::Gmpz divisor = to_gmpz(Ops::abs(ir.divisor_of(i)));
     CGAL::Gmpz odd;
     mpz_tdiv_q_2exp(odd.mpz(), divisor.mpz(), (unsigned long)two_adic_valuation(divisor));
     CGAL::Gmpz mx; int ex;
