@@ -12,7 +12,7 @@
 //   bench_projection                     generated systems (seamless-like 2k..1M rows, random 1k..10k rows)
 //   bench_projection --quick             only the small sizes
 //   bench_projection --no-check          skip the exact Gmpq check of C x = b (default: checked)
-//   bench_projection --write-dir DIR     also dump every generated system: DIR/<name>.mtx, _b.txt, _xbar.txt
+//   bench_projection --write-dir DIR     also dump every system (generated, or with --real): DIR/<name>.mtx, _b.txt, _xbar.txt
 //   bench_projection --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt]
 //                                        one system from files (Matrix Market coordinate, 1-based,
 //                                        integer or real entries with integral values; one number per line)
@@ -266,6 +266,7 @@ int run_real(const Settings& set)
     std::vector<double> xbar;
     std::string error;
     if(!real_seam_system(f, s, xbar, error)) { std::fprintf(stderr, "error: %s\n", error.c_str()); status = EXIT_FAILURE; continue; }
+    dump(s, xbar, set);
     bench(s, xbar, set);
   }
   return status;
@@ -275,7 +276,7 @@ void usage(const char* prog)
 {
   std::fprintf(stderr, "usage: %s [--quick] [--no-check] [--noise R] [--time-limit S] [--repeat R] [--write-dir DIR]\n"
                        "       %s --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt] [--no-check]\n"
-                       "       %s --real FILE_OR_DIR [--real ...] [--repeat R] [--no-check] [--both-modes]\n", prog, prog, prog);
+                       "       %s --real FILE_OR_DIR [--real ...] [--repeat R] [--no-check] [--both-modes] [--write-dir DIR]\n", prog, prog, prog);
 }
 
 } // namespace
