@@ -29,6 +29,17 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// A variable in the evaluation: the grid integer z of its result (x = s z; 0 until evaluated) beside
+// its input x̄ (the value snapped: x̄ itself, or its floating-point projection). The final check reads
+// both at the random columns of the caller's rows (the exact check and x̄'s violation), so they share
+// one record: one cache line per entry instead of two on large shuffled systems, whose columns
+// leave the cache.
+struct Grid_variable
+{
+  std::int64_t z;
+  double xbar;
+};
+
 struct Fixed_point_grid
 {
   // The exponents for which F_delta is made of doubles and the rounding below is exact: delta = 2^K

@@ -37,16 +37,17 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// z: grid integers with the free ones rounded; changes free entries of z only (and `out` with them).
+// var: grid integers z with the free ones rounded, and the target y (var[i].xbar); changes the z of
+// free variables only (and `out` with them).
 template <typename Int>
-void refine_free_rounding(const Irref<Int>& ir, const Fixed_point_grid& grid, const std::vector<double>& target,
-                          std::vector<std::int64_t>& z, std::vector<double>& out)
+void refine_free_rounding(const Irref<Int>& ir, const Fixed_point_grid& grid, Grid_variable* var,
+                          std::vector<double>& out)
 {
   typedef Integer_ops<Int> Ops;
   if(!(ir.homogeneous && ir.unit_pivots)) return;
   const std::size_t n = ir.n_cols, m = ir.rank();
   std::vector<double> Y(n);
-  for(std::size_t i = 0; i < n; ++i) Y[i] = target[i] / grid.quantum;           // exact: a power of 2
+  for(std::size_t i = 0; i < n; ++i) Y[i] = var[i].xbar / grid.quantum;         // exact: a power of 2
   // columns of Ĉ (free variables -> rows), and the implied errors r_j
   std::vector<std::size_t> cptr(n + 1, 0);
   for(std::uint32_t c : ir.col) ++cptr[c + 1];
@@ -66,7 +67,7 @@ void refine_free_rounding(const Irref<Int>& ir, const Fixed_point_grid& grid, co
         const double t = s + p, w = t - s;
         err += ((s - (t - w)) + (p - w)) + pe;
         s = t;
-        dev -= v * (double(z[c]) - Y[c]);
+        dev -= v * (double(var[c].z) - Y[c]);
       }
       r[j] = dev - (s + err);
     }
@@ -76,13 +77,13 @@ void refine_free_rounding(const Irref<Int>& ir, const Fixed_point_grid& grid, co
     std::size_t moves = 0;
     for(std::size_t i = 0; i < n; ++i) {
       if(ir.kind[i] != FREE_COLUMN || cptr[i] == cptr[i + 1]) continue;
-      const double e = double(z[i]) - Y[i];
+      const double e = double(var[i].z) - Y[i];
       double g = e, h = 1;                                   // E(t) - E(0) = 2 g t + h t^2
       for(std::size_t q = cptr[i]; q < cptr[i + 1]; ++q) { g -= r[crow[q]] * cval[q]; h += cval[q] * cval[q]; }
       const double t = std::nearbyint(-g / h);
-      if(t == 0 || !(2 * g * t + h * t * t < 0) || !(std::fabs(double(z[i]) + t) <= z_max)) continue;
-      z[i] += std::int64_t(t);
-      out[i] = grid.from_integer(z[i]);
+      if(t == 0 || !(2 * g * t + h * t * t < 0) || !(std::fabs(double(var[i].z) + t) <= z_max)) continue;
+      var[i].z += std::int64_t(t);
+      out[i] = grid.from_integer(var[i].z);
       for(std::size_t q = cptr[i]; q < cptr[i + 1]; ++q) r[crow[q]] -= cval[q] * t;
       ++moves;
     }
