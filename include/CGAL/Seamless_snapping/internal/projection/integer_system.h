@@ -58,7 +58,7 @@ struct Integer_system
   bool fits_int64 = true;              // which of the two stores is filled
   Csr_rows<std::int64_t> rows64;
   Csr_rows<CGAL::Gmpz> rowsz;
-  std::vector<std::uint32_t> column_rows;   // per column: the number of rows it has a nonzero entry in
+  std::vector<std::uint8_t> column_rows;    // per column: the number of rows it has a nonzero entry in, 3 for 3 or more
   std::size_t n_constrained_columns = 0;    // columns in at least one row
   std::size_t n_columns_in_two_rows = 0;    // columns in exactly two rows (see Irref_eliminator::run())
 
@@ -152,17 +152,18 @@ Status build_rows(std::size_t n_rows, std::size_t n_cols, const BRange& b, Visit
 }
 
 // Integer_system::column_rows and the counts derived from it (canonical rows: the entries of a row
-// have distinct columns). The counts are 32-bit: incrementing bytes (and fixing up columns in 256
-// rows or more) was slower on rows numbered along chains, where a column's two rows are close and
-// each increment waits for the store of the one before.
+// have distinct columns). Only 0, 1, 2 and "more" are told apart, so a byte per column counts, up to 3:
+// on shuffled rows the counts are random accesses, and bytes keep them in a quarter of the cache
+// that 32-bit counts take (1M-row shuffled seamless system: 12.8 -> 7.6 ms; along chains 3.5 -> 3.8 ms).
 inline void count_column_rows(Integer_system& sys)
 {
-  std::vector<std::uint32_t>& rows = sys.column_rows;
+  std::vector<std::uint8_t>& rows = sys.column_rows;
   rows.assign(sys.n_cols, 0);
-  if(sys.fits_int64) { for(const auto& x : sys.rows64.e) ++rows[x.col]; }
-  else               { for(const auto& x : sys.rowsz.e)  ++rows[x.col]; }
+  auto count = [&](std::uint32_t c) { const std::uint8_t r = rows[c]; rows[c] = std::uint8_t(r + (r < 3)); };
+  if(sys.fits_int64) { for(const auto& x : sys.rows64.e) count(x.col); }
+  else               { for(const auto& x : sys.rowsz.e)  count(x.col); }
   sys.n_constrained_columns = sys.n_columns_in_two_rows = 0;
-  for(const std::uint32_t r : rows) {             // no branch: which columns occur follows no pattern
+  for(const std::uint8_t r : rows) {              // no branch: which columns occur follows no pattern
     sys.n_constrained_columns += std::size_t(r != 0);
     sys.n_columns_in_two_rows += std::size_t(r == 2);
   }
