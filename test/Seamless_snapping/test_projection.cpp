@@ -536,7 +536,11 @@ void test_determinism()
     std::vector<double> y;
     assert(p.project(other, y).status == SS::SUCCESS && SS_test::exactly_satisfied(s, y));
     assert(p.project(xbar, x4).status == SS::SUCCESS && bit_identical(x4, x1));
-    std::cout << "project twice / after re-initialize / from Eigen::VectorXd / after another input: bit-identical x" << std::endl;
+    // in place: x is x̄ itself (project() reads the caller's vector without a copy), inexact then exact input
+    std::vector<double> v(xbar);
+    assert(p.project(v, v).status == SS::SUCCESS && bit_identical(v, x1));
+    assert(p.project(v, v).status == SS::SUCCESS && bit_identical(v, x1));
+    std::cout << "project twice / after re-initialize / from Eigen::VectorXd / after another input / in place: bit-identical x" << std::endl;
   }
   // scale covariance: for b = 0, scaling x̄ by 2^j must scale x by 2^j bit for bit (every step of
   // Sec. 4.3 is relative to delta = 2^K, so a mismatch would expose a hidden absolute constant)

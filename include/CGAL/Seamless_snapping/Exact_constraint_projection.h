@@ -158,11 +158,10 @@ public:
       report.message = "x has " + std::to_string(std::size_t(xbar.size())) + " entries, C has " + std::to_string(n) + " columns";
       return report;
     }
-    std::vector<double> xb(n);
-    for(std::size_t i = 0; i < n; ++i) {
-      xb[i] = double(xbar[i]);
+    std::vector<double> copy;
+    const std::vector<double>& xb = as_doubles(xbar, copy);
+    for(std::size_t i = 0; i < n; ++i)
       if(!std::isfinite(xb[i])) { report.status = INVALID_INPUT; report.message = "x̄[" + std::to_string(i) + "] is not finite"; return report; }
-    }
     if(input_is_exact(xb)) {                                   // nothing to do: x̄ comes back bit-identical
       report.status = SUCCESS;
       if(m_options.delta_exponent) {
@@ -170,7 +169,7 @@ public:
         report.delta_exponent = grid.K; report.delta = grid.delta; report.quantum = grid.quantum;
       }
       report.message = "x̄ satisfies all " + std::to_string(m_statistics.rows) + " rows exactly; returned unchanged";
-      x.swap(xb);
+      x = xb;                                                  // (x may be x̄ itself)
       report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       return report;
     }
@@ -231,6 +230,16 @@ private:
   internal::Pivot_order pivot_order() const
   {
     return m_options.fill_reducing_order ? internal::AUTOMATIC_PIVOT_ORDER : internal::PIVOT_RULE;
+  }
+
+  // x̄ as a vector of doubles: the caller's own where it is one (1M-row system: no copy of 16 MB), else a copy
+  static const std::vector<double>& as_doubles(const std::vector<double>& xbar, std::vector<double>&) { return xbar; }
+  template <typename XRange>
+  static const std::vector<double>& as_doubles(const XRange& xbar, std::vector<double>& copy)
+  {
+    copy.resize(std::size_t(xbar.size()));
+    for(std::size_t i = 0; i < copy.size(); ++i) copy[i] = double(xbar[i]);
+    return copy;
   }
 
   // x̄ satisfies every row exactly (and, with a given grid, its constrained values lie on that grid,
