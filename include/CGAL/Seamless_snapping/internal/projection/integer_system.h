@@ -17,6 +17,7 @@
 // the whole projection deterministic. Entries are int64 when all fit, CGAL::Gmpz otherwise.
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/projection/default_init_allocator.h>
 #include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
 
 #include <algorithm>
@@ -42,13 +43,14 @@ struct Sparse_entry
   Int val;
 };
 
-// Rows in compressed sparse row storage (entries of row i: e[ptr[i]] .. e[ptr[i+1]-1]).
+// Rows in compressed sparse row storage (entries of row i: e[ptr[i]] .. e[ptr[i+1]-1]); sized, then
+// written in full (not zeroed first: Default_init_vector).
 template <typename Int>
 struct Csr_rows
 {
-  std::vector<std::size_t> ptr;
-  std::vector<Sparse_entry<Int> > e;
-  std::vector<Int> b;
+  Default_init_vector<std::size_t> ptr;
+  Default_init_vector<Sparse_entry<Int> > e;
+  Default_init_vector<Int> b;
   void clear() { ptr.clear(); e.clear(); b.clear(); }
 };
 

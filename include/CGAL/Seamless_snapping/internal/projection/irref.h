@@ -32,6 +32,7 @@
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Projection_report.h>
 #include <CGAL/Seamless_snapping/internal/projection/column_ordering.h>
+#include <CGAL/Seamless_snapping/internal/projection/default_init_allocator.h>
 #include <CGAL/Seamless_snapping/internal/projection/huge_page_allocator.h>
 #include <CGAL/Seamless_snapping/internal/projection/integer_ops.h>
 #include <CGAL/Seamless_snapping/internal/projection/integer_system.h>
@@ -68,19 +69,20 @@ enum Column_kind : unsigned char { UNCONSTRAINED_COLUMN = 0, FREE_COLUMN = 1, IM
 enum Pivot_order { AUTOMATIC_PIVOT_ORDER, PIVOT_RULE, FILL_REDUCING_ORDER };
 
 // The result: one row per pivot, x_{pivot_col} = (rhs - sum val * x_col) / pivot (Eq. 2'),
-// where every col of a row is a free column.
+// where every col of a row is a free column. (The arrays sized by extract() and then written in
+// full are Default_init_vectors: not zeroed first.)
 template <typename Int>
 struct Irref
 {
   std::size_t n_cols = 0;
-  std::vector<std::uint32_t> pivot_col;   // per pivot row
-  std::vector<Int> pivot;                 // per pivot row, > 0
-  std::vector<Int> rhs;                   // per pivot row: b̂
-  std::vector<std::size_t> ptr;           // free terms of pivot row j: [ptr[j], ptr[j+1])
-  std::vector<std::uint32_t> col;
-  std::vector<Int> val;
+  Default_init_vector<std::uint32_t> pivot_col;   // per pivot row
+  Default_init_vector<Int> pivot;                 // per pivot row, > 0
+  Default_init_vector<Int> rhs;                   // per pivot row: b̂
+  Default_init_vector<std::size_t> ptr;           // free terms of pivot row j: [ptr[j], ptr[j+1])
+  Default_init_vector<std::uint32_t> col;
+  Default_init_vector<Int> val;
   std::vector<unsigned char> kind;        // Column_kind per column
-  std::vector<std::uint32_t> free_columns;// the columns of kind FREE_COLUMN, in increasing order
+  Default_init_vector<std::uint32_t> free_columns;// the columns of kind FREE_COLUMN, in increasing order
   std::vector<Int> divisor;               // per column: lcm of the pivots of the rows it appears in (Alg. 4); 1 if none;
                                           // empty when every pivot is 1 (read it through divisor_of())
   Int max_abs = Integer_ops<Int>::from_int64(0);  // largest |entry| of the pivots, rhs and val
@@ -112,7 +114,7 @@ struct Irref
 inline bool narrow_irref(const Irref<CGAL::Gmpz>& z, Irref<std::int64_t>& r)
 {
   typedef Integer_ops<CGAL::Gmpz> Z;
-  auto conv = [](const std::vector<CGAL::Gmpz>& in, std::vector<std::int64_t>& out) {
+  auto conv = [](const auto& in, auto& out) {
     out.resize(in.size());
     for(std::size_t i = 0; i < in.size(); ++i)
       if(!Z::to_int64(in[i], out[i]) || out[i] == std::numeric_limits<std::int64_t>::min()) return false;   // see Integer_ops::negatable
@@ -269,7 +271,7 @@ private:
   void load()
   {
     const Csr_rows<Int>& in = *m_in;
-    const std::vector<std::size_t>& ptr = in.ptr;
+    const auto& ptr = in.ptr;
     const std::size_t n_rows = ptr.size() - 1;
     m_rows.assign(n_rows, Row());
     if(!FLAT) m_own.assign(n_rows, std::vector<Entry>());
@@ -671,14 +673,17 @@ private:
     else for(std::size_t c = 0; c < sys.n_cols; ++c) out.kind[c] = (unsigned char)(sys.column_used(c) ? FREE_COLUMN : UNCONSTRAINED_COLUMN);
     std::size_t rank = 0, total = 0;
     for(const Row& row : m_rows) if(row.state == PIVOT) { ++rank; total += row.size - 1; out.kind[original(row.pivot_col)] = IMPLIED_COLUMN; }
-    out.free_columns.resize(occurring + 1);        // in increasing order (+ 1: every column visited is written,
-    std::size_t f = 0;                              // the free ones kept)
+    // in increasing order; every column visited is written, the free ones kept: room for the free
+    // columns (the constrained ones but the pivots) + 1, all of it written (no untouched pages)
+    out.free_columns.resize(sys.constrained_columns() - rank + 1);
+    std::size_t f = 0;
     for(std::size_t k = 0; k < occurring; ++k) {
       const std::uint32_t c = original(std::uint32_t(k));
       out.free_columns[f] = c;
       f += std::size_t(out.kind[c] == FREE_COLUMN);
     }
-    out.free_columns.resize(f);
+    CGAL_assertion(f + 1 == out.free_columns.size());
+    out.free_columns.pop_back();
     out.ptr.resize(rank + 1); out.ptr[0] = 0;
     out.col.resize(total + 1); out.val.resize(total + 1);   // + 1: see the entry loop
     out.pivot_col.resize(rank); out.pivot.resize(rank); out.rhs.resize(rank);

@@ -96,7 +96,7 @@ inline bool exact_check_dyadic(const Integer_system& sys, const std::vector<doub
   std::vector<CGAL::Gmpz> m(n);
   std::vector<int> e(n);
   for(std::size_t k = 0; k < n; ++k) split_dyadic(x[k], m[k], e[k]);
-  const std::vector<std::size_t>& ptr = sys.fits_int64 ? sys.rows64.ptr : sys.rowsz.ptr;
+  const auto& ptr = sys.fits_int64 ? sys.rows64.ptr : sys.rowsz.ptr;
   for(std::size_t i = 0; i < sys.n_rows; ++i) {
     const bool nonzero_b = sys.fits_int64 ? sys.rows64.b[i] != 0 : sys.rowsz.b[i] != 0;
     int e_min = INT_MAX;
