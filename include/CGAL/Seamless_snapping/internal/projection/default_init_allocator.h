@@ -14,8 +14,9 @@
 // value-initializing: `resize(n)` and `vector(n)` then leave elements of trivial types (integers,
 // doubles, the sparse entries and records of the projection) unwritten, instead of a pass that
 // zeroes them before they are written in full. For the large arrays that are sized and then
-// filled: the IRREF's rows (extract()), the canonical rows (build_rows()), the evaluation's
-// records. Values of class type (CGAL::Gmpz) are default-constructed as before.
+// filled: the IRREF's rows (extract()) and the canonical rows (build_rows()). (The evaluation's
+// records are a plain array: see evaluate_on_grid().) Values of class type (CGAL::Gmpz) are
+// default-constructed as before.
 
 #include <memory>
 #include <new>

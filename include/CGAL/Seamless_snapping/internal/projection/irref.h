@@ -101,7 +101,7 @@ struct Irref
     typedef Integer_ops<Int> Ops;
     st.rank = rank();
     st.implied_variables = rank();
-    st.free_variables = std::size_t(std::count(kind.begin(), kind.end(), (unsigned char)FREE_COLUMN));
+    st.free_variables = free_columns.size();
     st.dependent_rows = dependent_rows;
     st.irref_nonzeros = rank() + col.size();
     st.eliminations = eliminations;
