@@ -3,7 +3,7 @@
 //   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
 //                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
-//                 [--quiet]
+//                 [--untangle | --no-untangle] [--max-untangle-change C] [--quiet]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
 // UVs to nearby doubles that are exactly seamless (Mandad & Campen 2019), checks the result in
@@ -48,7 +48,8 @@ static const char* usage_text =
   "usage: seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary]\n"
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
-  "                     [--vval FILE] [--report FILE.json] [--quiet]\n";
+  "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
+  "                     [--max-untangle-change C] [--quiet]\n";
 
 static const char* help_text =
   "Makes an approximately seamless UV map exactly seamless (Mandad & Campen 2019, \"Exact\n"
@@ -105,6 +106,15 @@ static const char* help_text =
   "                       next to fold-overs is written as the smallest positive value of its class\n"
   "                       mod 4); give it to libQEx as the third argument. Written only when OUT.obj\n"
   "                       was written.\n"
+  "  --untangle           make every UV triangle positively oriented (remove fold-overs) by moving the UVs\n"
+  "                       near them inside the space of maps with the same constraints (seam rotations,\n"
+  "                       with --integer-grid integer translations and cone positions), then snap exactly;\n"
+  "                       the default with --integer-grid. Triangles that the constraints force to be\n"
+  "                       degenerate or flipped (e.g. two cones rounded onto one integer point) are\n"
+  "                       reported with the proof, as are any left (the JSON report's 'folds')\n"
+  "  --no-untangle        keep the input's fold-overs (the default without --integer-grid)\n"
+  "  --max-untangle-change C  do not use an untangled map that moves a UV by more than C grid cells\n"
+  "                       (then the snapped input is written, with its fold-overs reported)\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
@@ -262,7 +272,8 @@ int main(int argc, char** argv)
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
   bool align_boundary = true, reduced = true, quiet = false, has_report = false;
   bool integer_grid = false;
-  double grid_scale = 1;
+  int untangle = -1;                 // -1: the default (with --integer-grid)
+  double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
   std::string features_file, vval_file, pin_file;
   double sharp_angle = -1;
@@ -277,6 +288,16 @@ int main(int argc, char** argv)
     else if(a == "--unreduced") reduced = false;
     else if(a == "--quiet") quiet = true;
     else if(a == "--integer-grid") integer_grid = true;
+    else if(a == "--untangle") untangle = untangle == 0 ? 2 : 1;
+    else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
+    else if(a == "--max-untangle-change") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !(max_untangle_change >= 0)) {
+        std::cerr << "seamless_snap: --max-untangle-change needs a number of grid cells >= 0\n" << usage_text; return 2;
+      }
+      ++i;
+    }
     else if(a == "--vt-per-corner") vt_per_corner = true;
     else if(a == "--pin") {
       if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
@@ -326,6 +347,7 @@ int main(int argc, char** argv)
     return 2;
   }
   if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
+  if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
 
   // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
   Mesh mesh;
@@ -367,7 +389,8 @@ int main(int argc, char** argv)
   if(keep_layout && SS::IO::read_OBJ_matrices(in, V, F, UV, FUV, message) != SS::SUCCESS)
     return fail("cannot read input: " + message);
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
-                     .integer_grid_map(integer_grid).grid_scale(grid_scale);
+                     .integer_grid_map(integer_grid).grid_scale(grid_scale)
+                     .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change);
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
                                                                                                .pinned_corner_map(pinned));
@@ -385,6 +408,17 @@ int main(int argc, char** argv)
                 " introduced and left %zu / %zu\n", report.flips_before, report.degenerate_before, report.flips_after,
                 report.degenerate_after, report.flips_after_repair, report.degenerate_after_repair,
                 report.flips_unrepaired, report.degenerate_unrepaired);
+    if(report.untangled)
+      std::printf("  untangling: negative / zero-area %zu / %zu -> %zu / %zu (floating point, %d ring(s), %zu sectors moved, "
+                  "max %.3g / RMS %.3g grid cells beyond the snap's %.3g) -> %zu / %zu after its exact snap (%.1f ms)\n",
+                  report.flips_before_untangling, report.degenerate_before_untangling, report.flips_after_untangling,
+                  report.degenerate_after_untangling, report.untangle_rings, report.untangle_moved_sectors,
+                  report.untangle_max_change * report.grid_scale, report.untangle_rms_change * report.grid_scale,
+                  report.snap_max_change * report.grid_scale, report.flips_after, report.degenerate_after, report.untangle_ms);
+    if(!report.folds.empty())
+      std::printf("  %zu UV triangles not positive at the end, %zu of them proven forced by the constraints "
+                  "(first: face %zu: %s)\n", report.folds.size(), report.folds_forced, report.folds.front().face,
+                  report.folds.front().message.c_str());
     if(report.status == SS::SUCCESS)
       std::printf("  integer grid: %zu -> %zu of %zu cut edges with integer translations, %zu -> %zu of %zu cones "
                 "on integer points\n", report.integer_translations_before, report.integer_translations_after,

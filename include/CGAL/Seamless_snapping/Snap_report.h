@@ -23,6 +23,49 @@ namespace Seamless_snapping {
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
+ * Why a UV triangle is not positively oriented at the end of `snap_seamless_parameterization()`: all but
+ * `FOLD_NOT_PROVEN_FORCED` are proofs, found exactly from the constraint rows, that the triangle is negative or
+ * degenerate in every map that satisfies the same constraints (so no untangling can help; only other constraint
+ * data, e.g. integer translations rounded differently, can).
+ */
+enum Fold_reason
+{
+  FOLD_NOT_PROVEN_FORCED = 0,  ///< no proof found: the untangling (if it ran) did not make the triangle positive
+  FOLD_CORNERS_IN_ONE_SECTOR,  ///< two corners are one sector (one UV variable): zero area in every map
+  FOLD_COINCIDENT_CORNERS,     ///< the constraints force two corners onto one UV point (e.g. two cones rounded onto one integer point)
+  FOLD_RIGID_TRIANGLE,         ///< the constraints fix the triangle's shape (it can only be translated) and it is negative or degenerate
+  FOLD_ZERO_AREA_FORCED        ///< the constraints put the three corners on one isoline
+};
+
+/// the name of a `Fold_reason` value, e.g. `"COINCIDENT_CORNERS"`
+inline const char* fold_reason_name(Fold_reason r)
+{
+  switch(r) {
+    case FOLD_CORNERS_IN_ONE_SECTOR: return "CORNERS_IN_ONE_SECTOR";
+    case FOLD_COINCIDENT_CORNERS: return "COINCIDENT_CORNERS";
+    case FOLD_RIGID_TRIANGLE: return "RIGID_TRIANGLE";
+    case FOLD_ZERO_AREA_FORCED: return "ZERO_AREA_FORCED";
+    default: return "NOT_PROVEN_FORCED";
+  }
+}
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * One UV triangle that is negatively oriented or degenerate in the result, and why.
+ */
+struct Fold_explanation
+{
+  std::size_t face = 0;                 ///< index of the face in `faces(tm)` order
+  bool negative = false;                ///< negatively oriented (else zero area)
+  Fold_reason reason = FOLD_NOT_PROVEN_FORCED;
+  std::vector<std::size_t> vertices;    ///< its three vertices (indices in `vertices(tm)` order), counter-clockwise
+  std::string message;                  ///< the reason in words, naming the vertices (and their UVs where the proof fixes them)
+  /// proven negative or degenerate in every exact solution of the constraints
+  bool forced() const { return reason != FOLD_NOT_PROVEN_FORCED; }
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
  * What `snap_seamless_parameterization()` did. Lengths (violations, changes) are in UV units
  * divided by the diagonal of the UV bounding box of the input ("relative").
  */
@@ -91,11 +134,37 @@ struct Snap_report
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
+  /// \name Untangling (beyond the paper: fold-overs removed inside the constraint space)
+  /// The counts after snapping (`flips_after`, `degenerate_after`) and after repair refer to the map snapped
+  /// from the untangled one when the untangling ran.
+  /// @{
+  bool untangle = false;               ///< the untangling step was asked for (`untangle(true)`)
+  bool untangled = false;              ///< it ran: the exact snap of the input had non-positive UV triangles
+  std::size_t flips_before_untangling = 0;      ///< negative UV triangles of the exact snap of the input (exact test)
+  std::size_t degenerate_before_untangling = 0; ///< zero-area UV triangles of the exact snap of the input
+  std::size_t flips_after_untangling = 0;       ///< negative UV triangles of the untangled floating-point map (exact test on its doubles)
+  std::size_t degenerate_after_untangling = 0;  ///< zero-area UV triangles of the untangled floating-point map
+  std::size_t folds_forced = 0;        ///< of the non-positive UV triangles at the end: those proven so in every exact solution
+  std::vector<Fold_explanation> folds; ///< every non-positive UV triangle at the end, with its reason
+  bool untangle_refused = false;       ///< the untangled map moved more than `max_untangle_change`: it was not used
+  int untangle_rings = 0;              ///< face rings around the fold-overs that the last attempt moved (1, 2, 4, 8 or 16)
+  std::size_t untangle_region_vertices = 0;  ///< vertices of that region
+  std::size_t untangle_moved_sectors = 0;    ///< sectors whose UV the untangling changed (with respect to the exact snap of the input)
+  double grid_scale = 1;               ///< UV units to grid cells: a change of `c` UV units is `c * grid_scale` grid cells
+  double untangle_max_change = 0;      ///< max |u_untangled - u_snap| over all UV coordinates, UV units (the move beyond the snap)
+  double untangle_rms_change = 0;      ///< RMS of u_untangled - u_snap over all UV coordinates of all sectors, UV units
+  double snap_max_change = 0;          ///< max |u_snap - ū|: the change of the snap alone (without untangling), UV units
+  double snap_rms_change = 0;          ///< its RMS over all UV coordinates of all sectors, UV units
+  double total_max_change = 0;         ///< max |u - ū| of the result, UV units
+  double total_rms_change = 0;         ///< its RMS over all UV coordinates of all sectors, UV units
+  /// @}
+
   /// \name Timings (milliseconds, wall clock)
   /// @{
   double extract_ms = 0, reduce_ms = 0, irref_ms = 0, evaluate_ms = 0, propagate_ms = 0, verify_ms = 0, total_ms = 0;
   double repair_ms = 0;                ///< flip repair
   double least_squares_ms = 0;         ///< the floating-point L2-closest point of the full system (minimal-change mode)
+  double untangle_ms = 0;              ///< untangling: fold-over proofs, floating-point optimization and the second exact snap
   /// @}
 
   /// returns the report as one JSON object (numbers with 17 significant digits).
@@ -139,9 +208,35 @@ struct Snap_report
     o << "  \"near_integer_grid_map\": " << (near_integer_grid_map ? "true" : "false") << ",\n";
     num("pinned_cones", double(pinned_cones)); num("not_field_cones", double(not_field_cones.size()));
     num("pinned_sectors", double(pinned_sectors));
+    o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";
+    o << "  \"untangled\": " << (untangled ? "true" : "false") << ",\n";
+    num("flips_before_untangling", double(flips_before_untangling));
+    num("degenerate_before_untangling", double(degenerate_before_untangling));
+    num("flips_after_untangling", double(flips_after_untangling));
+    num("degenerate_after_untangling", double(degenerate_after_untangling));
+    num("folds_forced", double(folds_forced));
+    o << "  \"folds\": [";
+    for(std::size_t i = 0; i < folds.size(); ++i) {
+      const Fold_explanation& f = folds[i];
+      o << (i ? ",\n    " : "\n    ") << "{\"face\": " << f.face << ", \"negative\": " << (f.negative ? "true" : "false")
+        << ", \"reason\": \"" << fold_reason_name(f.reason) << "\", \"forced\": " << (f.forced() ? "true" : "false")
+        << ", \"vertices\": [" << f.vertices[0] << ", " << f.vertices[1] << ", " << f.vertices[2] << "], \"message\": \"";
+      for(char c : f.message) { if(c == '"' || c == '\\') o << '\\'; o << c; }
+      o << "\"}";
+    }
+    o << (folds.empty() ? "],\n" : "\n  ],\n");
+    o << "  \"untangle_refused\": " << (untangle_refused ? "true" : "false") << ",\n";
+    num("untangle_rings", double(untangle_rings)); num("untangle_region_vertices", double(untangle_region_vertices));
+    num("untangle_moved_sectors", double(untangle_moved_sectors)); num("grid_scale", grid_scale);
+    num("untangle_max_change", untangle_max_change); num("untangle_rms_change", untangle_rms_change);
+    num("untangle_max_change_cells", untangle_max_change * grid_scale);
+    num("snap_max_change", snap_max_change); num("snap_rms_change", snap_rms_change);
+    num("snap_max_change_cells", snap_max_change * grid_scale);
+    num("total_max_change", total_max_change); num("total_rms_change", total_rms_change);
+    num("total_max_change_cells", total_max_change * grid_scale); num("total_rms_change_cells", total_rms_change * grid_scale);
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
-    num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms);
+    num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms); num("untangle_ms", untangle_ms);
     o << "  \"total_ms\": " << total_ms << "\n}\n";
     return o.str();
   }

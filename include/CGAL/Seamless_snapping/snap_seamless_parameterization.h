@@ -284,7 +284,7 @@ Snap_report snap_seamless_parameterization(const TriangleMesh& tm, HalfedgeUVMap
                                  [&](typename GT::halfedge_descriptor h) { return in.rotation_of(h); }, in.has_rotations,
                                  [&](typename GT::edge_descriptor e) { return in.constrained_of(e); }, in.has_constrained,
                                  [&](typename GT::vertex_descriptor v) { return in.weight_of(v); }, in.has_weights,
-                                 in.options);
+                                 [&](typename GT::vertex_descriptor v) { return in.point_of(v); }, in.options);
 }
 
 } // namespace Seamless_snapping

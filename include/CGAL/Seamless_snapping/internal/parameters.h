@@ -33,6 +33,8 @@ enum integer_grid_map_t  { integer_grid_map };  // bool: integer translations, c
 enum grid_scale_t        { grid_scale };        // double, a power of two: grid lines at multiples of 1/S (default 1)
 enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per face corner (libQEx's layout)
 enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of that corner is kept bit-identical
+enum untangle_t          { untangle };          // bool: remove fold-overs inside the constraint space (default: integer_grid_map)
+enum max_untangle_change_t{ max_untangle_change };// double, grid cells: largest UV move the untangling may make (default: any)
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -52,7 +54,9 @@ enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of t
   SS_NP(integer_grid_map_t,        integer_grid_map)         \
   SS_NP(grid_scale_t,              grid_scale)               \
   SS_NP(vt_per_corner_t,           vt_per_corner)            \
-  SS_NP(pinned_corner_map_t,       pinned_corner_map)
+  SS_NP(pinned_corner_map_t,       pinned_corner_map)        \
+  SS_NP(untangle_t,                untangle)                 \
+  SS_NP(max_untangle_change_t,     max_untangle_change)
 
 namespace parameters {
 

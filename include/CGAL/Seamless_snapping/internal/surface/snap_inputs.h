@@ -23,6 +23,8 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <array>
+
 namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
@@ -52,6 +54,8 @@ struct Snap_inputs
   typedef typename internal_np::Lookup_named_param_def<snap_np::pinned_corner_map_t, NamedParameters,
                                                        Default_pinned_map>::type Pinned_map;
 
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
+
   Seam_map seams;
   bool has_seams;
   Rotation_map rotations;
@@ -60,6 +64,7 @@ struct Snap_inputs
   bool has_constrained;
   Weight_map weights;             // of the minimal change
   bool has_weights;
+  Vertex_point_map points;        // 3D positions: the reference shapes of the untangling
   Snap_options options;
 
   Snap_inputs(const TriangleMesh& tm, const NamedParameters& np)
@@ -74,7 +79,9 @@ struct Snap_inputs
       has_constrained(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value),
       weights(CGAL::parameters::choose_parameter<Weight_map>(CGAL::parameters::get_parameter(np, snap_np::vertex_weight_map),
                                                              Default_weight_map(1.))),
-      has_weights(!CGAL::parameters::is_default_parameter<NamedParameters, snap_np::vertex_weight_map_t>::value)
+      has_weights(!CGAL::parameters::is_default_parameter<NamedParameters, snap_np::vertex_weight_map_t>::value),
+      points(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tm)))
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -88,6 +95,8 @@ struct Snap_inputs
     options.verbose = choose_parameter(get_parameter(np, internal_np::verbose), defaults.verbose);
     options.integer_grid_map = choose_parameter(get_parameter(np, snap_np::integer_grid_map), defaults.integer_grid_map);
     options.grid_scale = choose_parameter(get_parameter(np, snap_np::grid_scale), defaults.grid_scale);
+    options.untangle = choose_parameter(get_parameter(np, snap_np::untangle), options.integer_grid_map);
+    options.max_untangle_change = choose_parameter(get_parameter(np, snap_np::max_untangle_change), defaults.max_untangle_change);
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),
                                     options.connections);
@@ -107,6 +116,11 @@ struct Snap_inputs
   int rotation_of(halfedge_descriptor h) const { return int(get(rotations, h)); }
   bool constrained_of(edge_descriptor e) const { return bool(get(constrained, e)); }
   double weight_of(vertex_descriptor v) const { return double(get(weights, v)); }
+  std::array<double, 3> point_of(vertex_descriptor v) const
+  {
+    const auto& p = get(points, v);
+    return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  }
 };
 
 } // namespace internal

@@ -20,7 +20,10 @@
 //                starting from the point of 3a, not from ubar
 //   4. propagate non-node sectors along the branches              (Sec. 5.3.1)   project_node_system
 //                also from the point of 3a: the exact result stays within grid rounding of it
+//   4b. untangle the fold-overs of the exact map inside the constraint space, in floating point, then
+//                3.-4. again from the untangled map (untangling/, beyond the paper)         untangle_stage
 //   5. repair    flipped/degenerate triangles: group and node moves, exactly (Sec. 5.4, 7)   repair_stage
+//   5b. explain  every triangle still not positive: proven forced by the constraints or not  explain_folds_stage
 //   6. verify    every row of the full system, exactly (Gmpq), before anything is written   verify_stage
 //   7. write     the corners of the changed sectors into the caller's map                   write_stage
 // With use_reduced_system = false, step 4 is skipped and the full system goes to step 3.
@@ -48,6 +51,8 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
+#include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -57,6 +62,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -81,6 +87,8 @@ struct Snap_options
   double integer_grid_tolerance = default_integer_grid_tolerance;   // grid units
   double grid_scale = 1;               // S = 2^s: the integer grid of the map is at multiples of 1/S; UVs are scaled by S inside
   std::vector<int> pinned_corners;     // halfedges (pipeline numbering) whose corner UV is kept bit-identical (pinned_corners.h)
+  bool untangle = false;               // step 4b: remove fold-overs inside the constraint space (default: integer_grid_map)
+  double max_untangle_change = HUGE_VAL;   // grid cells: an untangled map that moves a UV further is not used
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -185,6 +193,7 @@ struct Snap_state
   std::vector<char> path_endpoints;      // vertices that end a connection/cycle path (become nodes)
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
+  std::vector<double> points;            // per vertex its 3D position (x, y, z), for step 4b (empty without untangling)
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
                                          // less with pinned corners)
@@ -196,6 +205,7 @@ struct Snap_state
   std::vector<double> x;                 // the result, one value per sector variable
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
+  std::string untangle_note;
   std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
@@ -348,6 +358,17 @@ Status read_vertex_weights(const WeightOf& weight_of, Snap_state<TriangleMesh>& 
   return SUCCESS;
 }
 
+// 1d. the 3D position of every vertex, for the reference shapes of the untangling (step 4b)
+template <class TriangleMesh, class PointOf>
+void read_vertex_points(const PointOf& point_of, Snap_state<TriangleMesh>& S)
+{
+  S.points.resize(3 * S.desc.vertices.size());
+  for(std::size_t v = 0; v < S.desc.vertices.size(); ++v) {
+    const std::array<double, 3> p = point_of(S.desc.vertices[v]);
+    for(int c = 0; c < 3; ++c) S.points[3 * v + std::size_t(c)] = p[std::size_t(c)];
+  }
+}
+
 // 2. nodes, branches and the node system (Sec. 5.3), connection rows reduced to node variables
 template <class TriangleMesh>
 Status reduce_stage(Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
@@ -436,9 +457,38 @@ Status project_node_system(Snap_state<TriangleMesh>& S, bool minimal_change, Sna
   return s;
 }
 
-// 3.-4. with retries: RANGE_EXCEEDED is retried on a grid with 4 more bits of range (up to 5 times):
-// constraints that the input violates by a lot (connection and cycle constraints added after the
-// fact) move implied values further than the margin of Sec. 4.3 allows.
+// 3.-4. from S.start (the input, its L2-closest point, or the untangled map), with retries:
+// RANGE_EXCEEDED is retried on a grid with 4 more bits of range (up to 5 times): constraints that the
+// input violates by a lot (connection and cycle constraints added after the fact) move implied values
+// further than the margin of Sec. 4.3 allows.
+template <class TriangleMesh>
+Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
+    if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
+    if(S.cm.uv_exponent != 0)
+      message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
+    return st;
+  };
+  Status s = SUCCESS;
+  for(int retry = 0;; ++retry) {
+    S.x = S.start;
+    s = opt.use_reduced_system ? project_node_system(S, opt.minimal_change, report, message)
+                               : project_rows(S.full, S.grid, opt.minimal_change, S.x, report, message);
+    if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
+    if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
+    S.grid = Fixed_point_grid(S.grid.K + 4);
+    std::string why;
+    if(check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why) != SUCCESS ||
+       check_pins_on_grid(S.cm, S.pins, S.grid, why) != SUCCESS) {
+      failed(s);
+      message += "; a larger grid does not help: " + why;
+      return s;
+    }
+  }
+}
+
+// 3.-4. from ubar (or its L2-closest point), see snap_from_start()
 template <class TriangleMesh>
 Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
@@ -455,29 +505,108 @@ Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_
   }
   Status s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, message);
   if(s != SUCCESS) return s;
-  auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
-    if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
-    if(S.cm.uv_exponent != 0)
-      message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
-    return st;
-  };
   s = least_squares_stage(opt, S, report, message);
   if(s != SUCCESS) return s;
-  for(int retry = 0;; ++retry) {
-    S.x = S.start;
-    s = opt.use_reduced_system ? project_node_system(S, opt.minimal_change, report, message)
-                               : project_rows(S.full, S.grid, opt.minimal_change, S.x, report, message);
-    if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
-    if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
-    S.grid = Fixed_point_grid(S.grid.K + 4);
-    std::string why;
-    if(check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why) != SUCCESS ||
-       check_pins_on_grid(S.cm, S.pins, S.grid, why) != SUCCESS) {
-      failed(s);
-      message += "; a larger grid does not help: " + why;
-      return s;
-    }
+  return snap_from_start(opt, S, report, message);
+}
+
+// the change from `b` to `a` (2 values per sector) in UV units: its largest magnitude, its RMS over all
+// sector coordinates and the number of sectors that moved
+struct Uv_change
+{
+  double max = 0, rms = 0;
+  std::size_t moved_sectors = 0;
+};
+
+template <class TriangleMesh>
+Uv_change measure_uv_change(const Snap_state<TriangleMesh>& S, const std::vector<double>& a, const std::vector<double>& b)
+{
+  Uv_change c;
+  double sum = 0;
+  for(std::size_t i = 0; i < a.size(); ++i) {
+    const double d = std::fabs(S.cm.to_uv(a[i]) - S.cm.to_uv(b[i]));
+    c.max = (std::max)(c.max, d);
+    sum += d * d;
+    if(i % 2 == 1 && (a[i] != b[i] || a[i - 1] != b[i - 1])) ++c.moved_sectors;
   }
+  c.rms = a.empty() ? 0. : std::sqrt(sum / double(a.size()));
+  return c;
+}
+
+// the faces whose UV triangle in `x` is not positively oriented (exact test)
+template <class TriangleMesh>
+std::vector<int> non_positive_faces(const Snap_state<TriangleMesh>& S, const std::vector<double>& x)
+{
+  const std::vector<signed char> o = face_orientations(S.cm, S.st, x);
+  std::vector<int> faces;
+  for(std::size_t f = 0; f < o.size(); ++f) if(o[f] != CGAL::POSITIVE) faces.push_back(int(f));
+  return faces;
+}
+
+// 4b. untangling (beyond the paper: Sec. 5.4 and 7 repair only what the snap introduces): the faces of
+// the exact map S.x that are not positive, unless proven so in every exact solution (forced_folds.h),
+// are made positive by moving the UVs near them inside the constraint space, in floating point
+// (untangler.h); the result is snapped exactly like the input (3.-4. from it) and checked like it.
+// Not used (S.x stays the snap of the input) when it moved a UV more than max_untangle_change grid cells.
+template <class TriangleMesh>
+Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  report.untangle = opt.untangle;
+  report.grid_scale = opt.grid_scale;
+  const Orientation_counts snapped = count_orientations(face_orientations(S.cm, S.st, S.x));
+  report.flips_before_untangling = report.flips_after_untangling = snapped.negative;
+  report.degenerate_before_untangling = report.degenerate_after_untangling = snapped.degenerate;
+  const Uv_change snap = measure_uv_change(S, S.x, S.st.ubar);
+  report.snap_max_change = snap.max;
+  report.snap_rms_change = snap.rms;
+  if(!opt.untangle || snapped.negative + snapped.degenerate == 0) return SUCCESS;
+  const Snap_clock::time_point t = Snap_clock::now();
+  report.untangled = true;
+  const Face_corners fc(S.cm);
+  const Variable_rows incidence(S.full, S.x.size());
+  std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution
+  Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
+  for(const Fold_explanation& e : prover.explain(non_positive_faces(S, S.x), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
+  const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points);
+  Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded);
+  std::vector<double> y = S.x;
+  Untangle_statistics stats;
+  Status s = untangler.run(y, Untangle_options(), stats, message);
+  if(s != SUCCESS) return s;
+  report.untangle_rings = stats.rings;
+  report.untangle_region_vertices = stats.region_vertices;
+  const Orientation_counts untangled = count_orientations(face_orientations(S.cm, S.st, y));
+  report.flips_after_untangling = untangled.negative;
+  report.degenerate_after_untangling = untangled.degenerate;
+  const Uv_change move = measure_uv_change(S, y, S.x);
+  report.untangle_max_change = move.max;
+  report.untangle_rms_change = move.rms;
+  report.untangle_moved_sectors = move.moved_sectors;
+  report.untangle_ms = ms_since(t);
+  if(move.max * opt.grid_scale > opt.max_untangle_change) {
+    report.untangle_refused = true;
+    S.untangle_note = "; the untangled map was not used: it moved a UV by " + format_double(move.max * opt.grid_scale) +
+                      " grid cells, more than max_untangle_change = " + format_double(opt.max_untangle_change);
+    return SUCCESS;
+  }
+  if(move.moved_sectors == 0) return SUCCESS;
+  // the untangled map, snapped exactly (on failure the snap of the input stays, and the message says so)
+  const std::vector<double> x_snap = S.x;
+  const Fixed_point_grid grid = S.grid;
+  std::string why;
+  s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, why);
+  S.start = y;
+  if(s == SUCCESS) s = snap_from_start(opt, S, report, why);
+  if(s != SUCCESS) {
+    S.x = x_snap;
+    S.grid = grid;
+    report.untangle_refused = true;
+    S.untangle_note = "; the untangled map was not used: its exact snap failed (" + std::string(status_name(s)) + ": " + why + ")";
+  } else {
+    S.already_exact = false;
+  }
+  report.untangle_ms = ms_since(t);
+  return SUCCESS;
 }
 
 // 5. flip repair (Sec. 5.4, generalized): moves that keep every row exact, each checked exactly
@@ -514,6 +643,24 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
   }
 }
 
+// 5b. every UV triangle of the result that is not positive, explained: proven non-positive in every
+// exact solution of the constraints (forced_folds.h), or not (never a SUCCESS that hides a fold-over)
+template <class TriangleMesh>
+void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
+{
+  const std::vector<int> faces = non_positive_faces(S, S.x);
+  if(faces.empty()) return;
+  const Face_corners fc(S.cm);
+  const Variable_rows incidence(S.full, S.x.size());
+  Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
+  report.folds = prover.explain(faces, S.x);
+  for(Fold_explanation& e : report.folds) {
+    if(e.forced()) { ++report.folds_forced; continue; }
+    if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
+    else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
+  }
+}
+
 // 6. every row of the full system, exactly (Gmpq), before anything is written; change statistics
 template <class TriangleMesh>
 Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
@@ -540,6 +687,10 @@ Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std:
   for(std::size_t i = 0; i < S.x.size(); ++i) max_change = (std::max)(max_change, std::fabs(S.x[i] - ubar[i]));
   for(int v : S.constrained_vars) sum_change += std::fabs(S.x[v] - ubar[v]);
   report.max_change = relative(max_change);
+  const Uv_change total = measure_uv_change(S, S.x, ubar);
+  report.total_max_change = total.max;
+  report.total_rms_change = total.rms;
+  if(!report.untangled || report.untangle_refused) { report.snap_max_change = total.max; report.snap_rms_change = total.rms; }
   const Integer_grid_counts after = count_integer_structure(S.cm, S.st, S.rot, in_grid_units(S, S.x));
   report.integer_translations_after = after.integer_translations;
   report.cones_on_integer_points_after = after.cones_on_integer_points;
@@ -601,17 +752,33 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   }
   if(!S.pins.empty())
     summary += "; " + std::to_string(S.pins.sector.size()) + " pinned sector(s) kept bit-identical";
-  return summary + S.flip_note;
+  if(report.untangled)
+    summary += "; untangled: " + std::to_string(report.flips_before_untangling) + " negative and " +
+               std::to_string(report.degenerate_before_untangling) + " zero-area UV triangle(s) before, moving " +
+               std::to_string(report.untangle_moved_sectors) + " sectors by at most " +
+               format_double(report.untangle_max_change * report.grid_scale) + " grid cells (" +
+               std::to_string(report.untangle_rings) + " ring(s))";
+  if(!report.folds.empty()) {
+    std::size_t negative = 0;
+    for(const Fold_explanation& e : report.folds) negative += e.negative ? 1 : 0;
+    summary += "; " + std::to_string(negative) + " negative and " + std::to_string(report.folds.size() - negative) +
+               " zero-area UV triangle(s) remain, " + std::to_string(report.folds_forced) +
+               " of them proven forced by the constraints (Snap_report::folds)";
+  } else if(report.untangled) {
+    summary += "; every UV triangle is positively oriented";
+  }
+  return summary + S.flip_note + S.untangle_note;
 }
 
 // The pipeline: the stages above in order; the caller's map is written only after step 6 passed.
 // The overrides are given per edge/halfedge descriptor through callables, evaluated after the
 // corner mesh is built (they need its numbering).
-template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf, class WeightOf>
+template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf, class WeightOf,
+          class PointOf>
 Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
                           const RotationOf& rotation_of, bool has_rotations,
                           const ConstrainedOf& constrained_of, bool has_constrained,
-                          const WeightOf& weight_of, bool has_weights, const Snap_options& opt)
+                          const WeightOf& weight_of, bool has_weights, const PointOf& point_of, const Snap_options& opt)
 {
   const Snap_clock::time_point t_start = Snap_clock::now();
   Snap_report report;
@@ -633,6 +800,7 @@ Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Sea
   if(s == SUCCESS) s = build_constraints(opt, S, report, message);
   if(s == SUCCESS && has_weights) s = read_vertex_weights(weight_of, S, message);
   if(s != SUCCESS) return finish(s, message);
+  if(opt.untangle) read_vertex_points(point_of, S);
   report.extract_ms = ms_since(t);
 
   t = Snap_clock::now();
@@ -641,9 +809,11 @@ Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Sea
   report.reduce_ms = opt.use_reduced_system ? ms_since(t) : 0.;
 
   s = project_stage(opt, S, report, message);
+  if(s == SUCCESS) s = untangle_stage(opt, S, report, message);
   if(s != SUCCESS) return finish(s, message);
   repair_stage(opt, S, report);
   restore_pinned_values(S.pins, S.x);
+  explain_folds_stage(opt, S, report);
 
   t = Snap_clock::now();
   s = verify_stage(S, report, message);

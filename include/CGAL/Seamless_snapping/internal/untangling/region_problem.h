@@ -1,0 +1,329 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_REGION_PROBLEM_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_REGION_PROBLEM_H
+
+// The optimization problem of the untangling on a set of regions (vertex sets), in the reduced
+// variables w of the constraint space (region_space.h): x = x0 + N w. For every face with a corner in a
+// region (and not excluded), J = J0 + B N_f w_f is affine in the few w it depends on; the problem holds
+// J0 and B N_f per face, and the pattern of the lower triangle of N^T H N once, so that a Newton step
+// only writes numbers into a fixed sparse matrix (one symbolic factorization per problem).
+//
+//   distortion(w, eps) = sum_f area(ref_f) f_eps(J_f)                          (untangling_energy.h)
+//   proximity(w)       = sum_l (x_l(w) - target_l)^2 / h^2,  l over the regions' variables
+//
+// h: the square root of the mean reference area (a length of the map). proximity measures the change
+// from a target map (the exact snap of the input) for the minimal-change polish (untangler.h).
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
+#include <CGAL/Seamless_snapping/internal/untangling/region_space.h>
+#include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+class Region_problem
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  struct Face
+  {
+    int face;
+    int region;                // index of the region it touches (-1: none of its corners is in one)
+    double area;               // of its reference triangle
+    Eigen::Vector4d J0;
+    std::vector<int> w;        // the w it depends on, increasing
+    std::vector<double> BM;    // dJ / dw_f, 4 x |w|, column-major
+    std::vector<int> slot;     // per (a, b), b <= a: index of (w[a], w[b]) in the values of H
+  };
+
+  std::vector<int> vars;             // the regions' variables (2s + c), increasing
+  std::vector<int> var_region;       // per variable: its region
+  Region_space space;
+  std::vector<Face> faces;
+  Matrix H;                          // lower triangle of N^T H N (+ the proximity's N^T N), pattern only
+  std::vector<int> diagonal;         // per w: index of (w, w) in H's values
+  std::vector<double> offset;        // per variable l: x0_l - target_l (proximity); empty without a target
+  double h2 = 1;                     // h^2
+
+  // Builds the problem of `regions` (vertex sets) at x; faces with `excluded` set are left out.
+  Status build(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Variable_rows& incidence,
+               const Face_corners& fc, const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded,
+               const std::vector<std::size_t>& vertex_faces_start, const std::vector<int>& vertex_faces,
+               const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
+               const std::vector<double>* target, std::string& message)
+  {
+    // regions whose variables share a constraint row (e.g. the two ends of a cut edge) move together:
+    // they are one region from here on (its smallest index)
+    std::vector<int> region_of(std::size_t(cm.n_vertices), -1);
+    for(std::size_t i = 0; i < regions.size(); ++i)
+      for(int v : regions[i]) region_of[std::size_t(v)] = int(i);
+    {
+      std::vector<int> sector_region(std::size_t(st.n_sectors), -1);
+      for(int h = 0; h < cm.n_halfedges; ++h)
+        if(cm.face[h] >= 0) sector_region[std::size_t(st.sector_of[h])] = region_of[std::size_t(cm.target[h])];
+      Union_find uf(int(regions.size()));
+      for(std::size_t i = 0; i < rows.size(); ++i) {
+        int first = -1;
+        for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k) {
+          const int r = sector_region[std::size_t(rows.col[k] / 2)];
+          if(r < 0) continue;
+          if(first < 0) first = r; else uf.unite(first, r);
+        }
+      }
+      for(int& r : region_of) if(r >= 0) r = uf.find(r);
+    }
+    std::vector<int> touched;
+    for(const std::vector<int>& region : regions)
+      for(int v : region)
+        for(std::size_t k = vertex_faces_start[std::size_t(v)]; k < vertex_faces_start[std::size_t(v) + 1]; ++k)
+          touched.push_back(vertex_faces[k]);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    std::vector<std::pair<int, int> > var_regions;
+    for(int f : touched)
+      for(int h : fc.halfedge[std::size_t(f)]) {
+        const int g = region_of[std::size_t(cm.target[h])];
+        if(g >= 0) for(int c = 0; c < 2; ++c) var_regions.emplace_back(2 * st.sector_of[h] + c, g);
+      }
+    std::sort(var_regions.begin(), var_regions.end());
+    var_regions.erase(std::unique(var_regions.begin(), var_regions.end()), var_regions.end());
+    vars.clear(); var_region.clear();
+    for(const auto& vr : var_regions) { vars.push_back(vr.first); var_region.push_back(vr.second); }
+    Status s = build_region_space(rows, incidence, vars, space, message);
+    if(s != SUCCESS) return s;
+
+    std::vector<std::vector<int> > column_rows(space.dimension);   // per column b: its rows a >= b
+    auto local = [&](int var) -> long {
+      auto it = std::lower_bound(vars.begin(), vars.end(), var);
+      return it != vars.end() && *it == var ? long(it - vars.begin()) : -1;
+    };
+    faces.clear();
+    double area_sum = 0;
+    for(int f : touched) {
+      if(excluded[std::size_t(f)]) continue;
+      Face e;
+      e.face = f;
+      e.region = -1;
+      const Reference_triangle& r = refs[std::size_t(f)];
+      e.area = r.area;
+      area_sum += r.area;
+      double p[3][2];
+      std::vector<std::pair<int, std::pair<int, double> > > terms;   // (coordinate 2m + c, (w, coefficient))
+      for(int m = 0; m < 3; ++m) {
+        const int sec = st.sector_of[fc.halfedge[std::size_t(f)][m]];
+        if(region_of[std::size_t(cm.target[fc.halfedge[std::size_t(f)][m]])] >= 0)
+          e.region = region_of[std::size_t(cm.target[fc.halfedge[std::size_t(f)][m]])];
+        for(int c = 0; c < 2; ++c) {
+          p[m][c] = x[2 * std::size_t(sec) + std::size_t(c)];
+          const long l = local(2 * sec + c);
+          if(l < 0) continue;
+          for(std::size_t q = space.ptr[std::size_t(l)]; q < space.ptr[std::size_t(l) + 1]; ++q)
+            terms.push_back({2 * m + c, {space.w_index[q], space.coef[q]}});
+        }
+      }
+      for(const auto& t : terms) e.w.push_back(t.second.first);
+      std::sort(e.w.begin(), e.w.end());
+      e.w.erase(std::unique(e.w.begin(), e.w.end()), e.w.end());
+      const std::size_t n = e.w.size();
+      e.J0 = r.jacobian(p);
+      e.BM.assign(4 * n, 0.);
+      for(const auto& t : terms) {   // dJ/dx (untangling_energy.h) times the entry of N
+        const std::size_t j = std::size_t(std::lower_bound(e.w.begin(), e.w.end(), t.second.first) - e.w.begin());
+        const int m = t.first / 2, c = t.first % 2;
+        e.BM[4 * j + std::size_t(2 * c)] += r.q[m][0] * t.second.second;
+        e.BM[4 * j + std::size_t(2 * c + 1)] += r.q[m][1] * t.second.second;
+      }
+      for(std::size_t a = 0; a < n; ++a)
+        for(std::size_t b = 0; b <= a; ++b) column_rows[std::size_t(e.w[b])].push_back(e.w[a]);
+      faces.push_back(std::move(e));
+    }
+    h2 = faces.empty() ? 1. : area_sum / double(faces.size());
+    offset.clear();
+    if(target != nullptr) {
+      offset.resize(vars.size());
+      for(std::size_t l = 0; l < vars.size(); ++l) {
+        offset[l] = x[std::size_t(vars[l])] - (*target)[std::size_t(vars[l])];
+        for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a)
+          for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
+            if(space.w_index[b] <= space.w_index[a]) column_rows[std::size_t(space.w_index[b])].push_back(space.w_index[a]);
+      }
+    }
+    // the pattern of the lower triangle, with the diagonal
+    std::vector<Eigen::Triplet<double> > pattern;
+    for(std::size_t b = 0; b < space.dimension; ++b) {
+      std::vector<int>& rs = column_rows[b];
+      rs.push_back(int(b));
+      std::sort(rs.begin(), rs.end());
+      rs.erase(std::unique(rs.begin(), rs.end()), rs.end());
+      for(int a : rs) pattern.emplace_back(a, int(b), 0.);
+    }
+    H = Matrix(Eigen::Index(space.dimension), Eigen::Index(space.dimension));
+    H.setFromTriplets(pattern.begin(), pattern.end());
+    H.makeCompressed();
+    for(Face& e : faces) {
+      const std::size_t n = e.w.size();
+      e.slot.assign(n * n, -1);
+      for(std::size_t a = 0; a < n; ++a)
+        for(std::size_t b = 0; b <= a; ++b) e.slot[a * n + b] = slot(e.w[a], e.w[b]);
+    }
+    diagonal.resize(space.dimension);
+    for(std::size_t i = 0; i < space.dimension; ++i) diagonal[i] = slot(int(i), int(i));
+    return SUCCESS;
+  }
+
+  std::size_t dimension() const { return space.dimension; }
+
+  static Eigen::Vector4d jacobian(const Face& e, const std::vector<double>& w)
+  {
+    Eigen::Vector4d j = e.J0;
+    for(std::size_t a = 0; a < e.w.size(); ++a) {
+      const double wa = w[std::size_t(e.w[a])];
+      for(int r = 0; r < 4; ++r) j[r] += e.BM[4 * a + std::size_t(r)] * wa;
+    }
+    return j;
+  }
+
+  // the displacement of variable l at w
+  double displacement(std::size_t l, const std::vector<double>& w) const
+  {
+    double d = 0;
+    for(std::size_t q = space.ptr[l]; q < space.ptr[l + 1]; ++q) d += space.coef[q] * w[std::size_t(space.w_index[q])];
+    return d;
+  }
+
+  // sum_f area f_eps(J_f) (+ weight_proximity * proximity), and the smallest det J
+  double value(const std::vector<double>& w, double eps, double weight_proximity, double& det_min) const
+  {
+    double E = 0;
+    det_min = HUGE_VAL;
+    for(const Face& e : faces) {
+      const Eigen::Vector4d j = jacobian(e, w);
+      det_min = (std::min)(det_min, untangling_determinant(j));
+      E += e.area * untangling_energy(j, eps);
+    }
+    if(weight_proximity > 0)
+      for(std::size_t l = 0; l < offset.size(); ++l) {
+        const double r = offset[l] + displacement(l, w);
+        E += weight_proximity * r * r / h2;
+      }
+    return E;
+  }
+
+  // the gradient g and the PSD Hessian (into the values of H) of value()
+  void derivatives(const std::vector<double>& w, double eps, double weight_proximity, Eigen::VectorXd& g)
+  {
+    g.setZero();
+    double* values = H.valuePtr();
+    std::fill(values, values + H.nonZeros(), 0.);
+    std::vector<double> HB;
+    for(const Face& e : faces) {
+      Eigen::Vector4d gj;
+      Eigen::Matrix4d hj;
+      untangling_energy(jacobian(e, w), eps, gj, hj);
+      const std::size_t n = e.w.size();
+      HB.assign(4 * n, 0.);                               // hj BM, column by column
+      for(std::size_t a = 0; a < n; ++a) {
+        const double* bm = &e.BM[4 * a];
+        double ga = 0;
+        for(int r = 0; r < 4; ++r) {
+          ga += bm[r] * gj[r];
+          HB[4 * a + std::size_t(r)] = hj(r, 0) * bm[0] + hj(r, 1) * bm[1] + hj(r, 2) * bm[2] + hj(r, 3) * bm[3];
+        }
+        g[e.w[a]] += e.area * ga;
+      }
+      for(std::size_t a = 0; a < n; ++a)
+        for(std::size_t b = 0; b <= a; ++b) {
+          const double* ba = &e.BM[4 * a];
+          const double* hb = &HB[4 * b];
+          values[e.slot[a * n + b]] += e.area * (ba[0] * hb[0] + ba[1] * hb[1] + ba[2] * hb[2] + ba[3] * hb[3]);
+        }
+    }
+    if(weight_proximity > 0)
+      for(std::size_t l = 0; l < offset.size(); ++l) {
+        const double c = 2 * weight_proximity / h2, r = offset[l] + displacement(l, w);
+        for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a) {
+          g[space.w_index[a]] += c * r * space.coef[a];
+          for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
+            if(space.w_index[b] <= space.w_index[a]) values[slot(space.w_index[a], space.w_index[b])] += c * space.coef[a] * space.coef[b];
+        }
+      }
+  }
+
+  // the largest t such that every face positive at w stays positive on [w, w + t d] (det J is quadratic in t)
+  double positive_step(const std::vector<double>& w, const Eigen::VectorXd& d) const
+  {
+    double t_max = HUGE_VAL;
+    for(const Face& e : faces) {
+      const Eigen::Vector4d j = jacobian(e, w);
+      const double c = untangling_determinant(j);
+      if(!(c > 0)) continue;
+      Eigen::Vector4d k = Eigen::Vector4d::Zero();
+      for(std::size_t a = 0; a < e.w.size(); ++a)
+        for(int r = 0; r < 4; ++r) k[r] += e.BM[4 * a + std::size_t(r)] * d[e.w[a]];
+      const double qa = untangling_determinant(k), qb = j[0] * k[3] + k[0] * j[3] - j[1] * k[2] - k[1] * j[2];
+      double root = HUGE_VAL;                             // the smallest positive root of qa t^2 + qb t + c
+      if(qa == 0) { if(qb < 0) root = -c / qb; }
+      else {
+        const double disc = qb * qb - 4 * qa * c;
+        if(disc >= 0) {
+          const double q = -0.5 * (qb + (qb >= 0 ? std::sqrt(disc) : -std::sqrt(disc)));
+          for(double r : {q / qa, q != 0 ? c / q : HUGE_VAL}) if(r > 0) root = (std::min)(root, r);
+        }
+      }
+      t_max = (std::min)(t_max, root);
+    }
+    return t_max;
+  }
+
+  // per region: the faces that are not positive at w and the smallest det J
+  void region_state(const std::vector<double>& w, std::size_t n_regions, std::vector<std::size_t>& bad,
+                    std::vector<double>& det_min) const
+  {
+    bad.assign(n_regions, 0);
+    det_min.assign(n_regions, HUGE_VAL);
+    for(const Face& e : faces) {
+      if(e.region < 0) continue;
+      const double D = untangling_determinant(jacobian(e, w));
+      bad[std::size_t(e.region)] += !(D > 0);
+      det_min[std::size_t(e.region)] = (std::min)(det_min[std::size_t(e.region)], D);
+    }
+  }
+
+private:
+  int slot(int a, int b) const   // index of (a, b), a >= b, in H's values
+  {
+    const int* first = H.innerIndexPtr() + H.outerIndexPtr()[b];
+    const int* last = H.innerIndexPtr() + H.outerIndexPtr()[b + 1];
+    return int(std::lower_bound(first, last, a) - H.innerIndexPtr());
+  }
+};
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_REGION_PROBLEM_H

@@ -1,0 +1,334 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_UNTANGLER_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_UNTANGLER_H
+
+// Untangling inside the exact constraint space, in floating point: the UV triangles that are not
+// positively oriented are made positive by moving the UVs of the vertices near them along the null space
+// of the constraint rows (region_space.h), so that every transition, alignment, integer translation,
+// cone position and pin keeps holding (up to rounding; the exact snap follows).
+//
+// 1. Untangling. The fold-overs are grouped into clusters (faces sharing a vertex); each cluster gets the
+//    region of the vertices within k face rings of it (overlapping regions merge). All regions are
+//    optimized together on the energy sum area(ref) f_eps(J) of the faces touching them (Garanzha et al.
+//    2021, untangling_energy.h; references: reference_shapes.h; faces proven non-positive in every
+//    solution, forced_folds.h, are left out) by Newton's method on the reduced variables (element
+//    Hessians projected onto the PSD cone, N^T H N factored by a sparse LDL^T with one symbolic analysis,
+//    Armijo backtracking) and the paper's continuation in eps: after each minimization, with E_prev / E
+//    the energy before / after it and D_min the smallest det J, sigma = max(1 - E / E_prev, 0.1),
+//    mu = (1 - sigma) chi(D_min, eps), eps <- 2 sqrt(mu (mu - D_min)) while D_min < mu, else 1e-9; done
+//    when D_min > 0 and E changes by less than a relative 1e-5, given up when the number of non-positive
+//    faces has not dropped for `stall` updates. A region's result is kept if it has fewer non-positive
+//    faces than before (or as many, less inverted); the clusters still folded try the next k (1, 2, 4,
+//    8, 16), from the map so far.
+// 2. Minimal-change polish. The eps continuation lets the regions drift (eps ~ 1 favours other shapes
+//    than the references), so every region made fold-free is then pulled back towards the exact snap of
+//    the input: minimize sum_l (x_l - target_l)^2 / h^2 + lambda sum area f_eps(J) / mean area, with a tiny
+//    eps (a barrier: f grows like 1 / det J), lambda = 1e-3, over the moved vertices and 2 rings around
+//    them, by Newton steps whose line search never lets a positive face reach det J = 0 (Smith and
+//    Schaefer's flip-free step bound): every iterate stays fold-free, and the change shrinks to what
+//    keeps the faces positive with a margin (this follows the study in ../research/untangling_study.md).
+// Faces far from the fold-overs keep their UVs bit for bit; the result is a floating-point map, never
+// claimed exact: the pipeline snaps it exactly and checks every triangle exactly afterwards.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+#include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
+#include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
+#include <CGAL/Seamless_snapping/internal/untangling/region_space.h>
+#include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+struct Untangle_options
+{
+  std::vector<int> rings = {1, 2, 4, 8, 16};  // region sizes tried in turn, per cluster of fold-overs
+  int max_outer = 300;                        // eps updates per attempt
+  int max_newton = 3;                         // Newton steps per eps
+  int stall = 20;                             // eps updates without fewer non-positive faces before an attempt gives up
+  double eps0 = 1;                            // the first eps (J is relative to the reference: D ~ 1)
+  bool polish = true;                         // step 2
+  int polish_rings = 2;
+  double polish_lambda = 1e-3;
+  int polish_iterations = 50;
+};
+
+struct Untangle_statistics
+{
+  int rings = 0;                         // largest k tried
+  std::size_t attempts = 0;              // optimizations (all k)
+  std::size_t region_vertices = 0;       // of the largest region
+  std::size_t dimension = 0;             // of the largest null space
+  std::size_t outer_iterations = 0, newton_steps = 0, polish_steps = 0;
+  std::size_t not_positive = 0;          // faces not positive at the end (floating point; excluded faces not counted)
+};
+
+class Untangler
+{
+public:
+  Untangler(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Face_corners& fc,
+            const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded)
+    : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded),
+      incidence_(rows, 2 * std::size_t(st.n_sectors)), vertex_faces_start_(std::size_t(cm.n_vertices) + 1, 0)
+  {
+    for(const std::array<int, 3>& h : fc_.halfedge)
+      for(int m = 0; m < 3; ++m) ++vertex_faces_start_[std::size_t(cm_.target[h[m]]) + 1];
+    for(int v = 0; v < cm_.n_vertices; ++v) vertex_faces_start_[std::size_t(v) + 1] += vertex_faces_start_[std::size_t(v)];
+    vertex_faces_.resize(vertex_faces_start_.back());
+    std::vector<std::size_t> pos(vertex_faces_start_.begin(), vertex_faces_start_.end() - 1);
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
+      for(int m = 0; m < 3; ++m) vertex_faces_[pos[std::size_t(cm_.target[fc_.halfedge[f][m]])]++] = int(f);
+  }
+
+  // Untangles x (2 values per sector, an exact solution of the rows on input) in place (see the header).
+  Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
+  {
+    stats = Untangle_statistics();
+    const std::vector<double> target = x;
+    std::vector<int> bad = bad_faces(x);
+    std::vector<char> untangled_vertex(std::size_t(cm_.n_vertices), 0);
+    for(int k : opt.rings) {
+      if(bad.empty()) break;
+      stats.rings = k;
+      const std::vector<std::vector<int> > regions = rings_around(bad, k, nullptr);
+      Region_problem problem;
+      Status s = build(problem, regions, x, nullptr, stats, message);
+      if(s != SUCCESS) return s;
+      std::vector<double> w(problem.dimension(), 0.);
+      std::vector<std::size_t> bad_before, bad_after;
+      std::vector<double> det_before, det_after;
+      problem.region_state(w, regions.size(), bad_before, det_before);
+      untangle(problem, opt, w, stats);
+      problem.region_state(w, regions.size(), bad_after, det_after);
+      for(std::size_t l = 0; l < problem.vars.size(); ++l) {
+        const std::size_t r = std::size_t(problem.var_region[l]);
+        if(bad_after[r] < bad_before[r] || (bad_after[r] == bad_before[r] && det_after[r] > det_before[r]))
+          x[std::size_t(problem.vars[l])] += problem.displacement(l, w);
+      }
+      bad = bad_faces(x);
+    }
+    if(opt.polish) {
+      Status s = polish(x, target, bad, opt, stats, message);
+      if(s != SUCCESS) return s;
+      bad = bad_faces(x);
+    }
+    stats.not_positive = bad.size();
+    return SUCCESS;
+  }
+
+  // the faces with det J <= 0 in x (floating point, as the energy sees them) that are not excluded
+  std::vector<int> bad_faces(const std::vector<double>& x) const
+  {
+    std::vector<int> bad;
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
+      if(!excluded_[f] && !(face_det(int(f), x) > 0)) bad.push_back(int(f));
+    return bad;
+  }
+
+private:
+  double face_det(int f, const std::vector<double>& x) const
+  {
+    double p[3][2];
+    for(int m = 0; m < 3; ++m) {
+      const std::size_t s = std::size_t(st_.sector_of[fc_.halfedge[std::size_t(f)][m]]);
+      p[m][0] = x[2 * s];
+      p[m][1] = x[2 * s + 1];
+    }
+    return untangling_determinant(refs_[std::size_t(f)].jacobian(p));
+  }
+
+  Status build(Region_problem& problem, const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
+               const std::vector<double>* target, Untangle_statistics& stats, std::string& message) const
+  {
+    Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, vertex_faces_start_, vertex_faces_,
+                             regions, x, target, message);
+    if(s != SUCCESS) { message = "untangling: null space of the region's constraint rows: " + message; return s; }
+    ++stats.attempts;
+    stats.dimension = (std::max)(stats.dimension, problem.dimension());
+    for(const std::vector<int>& r : regions) stats.region_vertices = (std::max)(stats.region_vertices, r.size());
+    return SUCCESS;
+  }
+
+  // The vertex sets of the regions: k face rings around each cluster of `faces`, overlapping ones merged.
+  // Vertices with `blocked` set are not entered (they stay fixed).
+  std::vector<std::vector<int> > rings_around(const std::vector<int>& faces, int k, const std::vector<char>* blocked) const
+  {
+    std::vector<int> owner(std::size_t(cm_.n_vertices), -1);   // the seed face (index in `faces`) that reached a vertex
+    Union_find uf(int(faces.size()));
+    std::vector<std::vector<int> > fronts(faces.size());
+    auto reach = [&](int v, std::size_t i, std::vector<int>& front) {
+      if(blocked != nullptr && (*blocked)[std::size_t(v)]) return;
+      if(owner[std::size_t(v)] < 0) { owner[std::size_t(v)] = int(i); front.push_back(v); }
+      else uf.unite(owner[std::size_t(v)], int(i));
+    };
+    for(std::size_t i = 0; i < faces.size(); ++i)
+      for(int h : fc_.halfedge[std::size_t(faces[i])]) reach(cm_.target[h], i, fronts[i]);
+    for(int ring = 0; ring < k; ++ring)
+      for(std::size_t i = 0; i < faces.size(); ++i) {
+        std::vector<int> next;
+        for(int v : fronts[i])
+          for(std::size_t q = vertex_faces_start_[std::size_t(v)]; q < vertex_faces_start_[std::size_t(v) + 1]; ++q)
+            for(int h : fc_.halfedge[std::size_t(vertex_faces_[q])]) reach(cm_.target[h], i, next);
+        fronts[i].swap(next);
+      }
+    std::vector<int> index(faces.size(), -1);
+    std::vector<std::vector<int> > out;
+    for(int v = 0; v < cm_.n_vertices; ++v) {
+      if(owner[std::size_t(v)] < 0) continue;
+      const std::size_t r = std::size_t(uf.find(owner[std::size_t(v)]));
+      if(index[r] < 0) { index[r] = int(out.size()); out.emplace_back(); }
+      out[std::size_t(index[r])].push_back(v);
+    }
+    return out;
+  }
+
+  // one Newton direction for value(w, eps, weight) into d; false if none (no descent)
+  static bool newton_direction(Region_problem& p, Eigen::SimplicialLDLT<Region_problem::Matrix>& ldlt,
+                               const std::vector<double>& w, double eps, double weight, Eigen::VectorXd& g, Eigen::VectorXd& d)
+  {
+    p.derivatives(w, eps, weight, g);
+    double trace = 0;
+    for(int k : p.diagonal) trace += p.H.valuePtr()[k];
+    const double shift = 1e-10 * (trace > 0 ? trace / double(w.size()) : 1.);
+    double added = 0;
+    for(double mu = shift; mu <= 1e10 * shift; mu *= 100) {   // a small shift makes the PSD matrix definite
+      for(int k : p.diagonal) p.H.valuePtr()[k] += mu - added;
+      added = mu;
+      ldlt.factorize(p.H);
+      if(ldlt.info() == Eigen::Success) { d = ldlt.solve(-g); if(d.allFinite()) return g.dot(d) < 0; }
+    }
+    d = -g;                                                   // steepest descent
+    return g.dot(d) < 0;
+  }
+
+  // backtracking (Armijo) from step t along d; w moves if the energy decreases enough
+  static bool line_search(const Region_problem& p, std::vector<double>& w, const Eigen::VectorXd& g, const Eigen::VectorXd& d,
+                          double t, double eps, double weight, double& E, double& det_min)
+  {
+    std::vector<double> trial(w.size());
+    const double slope = g.dot(d);
+    for(int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      for(std::size_t i = 0; i < w.size(); ++i) trial[i] = w[i] + t * d[Eigen::Index(i)];
+      double dm;
+      const double E_new = p.value(trial, eps, weight, dm);
+      if(E_new <= E + 1e-4 * t * slope) { w.swap(trial); E = E_new; det_min = dm; return true; }
+    }
+    return false;
+  }
+
+  // 1. Newton's method with the eps continuation
+  void untangle(Region_problem& p, const Untangle_options& opt, std::vector<double>& w, Untangle_statistics& stats) const
+  {
+    if(p.dimension() == 0 || p.faces.empty()) return;
+    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
+    ldlt.analyzePattern(p.H);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(w.size())), d;
+    double eps = opt.eps0, det_min = 0;
+    double E_prev = p.value(w, eps, 0, det_min);
+    std::size_t fewest_bad = p.faces.size() + 1;
+    int last_progress = 0;
+    for(int outer = 0; outer < opt.max_outer; ++outer) {
+      ++stats.outer_iterations;
+      double E = E_prev;
+      for(int it = 0; it < opt.max_newton; ++it) {
+        ++stats.newton_steps;
+        const double before = E;
+        if(!newton_direction(p, ldlt, w, eps, 0, g, d) || !line_search(p, w, g, d, 1., eps, 0, E, det_min)) break;
+        if(before - E <= 1e-9 * std::fabs(E)) break;
+      }
+      const double sigma = (std::max)(1 - E / E_prev, 0.1);
+      const double mu = (1 - sigma) * untangling_chi(det_min, eps);
+      const bool done = det_min > 0 && std::fabs(E_prev - E) <= 1e-5 * std::fabs(E);
+      eps = det_min < mu ? (std::max)(1e-9, 2 * std::sqrt(mu * (mu - det_min))) : 1e-9;
+      E_prev = p.value(w, eps, 0, det_min);
+      if(done) break;
+      if(det_min <= 0) {                                       // stalled: the region is too small for a fold-free map
+        std::size_t bad = 0;
+        for(const Region_problem::Face& e : p.faces) bad += !(untangling_determinant(Region_problem::jacobian(e, w)) > 0);
+        if(bad < fewest_bad) { fewest_bad = bad; last_progress = outer; }
+        else if(outer - last_progress >= opt.stall) break;
+      }
+    }
+  }
+
+  // 2. the minimal-change polish of the fold-free regions around the vertices that moved
+  Status polish(std::vector<double>& x, const std::vector<double>& target, const std::vector<int>& bad,
+                const Untangle_options& opt, Untangle_statistics& stats, std::string& message) const
+  {
+    std::vector<char> blocked(std::size_t(cm_.n_vertices), 0);   // vertices of faces still not positive stay
+    for(int f : bad) for(int h : fc_.halfedge[std::size_t(f)]) blocked[std::size_t(cm_.target[h])] = 1;
+    std::vector<int> seeds;                                      // faces with a moved corner
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
+      for(int h : fc_.halfedge[f]) {
+        const std::size_t s = std::size_t(st_.sector_of[h]);
+        if(!blocked[std::size_t(cm_.target[h])] && (x[2 * s] != target[2 * s] || x[2 * s + 1] != target[2 * s + 1])) {
+          seeds.push_back(int(f));
+          break;
+        }
+      }
+    if(seeds.empty()) return SUCCESS;
+    const std::vector<std::vector<int> > regions = rings_around(seeds, opt.polish_rings, &blocked);
+    Region_problem p;
+    Status s = build(p, regions, x, &target, stats, message);
+    if(s != SUCCESS || p.dimension() == 0) return s;
+    double area = 0;
+    for(const Region_problem::Face& e : p.faces) area += e.area;
+    const double lambda = opt.polish_lambda * double(p.faces.size()) / area;   // per unit of mean area
+    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
+    ldlt.analyzePattern(p.H);
+    std::vector<double> w(p.dimension(), 0.);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(w.size())), d;
+    // the energy is lambda-weighted f (barrier) + proximity; value() weighs proximity, so scale by 1 / lambda
+    const double weight = 1 / lambda, eps = 1e-12;
+    double det_min = 0;
+    double E = p.value(w, eps, weight, det_min);
+    if(!(det_min > 0)) return SUCCESS;                           // not fold-free: nothing to polish
+    for(int it = 0; it < opt.polish_iterations; ++it) {
+      ++stats.polish_steps;
+      const double before = E;
+      if(!newton_direction(p, ldlt, w, eps, weight, g, d)) break;
+      const double t = (std::min)(1., 0.8 * p.positive_step(w, d));
+      if(!line_search(p, w, g, d, t, eps, weight, E, det_min)) break;
+      if(before - E <= 1e-8 * std::fabs(E)) break;
+    }
+    for(std::size_t l = 0; l < p.vars.size(); ++l) x[std::size_t(p.vars[l])] += p.displacement(l, w);
+    return SUCCESS;
+  }
+
+  const Corner_mesh& cm_;
+  const Seam_topology& st_;
+  const Constraint_rows& rows_;
+  const Face_corners& fc_;
+  const std::vector<Reference_triangle>& refs_;
+  const std::vector<char>& excluded_;
+  Variable_rows incidence_;
+  std::vector<std::size_t> vertex_faces_start_;
+  std::vector<int> vertex_faces_;
+};
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_UNTANGLER_H
