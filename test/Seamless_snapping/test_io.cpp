@@ -6,6 +6,8 @@
 //   io: an invalid mesh or an unwritable place writes no file (atomic write)
 //   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not
 //   seam_mesh: SMP UVs on a Seam_mesh -> corner map -> back is bit-exact; border-halfedge pitfall; atomic failure
+//   matrices: libigl-style snapping; read_OBJ_matrices() / write_OBJ_matrices(): file layout, welding, bit-exact
+//             round trip, errors naming file and line
 //
 // Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
 // parts whose data is missing are skipped with a message.
@@ -20,6 +22,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
@@ -746,6 +749,53 @@ static void test_matrices()
   refused(V, F_twice, UV, FUV, "F row");
 }
 
+// ------------------------------------------------------------------------------------------
+// read_OBJ_matrices() / write_OBJ_matrices(): the file's own layout, welding of bit-identical vertices, a bit-exact
+// round trip (the package's decimal conversion: the same bits on every machine), errors naming file and line.
+static void test_obj_matrices(const fs::path& tmp)
+{
+  std::cout << "matrices: OBJ files\n";
+  const fs::path in = tmp / "cut_square.obj", out = tmp / "cut_square_out.obj";
+  // a cut square: two triangles with their own copies of the diagonal (v 4, 5 repeat v 1, 3), a -0.0 copy of v 1
+  // used by no face, and an unused vt
+  { std::ofstream o(in.string());
+    o << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 0 0\nv 1 1 0\nv 0 1 0\nv -0 0 0\n"
+         "vt 0 0\nvt 1 0\nvt 1 1\nvt 5 5\nvt 6 6\nvt 5 6\nvt 0.1 0.2\nf 1/1 2/2 3/3\nf 4/4 5/5 6/6\n"; }
+  Eigen::MatrixXd V, UV, V2, UV2;
+  Eigen::MatrixXi F, FUV, F2, FUV2;
+  std::string msg;
+  CHECK(SS::IO::read_OBJ_matrices(in.string(), V, F, UV, FUV, msg) == SS::SUCCESS, msg);
+  CHECK(V.rows() == 7 && UV.rows() == 7 && F.rows() == 2 && F(1, 0) == 3 && FUV(1, 2) == 5 && UV(6, 1) == 0.2,
+        "file layout: every v and vt row in file order, 0-based indices");
+  CHECK(SS::IO::read_OBJ_matrices(in.string(), V2, F2, UV2, FUV2, msg, SS::parameters::weld_vertices(true)) == SS::SUCCESS, msg);
+  Eigen::MatrixXi F_welded(2, 3);
+  F_welded << 0, 1, 2, 0, 2, 3;
+  CHECK(V2.rows() == 5 && F2 == F_welded && UV2 == UV && FUV2 == FUV && msg.find("welded 2") != std::string::npos,
+        "weld: one row per distinct position (first occurrence, file order), F refers to them: " << msg);
+  CHECK(same_bits(V2(4, 0), -0.0) && V2.row(3) == V.row(5), "weld keeps -0.0 apart from 0.0");
+  // round trip: write, read back, the same matrices bit for bit
+  const double vals[] = {0.1, -1.0 / 3.0, 5e-324, 1.7976931348623157e308};
+  for(int i = 0; i < 4; ++i) { V(i, 1) = vals[i]; UV(i, 0) = -vals[i]; }
+  CHECK(SS::IO::write_OBJ_matrices(out.string(), V, F, UV, FUV, msg) == SS::SUCCESS, msg);
+  CHECK(SS::IO::read_OBJ_matrices(out.string(), V2, F2, UV2, FUV2, msg) == SS::SUCCESS, msg);
+  bool same = V2.rows() == V.rows() && UV2.rows() == UV.rows() && F2 == F && FUV2 == FUV;
+  for(Eigen::Index i = 0; same && i < V.size(); ++i) same = same_bits(V(i), V2(i));
+  for(Eigen::Index i = 0; same && i < UV.size(); ++i) same = same_bits(UV(i), UV2(i));
+  CHECK(same, "write_OBJ_matrices -> read_OBJ_matrices is bit-exact");
+  // errors: the reader names file and line, the matrices stay as they were; the writer writes nothing
+  { std::ofstream o(in.string()); o << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 4/1\n"; }
+  const Eigen::MatrixXd V_before = V2;
+  CHECK(SS::IO::read_OBJ_matrices(in.string(), V2, F2, UV2, FUV2, msg) == SS::INVALID_INPUT &&
+        msg.find(in.string() + ":5: vertex index 4 out of range") == 0 && V2 == V_before, "reader error: " << msg);
+  std::cout << "  reader error: " << msg << "\n";
+  F(1, 2) = int(V.rows());
+  fs::remove(out);
+  CHECK(SS::IO::write_OBJ_matrices(out.string(), V, F, UV, FUV, msg) == SS::INVALID_INPUT && !fs::exists(out) &&
+        msg.find("face 1 has an index out of range") != std::string::npos, "writer error: " << msg);
+  CHECK(SS::IO::read_OBJ_matrices((tmp / "missing.obj").string(), V2, F2, UV2, FUV2, msg) == SS::INVALID_INPUT &&
+        msg.find("cannot open") == 0, "missing file: " << msg);
+}
+
 int main(int argc, char** argv)
 {
   parse_test_arguments(argc, argv);
@@ -758,6 +808,7 @@ int main(int argc, char** argv)
   if(!sanitizer_subset()) test_orbifold(tmp);
   test_seam_mesh();
   test_matrices();
+  test_obj_matrices(tmp);
   fs::remove_all(tmp);
   std::printf("test_io: %s (%d failures, %.1f s)\n", failures == 0 ? "OK" : "FAILED", failures, ms_since(t0) / 1000);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
