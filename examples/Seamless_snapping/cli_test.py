@@ -2,7 +2,10 @@
 input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, and
 --integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
 closed genus-0 mesh, which is near an integer-grid map).
-usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)"""
+usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)
+IN.obj is computed at test time (CGAL's solver: its last bits depend on the CPU), so nothing here is compared with stored
+values; the bit-for-bit checks compare the program's output with its own input (kept positions, pinned UVs that are
+exact binary fractions), the same on every machine."""
 import json
 import os
 import subprocess

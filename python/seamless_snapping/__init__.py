@@ -4,25 +4,37 @@ Satisfaction for Truly Seamless Parametrization"), Python bindings of the C++/CG
 Matrices follow libigl's convention: V (#V x 3 float), F (#F x 3 int, counter-clockwise),
 UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
 
+    V, F, UV, FUV = seamless_snapping.read_obj("in.obj")    # weld=True for cut meshes
     UV2, FUV2, report = seamless_snapping.snap(V, F, UV, FUV)
+    seamless_snapping.write_obj("out.obj", V, F, UV2, FUV2)
     x, report = seamless_snapping.project(C, b, xbar)      # C: scipy.sparse or 2-D integer array
     graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
 
 snap and project return new arrays only when every constraint holds exactly (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
 The tracing functions do not raise for a map they cannot read or trace: their dict has a "status" other than
-"SUCCESS" (only a face, corner or direction out of range raises ValueError or KeyError).
+"SUCCESS". Arguments refused before anything is computed (a file that cannot be read or written, index arrays
+that do not hold integers, an unknown direction, a face or corner out of range) raise InputError, a ValueError
+whose message names what was wrong and the valid values.
 """
 import json
+import operator
+import os
 from fractions import Fraction
 
 import numpy as np
 
 from . import _core
 
-__all__ = ["snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map", "motorcycle_graph",
-           "trace_isoline", "DIRECTIONS", "SnapError", "__version__"]
+__all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
+           "motorcycle_graph", "trace_isoline", "DIRECTIONS", "SnapError", "InputError", "__version__"]
 __version__ = _core.version
+
+#: An argument refused before anything is computed: an OBJ file that cannot be read (the message is the C++
+#: reader's, "<file>:<line>: <reason>") or written, index arrays that do not hold integers, an unknown isoline
+#: direction, a face or corner out of range. A subclass of ValueError.
+InputError = _core.InputError
+InputError.__module__ = __name__
 
 
 class SnapError(RuntimeError):
@@ -33,9 +45,49 @@ class SnapError(RuntimeError):
         self.report = report
 
 
+def _integer_array(a, what, meaning):
+    """`a` as a C-contiguous int64 array, or InputError unless every entry is an integer: an integer array, or
+    floats with integral values (as SciPy may store integer matrices)."""
+    arr = np.asarray(a)
+    if arr.dtype.kind in "iu":
+        return np.ascontiguousarray(arr, dtype=np.int64)
+    if arr.dtype.kind == "f":
+        with np.errstate(invalid="ignore"):
+            bad = ~np.isfinite(arr) | (np.abs(arr) >= 2.0 ** 62) | (arr != np.round(arr))
+        if not bad.any():
+            return np.ascontiguousarray(arr, dtype=np.int64)
+        where = tuple(int(i) for i in np.argwhere(bad)[0])
+        raise InputError("%s must hold integers (%s); %s[%s] = %r is not one" %
+                         (what, meaning, what, ", ".join(map(str, where)), arr[where].item()))
+    raise InputError("%s must hold integers (%s), not values of type %s" % (what, meaning, arr.dtype))
+
+
 def _mesh_arrays(V, F, UV, FUV):
-    return (np.ascontiguousarray(V, dtype=np.float64), np.ascontiguousarray(F, dtype=np.int64),
-            np.ascontiguousarray(UV, dtype=np.float64), np.ascontiguousarray(FUV, dtype=np.int64))
+    return (np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V"),
+            np.ascontiguousarray(UV, dtype=np.float64), _integer_array(FUV, "FUV", "row indices of UV"))
+
+
+def read_obj(path, *, weld=False):
+    """Reads an OBJ file with per-corner texture coordinates (`f v/vt ...`, triangles) with the package's reader.
+
+    Returns (V, F, UV, FUV) in the file's own layout, libigl's convention: V (#v x 3 float64) and UV (#vt x 2 float64)
+    in file order, read bit for bit; F and FUV (#f x 3 int32), 0-based rows of V and UV per face corner.
+    `weld=True` merges `v` lines with bit-identical coordinates into one row of V (the first; F refers to it):
+    the cut meshes of libigl/Directional, whose vertices are duplicated along the seams, become the closed surface.
+    Raises InputError with the reader's message ("<path>:<line>: <reason>") for a file it cannot read.
+    """
+    V, F, UV, FUV, _ = _core.read_obj(os.fspath(path), bool(weld))
+    return V, F, UV, FUV
+
+
+def write_obj(path, V, F, UV, FUV):
+    """Writes the matrices as an OBJ file with per-corner texture coordinates: one `v` per row of V, one `vt` per row
+    of UV, one `f v/vt v/vt v/vt` per face, with 17 significant digits (read_obj reads the same doubles back).
+    Atomic: the text goes to a temporary file that is then renamed. Raises InputError (nothing written) for arrays
+    of the wrong shape, an index out of range, a value that is not finite, or a place that cannot be written.
+    Returns the writer's one-line summary."""
+    Vc, Fc, UVc, FUVc = _mesh_arrays(V, F, UV, FUV)
+    return _core.write_obj(os.fspath(path), Vc, Fc, UVc, FUVc)
 
 
 def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
@@ -72,16 +124,6 @@ def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=False, grid_scale=1.0):
     return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), weld, float(grid_scale)))
 
 
-def _integer_array(a, what):
-    arr = np.asarray(a)
-    if arr.dtype.kind in "iu":
-        return arr.astype(np.int64)
-    if arr.dtype.kind == "f" and np.all(np.isfinite(arr)) and np.all(arr == np.round(arr)) \
-            and np.all(np.abs(arr) < 2.0 ** 62):
-        return arr.astype(np.int64)
-    raise ValueError("%s must hold integers" % what)
-
-
 def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, raise_on_failure=True):
     """Exact projection: doubles x near xbar with C x = b exactly (integer C and b; Sec. 4 of the paper).
 
@@ -94,17 +136,17 @@ def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, rais
     else:
         dense = np.asarray(C)
         if dense.ndim != 2:
-            raise ValueError("C must be 2-D")
+            raise InputError("C must be 2-D, it has %d dimensions" % dense.ndim)
         shape = dense.shape
         rows, cols = np.nonzero(dense)
         vals = dense[rows, cols]
-    vals = _integer_array(vals, "C")
-    b = _integer_array(np.ravel(b), "b")
+    vals = _integer_array(vals, "C", "the coefficients of the constraint rows")
+    b = _integer_array(np.ravel(b), "b", "the right-hand sides of the constraint rows")
     xbar = np.ascontiguousarray(np.ravel(xbar), dtype=np.float64)
     if b.size != shape[0]:
-        raise ValueError("b has %d entries, C has %d rows" % (b.size, shape[0]))
+        raise InputError("b has %d entries, C has %d rows" % (b.size, shape[0]))
     if xbar.size != shape[1]:
-        raise ValueError("xbar has %d entries, C has %d columns" % (xbar.size, shape[1]))
+        raise InputError("xbar has %d entries, C has %d columns" % (xbar.size, shape[1]))
     x, text = _core.project(int(shape[0]), int(shape[1]), np.asarray(rows, dtype=np.int64).tolist(),
                             np.asarray(cols, dtype=np.int64).tolist(), vals.tolist(), b.tolist(), xbar.tolist(),
                             int(delta_margin_bits), bool(force_multiprecision))
@@ -116,6 +158,32 @@ def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, rais
 
 #: the isoline directions of `trace_isoline`, in the UV chart of the start face
 DIRECTIONS = {"+u": 0, "+v": 1, "-u": 2, "-v": 3}
+
+
+def _direction(direction):
+    """0..3 for a name of DIRECTIONS or an integer 0..3; InputError naming the valid values otherwise."""
+    if isinstance(direction, str):
+        if direction in DIRECTIONS:
+            return DIRECTIONS[direction]
+    elif not isinstance(direction, bool):
+        try:
+            d = operator.index(direction)
+            if 0 <= d <= 3:
+                return d
+        except TypeError:
+            pass
+    raise InputError("unknown direction %r: the directions are %s (or 0, 1, 2, 3)" %
+                     (direction, ", ".join(repr(k) for k in DIRECTIONS)))
+
+
+def _index(x, what):
+    """x as an int, or InputError unless it is an integer (a Python or NumPy integer, not a float)."""
+    if not isinstance(x, bool):
+        try:
+            return operator.index(x)
+        except TypeError:
+            pass
+    raise InputError("%s must be an integer, got %r" % (what, x))
 
 
 def _exact_polyline(trace):
@@ -156,7 +224,8 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
 def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_faces=0, rotation_tolerance=1.0):
     """Traces one isoline exactly from the vertex F[face, corner], along `direction` ("+u", "+v", "-u", "-v",
     or 0..3) in the UV chart of `face` (the sector of that corner), until a cone, the border, a closed loop,
-    the face limit, or an inconsistency of the map.
+    the face limit, or an inconsistency of the map. A face that is not a row of F, a corner other than 0, 1, 2 or
+    another direction raise InputError.
 
     Returns a dict: "status" and "message" (of reading the map), and on SUCCESS the trace:
       "end": how it ended (a C++ Trace_end name), "failure": True for an inconsistency of the map, "message";
@@ -168,10 +237,8 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_fac
             rounded to doubles; "uv_exact": the same points exactly, as fractions.Fraction;
       "points": (#segments + 1, 3) the polyline in 3D (exact barycentric coordinates, rounded to doubles).
     """
-    if isinstance(direction, str):
-        direction = DIRECTIONS[direction]
-    d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), int(face), int(corner), int(direction), bool(weld),
-                            int(max_faces), float(rotation_tolerance))
+    d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), _index(face, "face"), _index(corner, "corner"),
+                            _direction(direction), bool(weld), int(max_faces), float(rotation_tolerance))
     if d["status"] == "SUCCESS":
         _exact_polyline(d)
     return d

@@ -1,8 +1,11 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
-// project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...).
-// Thin: every check and every computation is the C++ library's; reports cross as JSON text.
+// project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...),
+// read_obj(filename, weld), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h).
+// Thin: every check and every computation is the C++ library's; reports cross as JSON text. Arguments refused
+// before any computation raise InputError (a ValueError), registered here for the Python side too.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
+#include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
@@ -17,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +31,42 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> M
 typedef Eigen::Matrix<long long, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> MatrixXlR;
 
 namespace {
+
+// an argument refused before anything is computed; Python: seamless_snapping.InputError (a ValueError)
+struct Input_error : std::invalid_argument
+{
+  using std::invalid_argument::invalid_argument;
+};
+
+// (V, F, UV, FUV, message) of the OBJ file in its own layout (rows of V welded with `weld`); InputError with the
+// reader's message ("<file>:<line>: <reason>") when it cannot be read
+py::tuple read_obj(const std::string& filename, bool weld)
+{
+  Eigen::MatrixXd V, UV;
+  Eigen::MatrixXi F, FUV;
+  std::string message;
+  SS::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SS::IO::read_OBJ_matrices(filename, V, F, UV, FUV, message, SS::parameters::weld_vertices(weld));
+  }
+  if(s != SS::SUCCESS) throw Input_error(message);
+  return py::make_tuple(V, F, UV, FUV, message);
+}
+
+// writes the matrices as an OBJ file (atomically); InputError with the writer's message when nothing was written
+std::string write_obj(const std::string& filename, const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV,
+                      const MatrixXlR& FUV)
+{
+  std::string message;
+  SS::Status s;
+  {
+    py::gil_scoped_release release;
+    s = SS::IO::write_OBJ_matrices(filename, V, F, UV, FUV, message);
+  }
+  if(s != SS::SUCCESS) throw Input_error(message);
+  return message;
+}
 
 py::tuple snap(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
                bool repair_flips, bool align_boundary, bool use_reduced_system, double rotation_tolerance,
@@ -85,12 +125,12 @@ py::tuple project(std::size_t n_rows, std::size_t n_cols, const std::vector<long
                   const std::vector<double>& xbar, int delta_margin_bits, bool force_multiprecision)
 {
   if(rows.size() != cols.size() || rows.size() != vals.size())
-    throw std::invalid_argument("C: row, column and value arrays differ in length");
+    throw Input_error("C: row, column and value arrays differ in length");
   std::vector<Eigen::Triplet<long> > triplets;
   triplets.reserve(rows.size());
   for(std::size_t k = 0; k < rows.size(); ++k) {
     if(rows[k] < 0 || std::size_t(rows[k]) >= n_rows || cols[k] < 0 || std::size_t(cols[k]) >= n_cols)
-      throw std::invalid_argument("C: entry " + std::to_string(k) + " lies outside the matrix");
+      throw Input_error("C: entry " + std::to_string(k) + " lies outside the matrix");
     triplets.emplace_back(Eigen::Index(rows[k]), Eigen::Index(cols[k]), long(vals[k]));
   }
   SS::Projection_options options;
@@ -275,9 +315,10 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
                        int corner, int direction, bool weld, std::size_t max_faces, double rotation_tolerance)
 {
   if(face < 0 || face >= (long long)(F.rows()))
-    throw std::invalid_argument("face " + std::to_string(face) + " is not a row of F");
-  if(corner < 0 || corner > 2) throw std::invalid_argument("corner must be 0, 1 or 2");
-  if(direction < 0 || direction > 3) throw std::invalid_argument("direction must be 0 (+u), 1 (+v), 2 (-u) or 3 (-v)");
+    throw Input_error("face " + std::to_string(face) + " is not a row of F (0.." + std::to_string(F.rows() - 1) + ")");
+  if(corner < 0 || corner > 2) throw Input_error("corner " + std::to_string(corner) + " is not 0, 1 or 2");
+  if(direction < 0 || direction > 3)
+    throw Input_error("direction " + std::to_string(direction) + " is not 0 (+u), 1 (+v), 2 (-u) or 3 (-v)");
   SS::internal::Matrix_mesh_with_uv m;
   py::dict failure;
   if(!mesh_or_failure(V, F, UV, FUV, weld, m, failure)) return failure;
@@ -304,6 +345,9 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
 PYBIND11_MODULE(_core, m)
 {
   m.doc() = "Exact seamless snapping (Mandad & Campen 2019): C++ core of the seamless_snapping package";
+  py::register_exception<Input_error>(m, "InputError", PyExc_ValueError);
+  m.def("read_obj", &read_obj, py::arg("filename"), py::arg("weld"));
+  m.def("write_obj", &write_obj, py::arg("filename"), py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"));
   m.def("snap", &snap, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("repair_flips"), py::arg("align_boundary"), py::arg("use_reduced_system"),
         py::arg("rotation_tolerance"), py::arg("alignment_tolerance"), py::arg("minimal_change"),

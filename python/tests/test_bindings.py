@@ -1,5 +1,8 @@
 """Tests of the Python bindings. Exactness is checked here, independently of the C++ checker, in
-rational arithmetic (fractions.Fraction holds every double exactly)."""
+rational arithmetic (fractions.Fraction holds every double exactly). Bit-for-bit comparisons are of the package's
+own outputs on inputs made in the same process (an exact input returned as it is, a scaled result, OBJ text written
+and read back with correctly rounded conversions): none compares a floating-point result of libm or of a solver
+with stored bits, so none depends on the machine."""
 import os
 import random
 from fractions import Fraction
@@ -12,8 +15,9 @@ import seamless_snapping as ss
 SHARED = os.environ.get("SS_SHARED_DATA_DIR", "")
 
 
-def read_obj(path):
-    """V, F, UV, FUV of an OBJ with per-corner vt (triangles; 'f v/vt', 'f v/vt/vn', negative indices)."""
+def parse_obj(path):
+    """V, F, UV, FUV of an OBJ with per-corner vt (triangles; 'f v/vt', 'f v/vt/vn', negative indices), parsed here
+    in Python (float() is correctly rounded): the reference for ss.read_obj."""
     V, UV, F, FUV = [], [], [], []
     with open(path) as fh:
         for line in fh:
@@ -216,7 +220,7 @@ def test_snap_shared_data(name, weld):
     path = os.path.join(SHARED, name)
     if not SHARED or not os.path.exists(path):
         pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = read_obj(path)
+    V, F, UV, FUV = ss.read_obj(path)
     UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld)
     assert report["status"] == "SUCCESS", report["message"]
     bad, cut = seam_violations(V, F, UV2, FUV2, weld=weld)
@@ -245,7 +249,7 @@ def test_trace_isoline_cut_grid():
     assert t["status"] == "SUCCESS" and t["end"] == "border" and not t["failure"]
     assert t["start"] == 0 and t["inexact_transfers"] == 0
     assert len(t["faces"]) == 8 and t["points"].shape == (9, 3)
-    assert np.array_equal(t["points"], np.array([[0.0, j / 8, 0.0] for j in range(9)]))   # the grid's vertices
+    assert np.array_equal(t["points"], np.array([[0.0, j / 8, 0.0] for j in range(9)]))   # the grid's vertices (exact)
     assert list(t["directions"]) == [1] * 4 + [2] * 4      # +v below the cut, -u in the rotated chart above it
     assert axis_parallel_exactly(t)
     assert 0 in F[t["start_face"]] and t["start_face"] == t["faces"][0]
@@ -257,10 +261,8 @@ def test_trace_isoline_cut_grid():
     assert t0["end"] == "border" and t0["inexact_transfers"] > 0 and len(t0["faces"]) > 8
     # along -v there is no sector at the border vertex; a bad face or direction is refused
     assert ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "-v")["end"] == "invalid_start"
-    with pytest.raises(ValueError):
+    with pytest.raises(ss.InputError, match="not a row of F"):
         ss.trace_isoline(V, F, UV2, FUV2, len(F), 0, "+u")
-    with pytest.raises(KeyError):
-        ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "+w")
     bad = UV2.copy()
     bad[0, 0] = np.nan
     assert ss.trace_isoline(V, F, bad, FUV2, 0, 0, "+u")["status"] == "INVALID_INPUT"
@@ -364,7 +366,7 @@ def test_motorcycle_graph_shared_data(name, weld):
     path = os.path.join(SHARED, name)
     if not SHARED or not os.path.exists(path):
         pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = read_obj(path)
+    V, F, UV, FUV = ss.read_obj(path)
     g0 = ss.motorcycle_graph(V, F, UV, FUV, weld=weld)
     assert g0["status"] == "SUCCESS"
     assert g0["counts"]["inexact_transfers"] > 0           # the solver's error at the cuts, seen by the tracer
@@ -408,3 +410,102 @@ def test_tracing_refuses_a_map_that_is_not_quarter_turn_seamless():
     # a rotation tolerance above 45 degrees lets the tracer read it; the traces then fail at the cut
     g = ss.motorcycle_graph(V, F, UV, FUV, rotation_tolerance=46.0)
     assert g["status"] == "SUCCESS" and g["counts"]["failed"] > 0 and g["counts"]["inexact_transfers"] > 0
+
+
+# ---- OBJ files and input checks ----
+
+def bits(a):
+    """The bits of a float64 array (np.array_equal would take -0.0 for 0.0)."""
+    return np.ascontiguousarray(a, dtype=np.float64).view(np.uint64)
+
+
+def test_read_obj_write_obj(tmp_path):
+    V, F, UV, FUV = cut_grid()
+    V = V.copy()
+    V[1, 2] = -0.0                                         # kept apart from 0.0, bit for bit
+    UV = UV.copy()
+    UV[2] = [5e-324, 1.7976931348623157e308]               # extreme doubles survive the text
+    path = tmp_path / "grid.obj"
+    assert "wrote 128 faces" in ss.write_obj(path, V, F, UV, FUV)
+    V2, F2, UV2, FUV2 = ss.read_obj(path)
+    assert np.array_equal(bits(V2), bits(V)) and np.array_equal(bits(UV2), bits(UV))
+    assert np.array_equal(F2, F) and np.array_equal(FUV2, FUV) and F2.shape == (128, 3) and V2.shape == (81, 3)
+    # the same arrays as an independent parse of the file
+    Vp, Fp, UVp, FUVp = parse_obj(path)
+    assert np.array_equal(bits(Vp), bits(V2)) and np.array_equal(bits(UVp), bits(UV2))
+    assert np.array_equal(Fp, F2) and np.array_equal(FUVp, FUV2)
+
+
+def test_read_obj_weld(tmp_path):
+    # a cut mesh: one v per face corner (vertices duplicated, as libigl/Directional write them)
+    V, F, UV, FUV = cut_grid()
+    path = tmp_path / "cut.obj"
+    ss.write_obj(path, V[F].reshape(-1, 3), np.arange(3 * len(F)).reshape(-1, 3), UV, FUV)
+    Vc, Fc, _, _ = ss.read_obj(path)
+    assert len(Vc) == 3 * len(F)
+    Vw, Fw, UVw, FUVw = ss.read_obj(path, weld=True)
+    assert len(Vw) == len(V) and len({tuple(p) for p in Vw}) == len(V)     # one row per position
+    assert np.array_equal(Vw[Fw], V[F]) and np.array_equal(UVw, UV) and np.array_equal(FUVw, FUV)
+    # welded, the seams are visible again: the same cut edges as the original grid's, snapped exactly
+    assert not ss.is_exactly_seamless(Vw, Fw, UVw, FUVw)
+    UV2, FUV2, report = ss.snap(Vw, Fw, UVw, FUVw)
+    assert report["cut_edges"] == ss.snap(V, F, UV, FUV)[2]["cut_edges"] > 0 and ss.is_exactly_seamless(Vw, Fw, UV2, FUV2)
+
+
+def test_obj_errors(tmp_path):
+    bad = tmp_path / "bad.obj"
+    bad.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 4/1\n")
+    with pytest.raises(ss.InputError) as e:
+        ss.read_obj(bad)
+    assert str(e.value).startswith("%s:5: vertex index 4 out of range" % bad)
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(ss.InputError, match="cannot open"):
+        ss.read_obj(tmp_path / "missing.obj")
+    V, F, UV, FUV = cut_grid()
+    out = tmp_path / "out.obj"
+    UVn = UV.copy()
+    UVn[3, 1] = np.nan
+    with pytest.raises(ss.InputError, match=r"UV\(3, 1\) is not finite"):
+        ss.write_obj(out, V, F, UVn, FUV)
+    Fo = F.copy()
+    Fo[2, 1] = len(V)
+    with pytest.raises(ss.InputError, match="face 2 has an index out of range"):
+        ss.write_obj(out, V, Fo, UV, FUV)
+    with pytest.raises(ss.InputError, match="cannot"):
+        ss.write_obj(tmp_path / "no_such_dir" / "out.obj", V, F, UV, FUV)
+    assert not out.exists() and list(tmp_path.iterdir()) == [bad]          # nothing written, no temporary left
+
+
+def test_index_arrays_must_hold_integers():
+    V, F, UV, FUV = cut_grid()
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV)
+    # integral floats are integers (SciPy and NumPy arithmetic make them): the same result, bit for bit
+    UVf, FUVf, _ = ss.snap(V, F.astype(float), UV, FUV.astype(float))
+    assert np.array_equal(bits(UVf), bits(UV2)) and np.array_equal(FUVf, FUV2)
+    with pytest.raises(ss.InputError) as e:                                # used to be truncated to F silently
+        ss.snap(V, F.astype(float) + 0.5, UV, FUV)
+    assert str(e.value) == "F must hold integers (row indices of V); F[0, 0] = 0.5 is not one"
+    Fn = F.astype(float)
+    Fn[4, 2] = np.nan
+    with pytest.raises(ss.InputError, match=r"FUV\[4, 2\] = nan is not one"):
+        ss.is_exactly_seamless(V, F, UV, Fn)
+    with pytest.raises(ss.InputError, match="not values of type bool"):
+        ss.motorcycle_graph(V, F > 0, UV, FUV)
+    with pytest.raises(ss.InputError, match="row indices of UV"):
+        ss.write_obj("never_written.obj", V, F, UV, FUV + 0.25)
+    with pytest.raises(ss.InputError, match="C must hold integers"):
+        ss.project(np.array([[0.5]]), [0], [0.0])
+
+
+def test_trace_isoline_refuses_unknown_directions():
+    V, F, UV, FUV = cut_grid()
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV)
+    for d in ("+w", "u", 4, -1, 1.0, True, None):
+        with pytest.raises(ss.InputError) as e:
+            ss.trace_isoline(V, F, UV2, FUV2, 0, 0, d)
+        assert str(e.value) == "unknown direction %r: the directions are '+u', '+v', '-u', '-v' (or 0, 1, 2, 3)" % (d,)
+    assert ss.trace_isoline(V, F, UV2, FUV2, 0, 0, np.int64(1))["end"] == ss.trace_isoline(V, F, UV2, FUV2, 0, 0, "+v")["end"]
+    with pytest.raises(ss.InputError, match="face must be an integer, got 0.5"):
+        ss.trace_isoline(V, F, UV2, FUV2, 0.5, 0, "+u")
+    with pytest.raises(ss.InputError, match="corner 3 is not 0, 1 or 2"):
+        ss.trace_isoline(V, F, UV2, FUV2, 0, 3, "+u")

@@ -50,6 +50,13 @@
 //
 // The independent exact check (Gmpq unfolding along the face strip) is in connection_test_utils.h.
 //
+// Bit-for-bit checks, none against stored bits: idempotence (the result snapped again), an empty constraint range
+// against none, an exact input returned as it is, grid_scale(4) against the result / 4 and pinned results at scales
+// 2^j against scale 1 (scale covariance), pinned corners keeping their input bits, refusals leaving the map untouched;
+// each compares outputs computed in this run from the same input bits. The snap uses libm only in decisions far from
+// their thresholds and no solver whose rounding depends on the CPU, so they hold on every machine (the orbifold inputs
+// made here do differ between CPUs: CTest also runs other_rounding__test_constraints, see test_arguments.h).
+//
 // Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
 // parts whose data is missing are skipped with a message.
 
@@ -158,7 +165,7 @@ static SS::Snap_report snap_and_check(const Mesh& input, const std::vector<Const
           m2, uv2, SS::parameters::use_reduced_system(reduced, SS::parameters::connection_constraints(std::cref(cc))));
       if(r2.status != SS::SUCCESS) std::cerr << name << ": second snap: " << r2.message << std::endl;
       assert(r2.status == SS::SUCCESS);
-      assert(uv_bits(m2, uv2) == uv_bits(m, uv));
+      assert(uv_bits(m2, uv2) == uv_bits(m, uv));       // idempotent: the result, snapped again in this run
     }
   } else {
     std::printf("  NOTE %s: %zu zero-length cut edges in the result, idempotence not checked\n", name.c_str(), zero_length_cuts);
@@ -456,7 +463,7 @@ static void test_invalid()
     const std::vector<Constraint> none;
     assert(SS::snap_seamless_parameterization(a, uva).status == SS::SUCCESS);
     assert(SS::snap_seamless_parameterization(b, uvb, SS::parameters::connection_constraints(none)).status == SS::SUCCESS);
-    assert(uv_bits(a, uva) == uv_bits(b, uvb));
+    assert(uv_bits(a, uva) == uv_bits(b, uvb));         // same input, same run
   }
   std::cout << "connections: invalid paths: OK\n";
 }
@@ -538,7 +545,8 @@ static void test_integer_grid_analytic()
                                                                   SS::parameters::grid_scale(4.)));
     assert(r4.status == SS::SUCCESS && SS::is_exact_integer_grid_map(q, uvq, SS::parameters::grid_scale(4.)));
     assert(!SS::is_exact_integer_grid_map(q, uvq));
-    for(halfedge_descriptor h : q.halfedges()) assert(get(uvq, h).x() * 4 == get(uv, h).x() && get(uvq, h).y() * 4 == get(uv, h).y());
+    for(halfedge_descriptor h : q.halfedges())          // both snapped in this run from inputs that differ by 2^2 exactly
+      assert(get(uvq, h).x() * 4 == get(uv, h).x() && get(uvq, h).y() * 4 == get(uv, h).y());
     // a grid scale that is not a power of two is refused, map untouched
     const std::vector<std::uint64_t> bits = uv_bits(q, uvq);
     const SS::Snap_report r3 = SS::snap_seamless_parameterization(q, uvq, SS::parameters::integer_grid_map(true,
@@ -760,7 +768,8 @@ static void test_pinned_corners_analytic()
         const SS::Snap_report rf = SS::snap_seamless_parameterization(f, uvf, SS::parameters::integer_grid_map(igm));
         assert(rf.status == SS::SUCCESS && !pinned_bit_identical(f, uvf, pf, b0));
       }
-      // covariance: the result at scale 2^j is the result at scale 1 times 2^j, bit for bit
+      // covariance: the result at scale 2^j is the result at scale 1 times 2^j, bit for bit (a relation between
+      // two snaps of this run; the pinned UVs are exact binary fractions)
       std::vector<std::uint64_t> unscaled;
       for(halfedge_descriptor h : m.halfedges()) {
         const double a = get(uv, h).x() / scale, b = get(uv, h).y() / scale;

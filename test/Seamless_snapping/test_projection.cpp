@@ -31,6 +31,15 @@
 //     with COLAMD, the order fills in less than the pivot rule alone on the per-corner system and is
 //     what the automatic choice takes there, while on the seamless-like system the automatic choice
 //     is the pivot rule's IRREF, unchanged; the per-corner projection is SUCCESS and exact in Gmpq
+//
+// Bit-for-bit checks (untouched variables, exact inputs returned as they are, int64 against Gmpz, triplets against
+// Eigen matrices, repeated and in-place projection, std::vector against Eigen vectors, scale covariance): every one
+// compares outputs of this run computed from the same input bits, never stored bits. The projection is exact integer
+// arithmetic on a fixed-point grid plus IEEE additions, multiplications, divisions and sqrt, which round the same on
+// every machine (-ffp-contract=off: no fused a*b+c), and Eigen::SimplicialLDLT in the minimal-change mode, which has no
+// dense blocked kernels (the CPU-dependent blocking of test_arguments.h does not reach it); the generated inputs
+// come from std::mt19937 and integer arithmetic. So this test computes the same bits everywhere and is not run with
+// the other rounding.
 
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 

@@ -21,6 +21,14 @@
 //
 // Real data: SS_SHARED_DATA_DIR (../shared/data) and SS_CGAL_DATA_DIR (meshes from libcgal-demo);
 // parts whose data is missing are skipped with a message.
+//
+// Bit-for-bit checks, none against stored bits: an exact input returned as it is (cube.obj, align_boundary(false) on
+// a map without seams), corners no constraint touches, a refused snap leaving the map untouched, the same input
+// snapped twice or with its own seams and rotations given (determinism), and UVs scaled by 2^j snapping to the
+// scaled result (scale covariance), each computed in the same run from the same input bits. The snap uses libm
+// (atan2, hypot) only in decisions far from their thresholds and no solver whose rounding depends on the CPU, so these
+// relations hold on every machine; the orbifold inputs made at run time differ between CPUs (test_arguments.h) and
+// CTest runs this test a second time with the other rounding (other_rounding__test_snap).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -132,7 +140,7 @@ static void test_data_meshes(std::vector<File_result>& results)
       // repair moved free vertices; what it may move is checked in `flip repair: data meshes`)
       for(halfedge_descriptor h : m.halfedges())
         if(!m.is_border(h) && !constrained[m.target(h).idx()]) assert(get(uv, h) == get(uv_in, h) || r.repair_moves > 0);
-      if(cube) assert(uv_bits(m, uv) == bits_in);
+      if(cube) assert(uv_bits(m, uv) == bits_in);   // exactly seamless as stored: returned as it is, on any machine
       // the change against the L2 optimum
       const l2_reference::Comparison cmp = l2_reference::compare(opt, sys.ubar, l2_reference::sector_values(sys, uv), sys.quantum);
       std::printf("  %s %s: ||u-ubar|| / ||u*-ubar||: L2 %.4f, max %.4f; optimum %.3g quanta, max excess %.2f quanta\n",
@@ -141,7 +149,7 @@ static void test_data_meshes(std::vector<File_result>& results)
         assert(l2_reference::meets_target(opt, cmp, sys.quantum));
         if(opt.l2 > 0) l2_ratios.push_back(cmp.ratio_l2);
       }
-      // deterministic
+      // deterministic (the same input bits, snapped twice in this run)
       {
         Mesh m2 = input;
         UV_map uv2 = uv_of(m2);
@@ -236,7 +244,7 @@ static void scale_sweep(const std::string& name, const Mesh& input, const std::v
       same = get(uv, h).x() == std::ldexp(get(uv0, h).x(), j) && get(uv, h).y() == std::ldexp(get(uv0, h).y(), j);
     }
     if(exact_input && !same) std::printf("  %s, j = %d: SUCCESS but not the scaled result of j = 0\n", name.c_str(), j);
-    if(exact_input) assert(same);     // the same doubles up to 2^j
+    if(exact_input) assert(same);     // the same doubles up to 2^j (both snapped in this run: a relation, no stored bits)
     if(same) { lo = (std::min)(lo, j); hi = (std::max)(hi, j); }
     else assert(j < must_lo || j > must_hi);
   }
@@ -432,7 +440,7 @@ static void test_given_seams_and_rotations()
   SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv_of(m1),
                          SS::parameters::seam_edge_map(seam, SS::parameters::rotation_map(kmap)));
   assert(r1.status == SS::SUCCESS);
-  assert(uv_bits(m1, uv_of(m1)) == uv_bits(m0, uv_of(m0)));
+  assert(uv_bits(m1, uv_of(m1)) == uv_bits(m0, uv_of(m0)));   // same input, same run: the given = the detected seams
   assert(SS::is_exactly_seamless(m1, uv_of(m1), SS::parameters::rotation_map(kmap, SS::parameters::seam_edge_map(seam))));
   assert(!SS::is_exactly_seamless(input, uv_in, SS::parameters::rotation_map(kmap)));
 

@@ -15,6 +15,7 @@
 //  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
 //  - on any other status, every halfedge UV is bit-identical to what was read.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
+// The bit-for-bit check compares the UVs after a refused snap with those read in the same run: machine independent.
 
 #include "../Seamless_snapping/mesh_test_support.h"
 

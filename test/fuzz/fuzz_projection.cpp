@@ -15,6 +15,8 @@
 //    when 2^j x̄ stays far from the subnormal and overflow ranges);
 //  - on failure: x is untouched, and a failed initialize() is the status project() reports.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
+// The bit-for-bit checks compare outputs of one run from the same input bits (copies, untouched x, 2^j scaling):
+// machine independent, no stored bits.
 
 #include "projection_bytes.h"
 

@@ -310,6 +310,29 @@ struct Bits3_hash
   }
 };
 
+// rep[i]: the file vertex that vertex i of `points` becomes: itself, or with `weld` the first vertex of the
+// file with bit-identical coordinates (0.0 and -0.0 differ). Returns how many vertices were merged into an earlier one.
+inline std::size_t weld_representatives(const std::vector<std::array<double, 3> >& points, bool weld,
+                                        std::vector<std::size_t>& rep)
+{
+  const std::size_t nv = points.size();
+  rep.resize(nv);
+  std::size_t welded = 0;
+  if(weld) {
+    std::unordered_map<std::array<std::uint64_t, 3>, std::size_t, Bits3_hash> first;
+    first.reserve(nv);
+    for(std::size_t i = 0; i < nv; ++i) {
+      const std::array<double, 3>& x = points[i];
+      auto ins = first.emplace(std::array<std::uint64_t, 3>{double_bits(x[0]), double_bits(x[1]), double_bits(x[2])}, i);
+      rep[i] = ins.first->second;
+      if(!ins.second) ++welded;
+    }
+  } else {
+    for(std::size_t i = 0; i < nv; ++i) rep[i] = i;
+  }
+  return welded;
+}
+
 // Soup -> mesh. Validates the connectivity on a scratch mesh first, then replays the same
 // operations on `tm` (which cannot fail then), so that a failure leaves `tm` and `uv` untouched.
 // With `corners`, (*corners)[f][k] is the halfedge whose target is corner k of soup face f.
@@ -327,20 +350,8 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
 
   const std::size_t nv = soup.points.size();
   // 1. representative of each file vertex (itself, or the first bit-identical one when welding)
-  std::vector<std::size_t> rep(nv);
-  std::size_t welded = 0;
-  if(weld) {
-    std::unordered_map<std::array<std::uint64_t, 3>, std::size_t, Bits3_hash> first;
-    first.reserve(nv);
-    for(std::size_t i = 0; i < nv; ++i) {
-      const std::array<double, 3>& x = soup.points[i];
-      auto ins = first.emplace(std::array<std::uint64_t, 3>{double_bits(x[0]), double_bits(x[1]), double_bits(x[2])}, i);
-      rep[i] = ins.first->second;
-      if(!ins.second) ++welded;
-    }
-  } else {
-    for(std::size_t i = 0; i < nv; ++i) rep[i] = i;
-  }
+  std::vector<std::size_t> rep;
+  const std::size_t welded = weld_representatives(soup.points, weld, rep);
 
   // 2. mesh vertex ids: representatives used by a face, in file order
   const std::size_t none = std::size_t(-1);

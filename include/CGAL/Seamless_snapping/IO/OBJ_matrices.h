@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Seamless_snapping {
@@ -28,11 +29,35 @@ namespace IO {
  * reads an OBJ file with per-corner texture coordinates into libigl-style matrices, in the file's own
  * layout: `V` (`#v` x 3) and `UV` (`#vt` x 2) in file order, `F` and `FUV` (`#f` x 3) with 0-based indices.
  * Same syntax and checks as `read_OBJ_with_corner_uvs()` (triangles only, indices in range, finite
- * numbers; no mesh is built, so connectivity is not checked here). The matrices are written only on `SUCCESS`.
+ * numbers; no mesh is built, so connectivity is not checked here). The doubles are read bit for bit.
+ * The matrices are written only on `SUCCESS`; otherwise `message` says why, as `"<filename>:<line>: <reason>"`
+ * for an error in the file.
+ *
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{weld_vertices}
+ *     \cgalParamDescription{merge `v` lines with bit-identical coordinates into one row of `V` (the first in the file;
+ *                           the rows keep the file order of their first occurrence, and `F` refers to them): the
+ *                           cut meshes of libigl/Directional, whose vertices are duplicated along the seams, become the
+ *                           closed surface again. `0.0` and `-0.0` are not merged.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::weld_vertices()`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \sa `write_OBJ_matrices()`, `read_OBJ_with_corner_uvs()`
  */
-inline Status read_OBJ_matrices(const std::string& filename, Eigen::MatrixXd& V, Eigen::MatrixXi& F,
-                                Eigen::MatrixXd& UV, Eigen::MatrixXi& FUV, std::string& message)
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+Status read_OBJ_matrices(const std::string& filename, Eigen::MatrixXd& V, Eigen::MatrixXi& F,
+                         Eigen::MatrixXd& UV, Eigen::MatrixXi& FUV, std::string& message,
+                         const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const bool weld = choose_parameter(get_parameter(np, snap_np::weld_vertices), false);
+
   std::ifstream is(filename, std::ios::binary);
   if(!is) { message = "cannot open '" + filename + "' for reading"; return INVALID_INPUT; }
   internal::Obj_soup soup;
@@ -41,20 +66,27 @@ inline Status read_OBJ_matrices(const std::string& filename, Eigen::MatrixXd& V,
     message = filename + ": more vertices or texture coordinates than 32-bit indices hold";
     return INVALID_INPUT;
   }
-  Eigen::MatrixXd v(Eigen::Index(soup.points.size()), 3), uv(Eigen::Index(soup.uvs.size()), 2);
+  // row of V of each file vertex: its own, or with welding the row of the first bit-identical one
+  std::vector<std::size_t> rep, row(soup.points.size());
+  const std::size_t welded = internal::weld_representatives(soup.points, weld, rep);
+  std::size_t rows = 0;
+  for(std::size_t i = 0; i < soup.points.size(); ++i) row[i] = rep[i] == i ? rows++ : row[rep[i]];
+  Eigen::MatrixXd v(Eigen::Index(rows), 3), uv(Eigen::Index(soup.uvs.size()), 2);
   Eigen::MatrixXi f(Eigen::Index(soup.face_v.size()), 3), fuv(Eigen::Index(soup.face_v.size()), 3);
   for(std::size_t i = 0; i < soup.points.size(); ++i)
-    for(int c = 0; c < 3; ++c) v(Eigen::Index(i), c) = soup.points[i][std::size_t(c)];
+    if(rep[i] == i)
+      for(int c = 0; c < 3; ++c) v(Eigen::Index(row[i]), c) = soup.points[i][std::size_t(c)];
   for(std::size_t i = 0; i < soup.uvs.size(); ++i)
     for(int c = 0; c < 2; ++c) uv(Eigen::Index(i), c) = soup.uvs[i][std::size_t(c)];
   for(std::size_t i = 0; i < soup.face_v.size(); ++i)
     for(int k = 0; k < 3; ++k) {
-      f(Eigen::Index(i), k) = int(soup.face_v[i][std::size_t(k)]);
+      f(Eigen::Index(i), k) = int(row[soup.face_v[i][std::size_t(k)]]);
       fuv(Eigen::Index(i), k) = int(soup.face_vt[i][std::size_t(k)]);
     }
   V.swap(v); F.swap(f); UV.swap(uv); FUV.swap(fuv);
   message = "read " + std::to_string(F.rows()) + " faces, " + std::to_string(V.rows()) + " vertices, " +
             std::to_string(UV.rows()) + " texture coordinates from " + filename;
+  if(weld) message += "; welded " + std::to_string(welded) + " duplicated vertices";
   return SUCCESS;
 }
 
