@@ -66,6 +66,21 @@ struct Fold_explanation
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
+ * One interior vertex at which the result is not locally injective although the UV triangles around it may all
+ * be positive: they wind around it by `angle_sum` quarter turns instead of its `valence` (4 at a regular vertex;
+ * at a cone the member of its class modulo 4 nearest to 4, i.e. 3 or 5, and 2 or 6 for a 180 degree cone by the
+ * sign of its 3D angle defect), e.g. 8 at a regular vertex next to a cone that has 1 instead of 5.
+ */
+struct Winding_defect
+{
+  std::size_t vertex = 0;               ///< index of the vertex in `vertices(tm)` order
+  int angle_sum = 0;                    ///< its UV angle sum in quarter turns (counted exactly where exact sign tests decide it)
+  int valence = 4;                      ///< the angle sum a locally injective map has there
+  std::string message;                  ///< in words; names a cone pair rounded onto one integer point nearby, if any
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
  * What `snap_seamless_parameterization()` did. Lengths (violations, changes) are in UV units
  * divided by the diagonal of the UV bounding box of the input ("relative").
  */
@@ -146,6 +161,7 @@ struct Snap_report
   std::size_t degenerate_after_untangling = 0;  ///< zero-area UV triangles of the untangled floating-point map
   std::size_t folds_forced = 0;        ///< of the non-positive UV triangles at the end: those proven so in every exact solution
   std::vector<Fold_explanation> folds; ///< every non-positive UV triangle at the end, with its reason
+  std::vector<Winding_defect> winding_defects; ///< every interior vertex at the end whose UV angle sum is not its valence (not locally injective there)
   bool untangle_refused = false;       ///< the untangled map moved more than `max_untangle_change`: it was not used
   int untangle_rings = 0;              ///< face rings around the fold-overs that the last attempt moved (1, 2, 4, 8 or 16)
   std::size_t untangle_region_vertices = 0;  ///< vertices of that region
@@ -225,6 +241,15 @@ struct Snap_report
       o << "\"}";
     }
     o << (folds.empty() ? "],\n" : "\n  ],\n");
+    o << "  \"winding_defects\": [";
+    for(std::size_t i = 0; i < winding_defects.size(); ++i) {
+      const Winding_defect& w = winding_defects[i];
+      o << (i ? ",\n    " : "\n    ") << "{\"vertex\": " << w.vertex << ", \"angle_sum\": " << w.angle_sum << ", \"valence\": "
+        << w.valence << ", \"message\": \"";
+      for(char c : w.message) { if(c == '"' || c == '\\') o << '\\'; o << c; }
+      o << "\"}";
+    }
+    o << (winding_defects.empty() ? "],\n" : "\n  ],\n");
     o << "  \"untangle_refused\": " << (untangle_refused ? "true" : "false") << ",\n";
     num("untangle_rings", double(untangle_rings)); num("untangle_region_vertices", double(untangle_region_vertices));
     num("untangle_moved_sectors", double(untangle_moved_sectors)); num("grid_scale", grid_scale);

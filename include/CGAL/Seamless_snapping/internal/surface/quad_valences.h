@@ -65,14 +65,14 @@ inline int quadrant(double ax, double ay, double bx, double by)
   return 3;
 }
 
-// the signed number of quadrant boundaries crossed by corner h (see above); false if undetermined
-inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossings)
+// the signed number of quadrant boundaries crossed by the corner at q of the triangle (q, a, b)
+// (counter-clockwise: from the edge to a to the edge to b); false if undetermined
+inline bool corner_quarter_crossings(const double q[2], const double a[2], const double b[2], int& crossings)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  const int a = cm.next[h], b = cm.prev[h];
-  const int qa = quadrant(cm.u[h], cm.v[h], cm.u[a], cm.v[a]), qb = quadrant(cm.u[h], cm.v[h], cm.u[b], cm.v[b]);
+  const int qa = quadrant(q[0], q[1], a[0], a[1]), qb = quadrant(q[0], q[1], b[0], b[1]);
   if(qa < 0 || qb < 0) return false;
-  const CGAL::Orientation o = CGAL::orientation(P(cm.u[h], cm.v[h]), P(cm.u[a], cm.v[a]), P(cm.u[b], cm.v[b]));
+  const CGAL::Orientation o = CGAL::orientation(P(q[0], q[1]), P(a[0], a[1]), P(b[0], b[1]));
   if(o == CGAL::COLLINEAR) {
     if(qa != qb) return false;           // opposite directions: +-180 degrees
     crossings = 0;
@@ -80,6 +80,14 @@ inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossing
   }
   crossings = o == CGAL::LEFT_TURN ? ((qb - qa) % 4 + 4) % 4 : -(((qa - qb) % 4 + 4) % 4);
   return true;
+}
+
+// the same for the corner h of the corner mesh (its UVs)
+inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossings)
+{
+  const int a = cm.next[h], b = cm.prev[h];
+  const double q[2] = {cm.u[h], cm.v[h]}, pa[2] = {cm.u[a], cm.v[a]}, pb[2] = {cm.u[b], cm.v[b]};
+  return corner_quarter_crossings(q, pa, pb, crossings);
 }
 
 // Precondition: the corner UVs of `cm` form an exactly seamless map.

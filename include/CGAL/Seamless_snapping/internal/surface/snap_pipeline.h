@@ -53,6 +53,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 #include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
+#include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -559,16 +560,34 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   const Uv_change snap = measure_uv_change(S, S.x, S.st.ubar);
   report.snap_max_change = snap.max;
   report.snap_rms_change = snap.rms;
-  if(!opt.untangle || snapped.negative + snapped.degenerate == 0) return SUCCESS;
+  if(!opt.untangle) return SUCCESS;
+  const Face_corners fc(S.cm);
+  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, S.points, fc.halfedge);
+  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
+  std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
+  for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
+    for(int h : fc.halfedge[f])
+      if(turns[std::size_t(S.cm.target[h])] != valence[std::size_t(S.cm.target[h])]) from_3d[f] = 1;
+  // the windings within 2 face rings of a cone pair that the integer translations collapse onto one point
+  // (found from the wrongly wound vertices and those of non-positive faces) are not targets: no move
+  // separates the cones (winding_defects.h)
+  std::size_t wound = 0;
+  if(opt.integer_grid_map) {
+    std::vector<int> seeds;
+    for(int v = 0; v < S.cm.n_vertices; ++v) if(turns[std::size_t(v)] != valence[std::size_t(v)]) seeds.push_back(v);
+    for(int f : non_positive_faces(S, S.x)) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
+    for(int v : vertices_near_collapsed_cones(S.cm, S.st, S.rot, fc, S.x, seeds, 2)) valence[std::size_t(v)] = 0;
+  }
+  for(int v = 0; v < S.cm.n_vertices; ++v) wound += (turns[std::size_t(v)] != valence[std::size_t(v)] && valence[std::size_t(v)] != 0) ? 1 : 0;
+  if(snapped.negative + snapped.degenerate + wound == 0) return SUCCESS;
   const Snap_clock::time_point t = Snap_clock::now();
   report.untangled = true;
-  const Face_corners fc(S.cm);
   const Variable_rows incidence(S.full, S.x.size());
   std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
   for(const Fold_explanation& e : prover.explain(non_positive_faces(S, S.x), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
-  const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points);
-  Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded);
+  const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points, from_3d);
+  Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded, valence);
   std::vector<double> y = S.x;
   Untangle_statistics stats;
   Status s = untangler.run(y, Untangle_options(), stats, message);
@@ -648,9 +667,25 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
 template <class TriangleMesh>
 void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
+  const Face_corners fc(S.cm);
+  const std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, S.points, fc.halfedge);
+  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
+  for(int v = 0; v < S.cm.n_vertices; ++v) {
+    if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
+    Winding_defect d;
+    d.vertex = std::size_t(v);
+    d.angle_sum = turns[std::size_t(v)];
+    d.valence = valence[std::size_t(v)];
+    d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
+                " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
+    if(opt.integer_grid_map)
+      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, fc, S.x, v, coincident_cone_rings))
+        d.message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
+                     " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
+    report.winding_defects.push_back(d);
+  }
   const std::vector<int> faces = non_positive_faces(S, S.x);
   if(faces.empty()) return;
-  const Face_corners fc(S.cm);
   const Variable_rows incidence(S.full, S.x.size());
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
   report.folds = prover.explain(faces, S.x);
@@ -767,6 +802,9 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   } else if(report.untangled) {
     summary += "; every UV triangle is positively oriented";
   }
+  if(!report.winding_defects.empty())
+    summary += "; not locally injective at " + std::to_string(report.winding_defects.size()) +
+               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)";
   return summary + S.flip_note + S.untangle_note;
 }
 

@@ -15,7 +15,8 @@
 // - A face whose input UV triangle is positive and not too thin (longest edge^2 / (2 area) <= 10, i.e.
 //   an aspect ratio up to 10) keeps its input UV triangle: there J = I, the energy is at its minimum,
 //   and the untangler has no reason to move it.
-// - Any other face (flipped, degenerate or a sliver in the input) gets its 3D triangle, laid flat and
+// - Any other face (flipped, degenerate or a sliver in the input, or next to a vertex whose input angle
+//   sum is not its valence, vertex_windings.h) gets its 3D triangle, laid flat and
 //   scaled by the UV/3D scale around it (the mean over its corners of the median sqrt(A_uv / A_3d) of the
 //   good faces at the vertex; the median over all good faces where a vertex has none), or, when the 3D
 //   triangle is itself that thin or no 3D positions are given, an equilateral triangle of the UV area
@@ -63,9 +64,11 @@ inline double thinness(double twice_area, double e0, double e1, double e2)
   return twice_area > 0 ? (std::max)({e0, e1, e2}) / twice_area : HUGE_VAL;   // e_i: squared edge lengths
 }
 
+// `from_3d`: faces that get the 3D reference in any case (e.g. those around a vertex whose input UV angle
+// sum is not its valence: their input triangles are part of a fold, even where positive)
 inline std::vector<Reference_triangle> reference_triangles(const Corner_mesh& cm, const Seam_topology& st,
                                                            const Face_corners& fc, const std::vector<double>& ubar,
-                                                           const std::vector<double>& points)
+                                                           const std::vector<double>& points, const std::vector<char>& from_3d)
 {
   const std::size_t nf = std::size_t(cm.n_faces);
   std::vector<Reference_triangle> ref(nf);
@@ -86,7 +89,7 @@ inline std::vector<Reference_triangle> reference_triangles(const Corner_mesh& cm
     const double a2 = twice_area_2(p[0], p[1], p[2]);
     auto sq2 = [&](int i, int j) { return (p[j][0] - p[i][0]) * (p[j][0] - p[i][0]) + (p[j][1] - p[i][1]) * (p[j][1] - p[i][1]); };
     uv_area[f] = 0.5 * a2;
-    if(thinness(a2, sq2(0, 1), sq2(1, 2), sq2(2, 0)) <= reference_max_aspect && ref[f].set(p[0], p[1], p[2])) {
+    if(!from_3d[f] && thinness(a2, sq2(0, 1), sq2(1, 2), sq2(2, 0)) <= reference_max_aspect && ref[f].set(p[0], p[1], p[2])) {
       good[f] = 1;
       good_areas.push_back(uv_area[f]);
     }

@@ -46,6 +46,7 @@
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_space.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
+#include <CGAL/Seamless_snapping/internal/untangling/vertex_windings.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -87,9 +88,11 @@ struct Untangle_statistics
 class Untangler
 {
 public:
+  // `valence`: per vertex the angle sum (quarter turns) a locally injective map has there (vertex_windings.h);
+  // 0 where the untangling should not try to reach it
   Untangler(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Face_corners& fc,
-            const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded)
-    : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded),
+            const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded, const std::vector<int>& valence)
+    : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded), valence_(valence),
       incidence_(rows, 2 * std::size_t(st.n_sectors)), vertex_faces_start_(std::size_t(cm.n_vertices) + 1, 0)
   {
     for(const std::array<int, 3>& h : fc_.halfedge)
@@ -107,7 +110,6 @@ public:
     stats = Untangle_statistics();
     const std::vector<double> target = x;
     std::vector<int> bad = bad_faces(x);
-    std::vector<char> untangled_vertex(std::size_t(cm_.n_vertices), 0);
     for(int k : opt.rings) {
       if(bad.empty()) break;
       stats.rings = k;
@@ -116,15 +118,23 @@ public:
       Status s = build(problem, regions, x, nullptr, stats, message);
       if(s != SUCCESS) return s;
       std::vector<double> w(problem.dimension(), 0.);
-      std::vector<std::size_t> bad_before, bad_after;
+      std::vector<std::size_t> unused;
       std::vector<double> det_before, det_after;
-      problem.region_state(w, regions.size(), bad_before, det_before);
+      problem.region_state(w, regions.size(), unused, det_before);
       untangle(problem, opt, w, stats);
-      problem.region_state(w, regions.size(), bad_after, det_after);
+      problem.region_state(w, regions.size(), unused, det_after);
+      // per region, the bad faces (non-positive, or around a vertex that is not wound as its valence) before and after
+      std::vector<double> y = x;
+      for(std::size_t l = 0; l < problem.vars.size(); ++l) y[std::size_t(problem.vars[l])] += problem.displacement(l, w);
+      std::vector<char> bad_x(fc_.halfedge.size(), 0), bad_y(fc_.halfedge.size(), 0);
+      for(int f : bad) bad_x[std::size_t(f)] = 1;
+      for(int f : bad_faces(y)) bad_y[std::size_t(f)] = 1;
+      std::vector<long> gain(regions.size(), 0);
+      for(const Region_problem::Face& e : problem.faces)
+        if(e.region >= 0) gain[std::size_t(e.region)] += long(bad_x[std::size_t(e.face)]) - long(bad_y[std::size_t(e.face)]);
       for(std::size_t l = 0; l < problem.vars.size(); ++l) {
         const std::size_t r = std::size_t(problem.var_region[l]);
-        if(bad_after[r] < bad_before[r] || (bad_after[r] == bad_before[r] && det_after[r] > det_before[r]))
-          x[std::size_t(problem.vars[l])] += problem.displacement(l, w);
+        if(gain[r] > 0 || (gain[r] == 0 && det_after[r] > det_before[r])) x[std::size_t(problem.vars[l])] = y[std::size_t(problem.vars[l])];
       }
       bad = bad_faces(x);
     }
@@ -137,12 +147,20 @@ public:
     return SUCCESS;
   }
 
-  // the faces with det J <= 0 in x (floating point, as the energy sees them) that are not excluded
+  // the faces with det J <= 0 in x (floating point, as the energy sees them) that are not excluded, and
+  // the faces around the vertices whose angle sum in x is not their valence
   std::vector<int> bad_faces(const std::vector<double>& x) const
   {
+    const std::vector<int> turns = vertex_quarter_turns(cm_, st_, x);
     std::vector<int> bad;
-    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
-      if(!excluded_[f] && !(face_det(int(f), x) > 0)) bad.push_back(int(f));
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) {
+      bool wound = false;
+      for(int h : fc_.halfedge[f]) {
+        const std::size_t v = std::size_t(cm_.target[h]);
+        wound = wound || (turns[v] != valence_[v] && valence_[v] != 0);
+      }
+      if(wound || (!excluded_[f] && !(face_det(int(f), x) > 0))) bad.push_back(int(f));
+    }
     return bad;
   }
 
@@ -322,6 +340,7 @@ private:
   const Face_corners& fc_;
   const std::vector<Reference_triangle>& refs_;
   const std::vector<char>& excluded_;
+  const std::vector<int>& valence_;
   Variable_rows incidence_;
   std::vector<std::size_t> vertex_faces_start_;
   std::vector<int> vertex_faces_;

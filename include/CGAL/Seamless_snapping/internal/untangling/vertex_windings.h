@@ -1,0 +1,96 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_VERTEX_WINDINGS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_VERTEX_WINDINGS_H
+
+// Local injectivity at the vertices. Positive triangles are not enough: the UV triangles around an
+// interior vertex can wind around it twice (an angle sum of 8 quarter turns at a regular vertex, a branch
+// point) or too little (1 instead of 5 at a cone), and the map is then not locally injective there
+// although no triangle is flipped. The angle sum of a vertex, in quarter turns, is fixed modulo 4 by the
+// seam rotations around it (a fold-over changes it by a multiple of 4); its *valence* is the member of that
+// class the map should have: 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6 for
+// class 2 (2 where the 3D angle sum is below 2 pi, a convex corner, else 6; 2 without 3D positions).
+// The angle sums of a map are counted exactly where the exact sign tests of quad_valences.h decide them
+// (every corner of a positive or negative triangle), else rounded from floating-point angles.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// per vertex, the angle sum of the map x (2 values per sector) in quarter turns; border and isolated vertices: 4
+inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
+{
+  std::vector<int> turns(std::size_t(cm.n_vertices), 0);
+  std::vector<char> exact(std::size_t(cm.n_vertices), 1), has_corner(std::size_t(cm.n_vertices), 0);
+  std::vector<double> angle(std::size_t(cm.n_vertices), 0.);
+  auto uv = [&](int h, double p[2]) { const std::size_t s = std::size_t(st.sector_of[h]); p[0] = x[2 * s]; p[1] = x[2 * s + 1]; };
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    const std::size_t v = std::size_t(cm.target[h]);
+    has_corner[v] = 1;
+    double q[2], a[2], b[2];
+    uv(h, q); uv(cm.next[h], a); uv(cm.prev[h], b);
+    int c = 0;
+    if(corner_quarter_crossings(q, a, b, c)) turns[v] += c;
+    else exact[v] = 0;
+    const double ax = a[0] - q[0], ay = a[1] - q[1], bx = b[0] - q[0], by = b[1] - q[1];
+    angle[v] += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  }
+  const double quarter = std::acos(-1.) / 2;
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    if(cm.vertex_on_border[std::size_t(v)] || !has_corner[std::size_t(v)]) turns[std::size_t(v)] = 4;
+    else if(!exact[std::size_t(v)]) turns[std::size_t(v)] = int(std::lround(angle[std::size_t(v)] / quarter));
+  }
+  return turns;
+}
+
+// per vertex its valence (see the header); border vertices: 4. `turns`: angle sums of any map with the
+// input's seams (e.g. the input), `points`: 3D positions (3 per vertex) or empty
+inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& turns, const std::vector<double>& points,
+                                        const std::vector<std::array<int, 3> >& face_halfedges)
+{
+  std::vector<double> angle3(std::size_t(cm.n_vertices), 0.);
+  if(!points.empty())
+    for(const std::array<int, 3>& h : face_halfedges)
+      for(int m = 0; m < 3; ++m) {
+        const std::size_t q = std::size_t(cm.target[h[std::size_t(m)]]);
+        const std::size_t a = std::size_t(cm.target[h[std::size_t((m + 1) % 3)]]), b = std::size_t(cm.target[h[std::size_t((m + 2) % 3)]]);
+        double e1[3], e2[3], dot = 0, l1 = 0, l2 = 0;
+        for(int c = 0; c < 3; ++c) {
+          e1[c] = points[3 * a + std::size_t(c)] - points[3 * q + std::size_t(c)];
+          e2[c] = points[3 * b + std::size_t(c)] - points[3 * q + std::size_t(c)];
+          dot += e1[c] * e2[c]; l1 += e1[c] * e1[c]; l2 += e2[c] * e2[c];
+        }
+        if(l1 > 0 && l2 > 0) angle3[q] += std::acos((std::max)(-1., (std::min)(1., dot / std::sqrt(l1 * l2))));
+      }
+  std::vector<int> valence(std::size_t(cm.n_vertices), 4);
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    if(cm.vertex_on_border[std::size_t(v)]) continue;
+    const int k = ((turns[std::size_t(v)] % 4) + 4) % 4;
+    valence[std::size_t(v)] = k == 0 ? 4 : k == 1 ? 5 : k == 3 ? 3 : (points.empty() || angle3[std::size_t(v)] < 2 * std::acos(-1.) ? 2 : 6);
+  }
+  return valence;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_VERTEX_WINDINGS_H
