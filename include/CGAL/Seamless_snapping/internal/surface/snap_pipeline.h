@@ -667,6 +667,8 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
 template <class TriangleMesh>
 void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
+  const std::vector<int> faces = non_positive_faces(S, S.x);
+  if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
   const std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, S.points, fc.halfedge);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
@@ -684,7 +686,6 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
                      " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
     report.winding_defects.push_back(d);
   }
-  const std::vector<int> faces = non_positive_faces(S, S.x);
   if(faces.empty()) return;
   const Variable_rows incidence(S.full, S.x.size());
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
