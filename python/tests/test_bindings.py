@@ -152,6 +152,50 @@ def test_snap_integer_grid_map():
     assert e.value.report["status"] == "INVALID_INPUT"
 
 
+def orientations(F, UV, FUV):
+    """the sign of every UV triangle, exactly (Fractions of the doubles)"""
+    out = []
+    for f in range(len(F)):
+        a, b, c = [tuple(Fraction(x) for x in UV[FUV[f, m]]) for m in range(3)]
+        d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        out.append((d > 0) - (d < 0))
+    return out
+
+
+def test_untangle_integer_grid_map():
+    # an exact integer-grid map (grid of side 16, every vertex on an integer point) with one interior vertex of
+    # the lower half dragged across its neighbour: its UV triangles fold over
+    V, F, UV, FUV = cut_grid(n=16, noise=0.0, size=16.0, t=(3.0, 1.0))
+    UV = UV.copy()
+    dragged = 3 * 17 + 3                                 # vertex (3, 3) of the 17 x 17 grid of vertices
+    for f in range(len(F)):
+        for m in range(3):
+            if F[f, m] == dragged:
+                UV[FUV[f, m]] = [4.6, 3.3]
+    assert min(orientations(F, UV, FUV)) < 0
+    # without untangling the fold-overs stay, each listed with its reason
+    _, _, kept = ss.snap(V, F, UV, FUV, integer_grid_map=True, untangle=False)
+    assert kept["untangled"] is False and kept["flips_after_repair"] > 0
+    assert len(kept["folds"]) == kept["flips_after_repair"] + kept["degenerate_after_repair"]
+    assert all(not x["forced"] and x["reason"] == "NOT_PROVEN_FORCED" for x in kept["folds"])
+    # the default in integer-grid mode untangles: every triangle positive (exactly), still an exact IGM,
+    # and only the vertices near the fold moved
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV, integer_grid_map=True)
+    assert report["untangle"] and report["untangled"]
+    assert min(orientations(F, UV2, FUV2)) > 0
+    assert report["flips_after_repair"] == 0 and report["degenerate_after_repair"] == 0 and report["folds"] == []
+    assert ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
+    # local: the UVs of the vertices more than 2 + 2 + 1 rings (untangling at k = 1 or 2, polish, propagation
+    # along the aligned border) from the dragged vertex are bit for bit those of the input
+    moved = {int(F[f, m]) for f in range(len(F)) for m in range(3) if tuple(UV2[FUV2[f, m]]) != tuple(UV[FUV[f, m]])}
+    assert dragged in moved
+    assert all(max(abs(v % 17 - 3), abs(v // 17 - 3)) <= 5 for v in moved), sorted(moved)
+    assert report["untangle_rings"] <= 2 and 0 < report["untangle_max_change"] < 2.0
+    # a bound on the change refuses the untangled map: the fold-overs stay, and the report says so
+    _, _, refused = ss.snap(V, F, UV, FUV, integer_grid_map=True, max_untangle_change=1e-3)
+    assert refused["untangle_refused"] and refused["flips_after_repair"] > 0
+
+
 def test_snap_failure_is_reported_and_raises():
     V, F, UV, FUV = cut_grid()
     UV = UV.copy()

@@ -534,6 +534,16 @@ Uv_change measure_uv_change(const Snap_state<TriangleMesh>& S, const std::vector
   return c;
 }
 
+// per face: positively oriented in the input (exact test)
+template <class TriangleMesh>
+std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
+{
+  const std::vector<signed char> o = face_orientations(S.cm, S.st, S.st.ubar);
+  std::vector<char> positive(o.size());
+  for(std::size_t f = 0; f < o.size(); ++f) positive[f] = o[f] == CGAL::POSITIVE ? 1 : 0;
+  return positive;
+}
+
 // the faces whose UV triangle in `x` is not positively oriented (exact test)
 template <class TriangleMesh>
 std::vector<int> non_positive_faces(const Snap_state<TriangleMesh>& S, const std::vector<double>& x)
@@ -562,7 +572,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   report.snap_rms_change = snap.rms;
   if(!opt.untangle) return SUCCESS;
   const Face_corners fc(S.cm);
-  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, S.points, fc.halfedge);
+  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
   std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
   for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
@@ -670,7 +680,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> faces = non_positive_faces(S, S.x);
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
-  const std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, S.points, fc.halfedge);
+  const std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
   for(int v = 0; v < S.cm.n_vertices; ++v) {
     if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;

@@ -105,66 +105,89 @@ public:
   }
 
   // Untangles x (2 values per sector, an exact solution of the rows on input) in place (see the header).
+  // Two sweeps over the ring sizes: the first aims at the non-positive faces only, the second also at the
+  // vertices wound other than their valence; a region's result is kept when it has fewer non-positive faces,
+  // or as many and fewer faces around wrongly wound vertices, or both as many and a larger smallest det J.
   Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
   {
     stats = Untangle_statistics();
     const std::vector<double> target = x;
-    std::vector<int> bad = bad_faces(x);
-    for(int k : opt.rings) {
-      if(bad.empty()) break;
-      stats.rings = k;
-      const std::vector<std::vector<int> > regions = rings_around(bad, k, nullptr);
-      Region_problem problem;
-      Status s = build(problem, regions, x, nullptr, stats, message);
-      if(s != SUCCESS) return s;
-      std::vector<double> w(problem.dimension(), 0.);
-      std::vector<std::size_t> unused;
-      std::vector<double> det_before, det_after;
-      problem.region_state(w, regions.size(), unused, det_before);
-      untangle(problem, opt, w, stats);
-      problem.region_state(w, regions.size(), unused, det_after);
-      // per region, the bad faces (non-positive, or around a vertex that is not wound as its valence) before and after
-      std::vector<double> y = x;
-      for(std::size_t l = 0; l < problem.vars.size(); ++l) y[std::size_t(problem.vars[l])] += problem.displacement(l, w);
-      std::vector<char> bad_x(fc_.halfedge.size(), 0), bad_y(fc_.halfedge.size(), 0);
-      for(int f : bad) bad_x[std::size_t(f)] = 1;
-      for(int f : bad_faces(y)) bad_y[std::size_t(f)] = 1;
-      std::vector<long> gain(regions.size(), 0);
-      for(const Region_problem::Face& e : problem.faces)
-        if(e.region >= 0) gain[std::size_t(e.region)] += long(bad_x[std::size_t(e.face)]) - long(bad_y[std::size_t(e.face)]);
-      for(std::size_t l = 0; l < problem.vars.size(); ++l) {
-        const std::size_t r = std::size_t(problem.var_region[l]);
-        if(gain[r] > 0 || (gain[r] == 0 && det_after[r] > det_before[r])) x[std::size_t(problem.vars[l])] = y[std::size_t(problem.vars[l])];
+    for(int sweep = 0; sweep < 2; ++sweep) {
+      for(int k : opt.rings) {
+        const std::vector<signed char> state = face_states(x);
+        std::vector<int> targets;
+        for(std::size_t f = 0; f < state.size(); ++f)
+          if(state[f] == NON_POSITIVE || (sweep == 1 && state[f] == WOUND)) targets.push_back(int(f));
+        if(targets.empty()) break;
+        stats.rings = (std::max)(stats.rings, k);
+        Status s = attempt(rings_around(targets, k, nullptr), state, x, opt, stats, message);
+        if(s != SUCCESS) return s;
       }
-      bad = bad_faces(x);
     }
+    std::vector<int> bad;
+    const std::vector<signed char> state = face_states(x);
+    for(std::size_t f = 0; f < state.size(); ++f) if(state[f] != GOOD) bad.push_back(int(f));
     if(opt.polish) {
       Status s = polish(x, target, bad, opt, stats, message);
       if(s != SUCCESS) return s;
-      bad = bad_faces(x);
     }
-    stats.not_positive = bad.size();
+    stats.not_positive = 0;
+    for(signed char c : face_states(x)) stats.not_positive += c == NON_POSITIVE ? 1 : 0;
     return SUCCESS;
   }
 
-  // the faces with det J <= 0 in x (floating point, as the energy sees them) that are not excluded, and
-  // the faces around the vertices whose angle sum in x is not their valence
-  std::vector<int> bad_faces(const std::vector<double>& x) const
+private:
+  enum Face_state : signed char { GOOD = 0, WOUND = 1, NON_POSITIVE = 2 };
+
+  // per face: NON_POSITIVE (det J <= 0 in floating point, as the energy sees it; excluded faces are GOOD),
+  // else WOUND if a corner's vertex is wound other than its valence in x, else GOOD
+  std::vector<signed char> face_states(const std::vector<double>& x) const
   {
     const std::vector<int> turns = vertex_quarter_turns(cm_, st_, x);
-    std::vector<int> bad;
+    std::vector<signed char> state(fc_.halfedge.size(), GOOD);
     for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) {
-      bool wound = false;
+      if(excluded_[f]) continue;
+      if(!(face_det(int(f), x) > 0)) { state[f] = NON_POSITIVE; continue; }
       for(int h : fc_.halfedge[f]) {
         const std::size_t v = std::size_t(cm_.target[h]);
-        wound = wound || (turns[v] != valence_[v] && valence_[v] != 0);
+        if(turns[v] != valence_[v] && valence_[v] != 0) state[f] = WOUND;
       }
-      if(wound || (!excluded_[f] && !(face_det(int(f), x) > 0))) bad.push_back(int(f));
     }
-    return bad;
+    return state;
   }
 
-private:
+  // optimizes the regions from x (face states `before`) and keeps each region's result if it is better
+  Status attempt(const std::vector<std::vector<int> >& regions, const std::vector<signed char>& before, std::vector<double>& x,
+                 const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
+  {
+    Region_problem problem;
+    Status s = build(problem, regions, x, nullptr, stats, message);
+    if(s != SUCCESS) return s;
+    std::vector<double> w(problem.dimension(), 0.);
+    std::vector<std::size_t> unused;
+    std::vector<double> det_before, det_after;
+    problem.region_state(w, regions.size(), unused, det_before);
+    untangle(problem, opt, w, stats);
+    problem.region_state(w, regions.size(), unused, det_after);
+    std::vector<double> y = x;
+    for(std::size_t l = 0; l < problem.vars.size(); ++l) y[std::size_t(problem.vars[l])] += problem.displacement(l, w);
+    const std::vector<signed char> after = face_states(y);
+    std::vector<long> fewer_non_positive(regions.size(), 0), fewer_wound(regions.size(), 0);
+    for(const Region_problem::Face& e : problem.faces) {
+      if(e.region < 0) continue;
+      const std::size_t f = std::size_t(e.face), r = std::size_t(e.region);
+      fewer_non_positive[r] += long(before[f] == NON_POSITIVE) - long(after[f] == NON_POSITIVE);
+      fewer_wound[r] += long(before[f] == WOUND) - long(after[f] == WOUND);
+    }
+    for(std::size_t l = 0; l < problem.vars.size(); ++l) {
+      const std::size_t r = std::size_t(problem.var_region[l]);
+      const bool better = fewer_non_positive[r] > 0 ||
+                          (fewer_non_positive[r] == 0 && (fewer_wound[r] > 0 || (fewer_wound[r] == 0 && det_after[r] > det_before[r])));
+      if(better) x[std::size_t(problem.vars[l])] = y[std::size_t(problem.vars[l])];
+    }
+    return SUCCESS;
+  }
+
   double face_det(int f, const std::vector<double>& x) const
   {
     double p[3][2];

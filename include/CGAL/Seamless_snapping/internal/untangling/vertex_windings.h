@@ -15,7 +15,8 @@
 // point) or too little (1 instead of 5 at a cone), and the map is then not locally injective there
 // although no triangle is flipped. The angle sum of a vertex, in quarter turns, is fixed modulo 4 by the
 // seam rotations around it (a fold-over changes it by a multiple of 4); its *valence* is the member of that
-// class the map should have: 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6 for
+// class the map should have: the input's own angle sum where the input has no non-positive triangle at the
+// vertex; next to fold-overs, 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6 for
 // class 2 (2 where the 3D angle sum is below 2 pi, a convex corner, else 6; 2 without 3D positions).
 // The angle sums of a map are counted exactly where the exact sign tests of quad_valences.h decide them
 // (every corner of a positive or negative triangle), else rounded from floating-point angles.
@@ -61,11 +62,16 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
   return turns;
 }
 
-// per vertex its valence (see the header); border vertices: 4. `turns`: angle sums of any map with the
-// input's seams (e.g. the input), `points`: 3D positions (3 per vertex) or empty
-inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& turns, const std::vector<double>& points,
-                                        const std::vector<std::array<int, 3> >& face_halfedges)
+// per vertex its valence; border vertices: 4. `turns`: the input's angle sums, `input_positive`: per face,
+// whether it is positive in the input; a vertex whose triangles are all positive in the input keeps its input
+// angle sum (the field's valence there, even 1 or 7), the others get the member of their class nearest to 4
+// (see the header). `points`: 3D positions (3 per vertex) or empty
+inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& turns, const std::vector<char>& input_positive,
+                                        const std::vector<double>& points, const std::vector<std::array<int, 3> >& face_halfedges)
 {
+  std::vector<char> folded(std::size_t(cm.n_vertices), 0);
+  for(std::size_t f = 0; f < face_halfedges.size(); ++f)
+    if(!input_positive[f]) for(int h : face_halfedges[f]) folded[std::size_t(cm.target[h])] = 1;
   std::vector<double> angle3(std::size_t(cm.n_vertices), 0.);
   if(!points.empty())
     for(const std::array<int, 3>& h : face_halfedges)
@@ -83,6 +89,7 @@ inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector
   std::vector<int> valence(std::size_t(cm.n_vertices), 4);
   for(int v = 0; v < cm.n_vertices; ++v) {
     if(cm.vertex_on_border[std::size_t(v)]) continue;
+    if(!folded[std::size_t(v)] && turns[std::size_t(v)] > 0) { valence[std::size_t(v)] = turns[std::size_t(v)]; continue; }
     const int k = ((turns[std::size_t(v)] % 4) + 4) % 4;
     valence[std::size_t(v)] = k == 0 ? 4 : k == 1 ? 5 : k == 3 ? 3 : (points.empty() || angle3[std::size_t(v)] < 2 * std::acos(-1.) ? 2 : 6);
   }
