@@ -2,7 +2,8 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] [--untangle]
+//                   <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
@@ -249,7 +250,7 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
     for(int r = 0; r < repeat; ++r) {
       Mesh m = input;
       UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
-      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).untangle(false));
       if(r == 0 || rep.total_ms < best.total_ms) { best = rep; out = m; }
     }
     const std::string name = fs::relative(p, p.parent_path().parent_path()).string();
@@ -272,10 +273,73 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// --untangle: instead, the untangling (untangle(true)) per model, in the default mode and in integer-grid mode:
+// UV triangles negative / zero in the input, after the snap alone, after untangling (floating point), at the end
+// (after its exact snap and the repair); of those at the end, how many are proven forced; vertices left not locally
+// injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
+// (max / RMS beyond the snap, and the snap alone's max); the times of the snap alone (untangle(false)) and of
+// untangling + snap, and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
+static int untangle_study(const std::vector<fs::path>& files, int repeat)
+{
+  std::printf("%-34s %4s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %6s | %s\n", "model", "mode", "#F",
+              "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
+              "snap ms", "unt.+snap", "ratio", "exact");
+  int failures = 0;
+  for(const fs::path& p : files) {
+    Mesh input;
+    UV_map uv_in;
+    if(!read_model(p, input, uv_in, failures)) continue;
+    for(bool igm : {false, true}) {
+      SS::Snap_report alone, best;
+      Mesh out;
+      for(int r = 0; r < repeat; ++r) {
+        Mesh m0 = input;
+        UV_map uv0 = m0.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+        const SS::Snap_report a = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(igm).untangle(false));
+        Mesh m = input;
+        UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+        const SS::Snap_report b = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(igm).untangle(true));
+        if(r == 0 || a.total_ms < alone.total_ms) alone = a;
+        if(r == 0 || b.total_ms < best.total_ms) { best = b; out = m; }
+      }
+      const std::string name = p.filename().string();
+      if(best.status != SS::SUCCESS) {
+        std::printf("%-34s %4s %7zu | %s: %.120s\n", name.c_str(), igm ? "IGM" : "def", best.faces, SS::status_name(best.status),
+                    best.message.c_str());
+        continue;
+      }
+      UV_map uv = out.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+      const bool exact = igm ? SS::is_exact_integer_grid_map(out, uv) : SS::is_exactly_seamless(out, uv);
+      if(!exact) ++failures;
+      std::size_t at_pairs = 0;
+      for(const SS::Winding_defect& w : best.winding_defects) at_pairs += w.message.find("cone pair") != std::string::npos ? 1 : 0;
+      auto counts = [](std::size_t n, std::size_t z) { return std::to_string(n) + "/" + std::to_string(z); };
+      const std::string change = best.untangled ? (std::to_string(best.untangle_max_change * best.grid_scale).substr(0, 6) + " / " +
+                                                   std::to_string(best.untangle_rms_change * best.grid_scale).substr(0, 6)) : "-";
+      std::printf("%-34s %4s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s\n",
+                  name.c_str(), igm ? "IGM" : "def", best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
+                  counts(alone.flips_after_repair, alone.degenerate_after_repair).c_str(),
+                  counts(best.flips_after_untangling, best.degenerate_after_untangling).c_str(),
+                  counts(best.flips_after_repair, best.degenerate_after_repair).c_str(), best.folds_forced,
+                  best.winding_defects.size(), at_pairs, best.untangle_rings, best.untangle_moved_sectors, change.c_str(),
+                  alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms,
+                  alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO");
+    }
+  }
+  std::printf("\ncolumns: negative/zero-area UV triangles (exact test): input, after the snap alone (untangle(false), with its\n"
+              "repair), after untangling (the floating-point map), at the end (after its exact snap and the repair); forced =\n"
+              "those at the end proven non-positive in every exact solution (Snap_report::folds); wound = vertices left whose\n"
+              "UV angle sum is not their valence (Snap_report::winding_defects), in brackets those next to a cone pair the\n"
+              "integer rounding collapsed onto one point; rings = largest k of the regions; max/RMS cells = the change beyond\n"
+              "the snap (grid cells: UV units at grid scale 1); snap max = the snap alone's max change; times in ms (min over\n"
+              "--repeat runs); ratio = (untangling + snap) / snap alone.\n");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   int repeat = 3;
-  bool connections = false, change_only = false, integer_grid = false;
+  bool connections = false, change_only = false, integer_grid = false, untangle = false;
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
@@ -283,6 +347,7 @@ int main(int argc, char** argv)
     if(std::strcmp(argv[i], "--connections") == 0) { connections = true; continue; }
     if(std::strcmp(argv[i], "--change") == 0) { change_only = true; continue; }
     if(std::strcmp(argv[i], "--integer-grid") == 0) { integer_grid = true; continue; }
+    if(std::strcmp(argv[i], "--untangle") == 0) { untangle = true; continue; }
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     inputs.emplace_back(argv[i]);
   }
@@ -290,6 +355,7 @@ int main(int argc, char** argv)
   if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
   if(connections) return connection_study(files, repeat);
   if(integer_grid) return integer_grid_study(files, repeat);
+  if(untangle) return untangle_study(files, repeat);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
   if(change_only) return change_study(files);
 

@@ -239,6 +239,51 @@ namespace Seamless_snapping {
  *     \cgalParamDefault{no corner is pinned}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::pinned_corner_map()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{untangle}
+ *     \cgalParamDescription{whether the fold-overs of the map are removed inside the space of maps with the same
+ *                           constraints (beyond the paper, whose Sec. 5.4 only repairs what the snap introduces): every
+ *                           UV triangle that is not positively oriented after the exact snap, and every interior vertex
+ *                           around which the triangles do not wind as its valence (local injectivity; the valence is the
+ *                           input's angle sum where no input triangle there is non-positive, else 4 at a regular vertex,
+ *                           5 or 3 at a cone of +-90 degrees, 2 or 6 at a 180-degree cone), is untangled by moving the UVs
+ *                           of the vertices within k face rings (k = 1, 2, 4, 8, 16) along the null space of the constraint
+ *                           rows (transitions with their rotations, alignment, connections, pins, and in integer-grid mode
+ *                           the integer translations and cone positions): the untangling energy of Garanzha et al. 2021
+ *                           ("Foldover-free maps in 50 lines of code") with the input's own UV triangles as reference
+ *                           shapes, minimized by Newton's method with their eps continuation, then a minimal-change polish
+ *                           (the change to the snapped map plus a 1e-3-weighted barrier, every iterate fold-free). The
+ *                           untangled floating-point map is then snapped exactly like the input (Sec. 4, 5.3), repaired
+ *                           (Sec. 5.4) and verified; only UVs near the fold-overs change. Triangles that no map with these
+ *                           constraints makes positive (two corners forced onto one UV point, e.g. two cones rounded onto
+ *                           one integer point; three fixed corners on one line) are proven so exactly and left alone.
+ *                           `Snap_report::folds` lists every triangle that is not positive at the end, with its reason
+ *                           (proven forced or not), and `Snap_report::winding_defects` every vertex left not locally
+ *                           injective (in integer-grid mode typically next to a cone pair the rounding collapsed onto one
+ *                           integer point, which the message names); the report's untangling fields give the counts
+ *                           before, after untangling, after the snap and after repair, and the change (max and RMS, in UV
+ *                           units; times `Snap_report::grid_scale` in grid cells) next to that of the snap alone.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{the value of `integer_grid_map`: on where an integer-grid map is asked for (quad meshing, layouts),
+ *                       off for plain snapping, which then keeps the input's fold-overs (and still lists them)}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::untangle()`. It moves UVs by up to a fraction of a
+ *                     grid cell, far more than the snap's rounding: see the manual, "Untangling".}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_untangle_change}
+ *     \cgalParamDescription{the largest move of a UV coordinate, in grid cells (UV units times `grid_scale`), that the
+ *                           untangling may make beyond the snap; an untangled map that moves further is not used (the
+ *                           snap of the input is written, `Snap_report::untangle_refused` is set and the message says why)}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{no bound}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_untangle_change()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the 3D positions of the vertices, for the reference shapes of the untangling (triangles flipped
+ *                           or thin in the input and those around wrongly wound vertices take their 3D shape, scaled to the
+ *                           local UV scale); not used otherwise}
+ *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and a 3D point type as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
  *     \cgalParamType{Boolean}
@@ -265,6 +310,10 @@ namespace Seamless_snapping {
  * Scale: the result is scale covariant. The UVs are first scaled by a power of 2 so that the largest
  * |coordinate| lies in [1/2, 1) (exact), every step works on these values, and the result is scaled back;
  * a map scaled by 2^j therefore snaps to the result scaled by 2^j, bit for bit, whenever both are doubles.
+ *
+ * With `untangle(true)` (the default in integer-grid mode) the result is also free of fold-overs wherever the
+ * constraints allow it; what they do not allow is listed in `Snap_report::folds` and `Snap_report::winding_defects`,
+ * and a `SUCCESS` never hides a non-positive triangle: the message counts them.
  *
  * \warning The result consists of doubles and satisfies the constraints exactly; with `minimal_change(true)` it is
  * within grid rounding of the L2-closest such point, not exactly that point. Small triangles near the seams may flip; they are repaired locally when possible

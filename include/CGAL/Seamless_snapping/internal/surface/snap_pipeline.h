@@ -603,6 +603,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   Status s = untangler.run(y, Untangle_options(), stats, message);
   if(s != SUCCESS) return s;
   report.untangle_rings = stats.rings;
+  report.untangle_budget_spent = stats.budget_spent;
   report.untangle_region_vertices = stats.region_vertices;
   const Orientation_counts untangled = count_orientations(face_orientations(S.cm, S.st, y));
   report.flips_after_untangling = untangled.negative;
@@ -704,6 +705,8 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     if(e.forced()) { ++report.folds_forced; continue; }
     if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
     else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
+    else if(report.untangle_budget_spent)
+      e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
   }
 }
 

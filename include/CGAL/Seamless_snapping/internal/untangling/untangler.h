@@ -73,6 +73,8 @@ struct Untangle_options
   int polish_rings = 2;
   double polish_lambda = 1e-3;
   int polish_iterations = 50;
+  double work_per_face = 400;                 // budget of the untangling (step 1): face evaluations (energy or
+                                              // derivatives of one face) per face of the mesh; deterministic
 };
 
 struct Untangle_statistics
@@ -83,6 +85,8 @@ struct Untangle_statistics
   std::size_t dimension = 0;             // of the largest null space
   std::size_t outer_iterations = 0, newton_steps = 0, polish_steps = 0;
   std::size_t not_positive = 0;          // faces not positive at the end (floating point; excluded faces not counted)
+  double work = 0;                       // face evaluations of step 1
+  bool budget_spent = false;             // step 1 stopped at its budget (Untangle_options::work_per_face)
 };
 
 class Untangler
@@ -111,9 +115,11 @@ public:
   Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
   {
     stats = Untangle_statistics();
+    budget_ = opt.work_per_face * double(fc_.halfedge.size());
     const std::vector<double> target = x;
     for(int sweep = 0; sweep < 2; ++sweep) {
       for(int k : opt.rings) {
+        if(stats.work > budget_) { stats.budget_spent = true; break; }
         const std::vector<signed char> state = face_states(x);
         std::vector<int> targets;
         for(std::size_t f = 0; f < state.size(); ++f)
@@ -265,11 +271,12 @@ private:
 
   // backtracking (Armijo) from step t along d; w moves if the energy decreases enough
   static bool line_search(const Region_problem& p, std::vector<double>& w, const Eigen::VectorXd& g, const Eigen::VectorXd& d,
-                          double t, double eps, double weight, double& E, double& det_min)
+                          double t, double eps, double weight, double& E, double& det_min, double& work)
   {
     std::vector<double> trial(w.size());
     const double slope = g.dot(d);
     for(int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      work += double(p.faces.size());
       for(std::size_t i = 0; i < w.size(); ++i) trial[i] = w[i] + t * d[Eigen::Index(i)];
       double dm;
       const double E_new = p.value(trial, eps, weight, dm);
@@ -290,12 +297,14 @@ private:
     std::size_t fewest_bad = p.faces.size() + 1;
     int last_progress = 0;
     for(int outer = 0; outer < opt.max_outer; ++outer) {
+      if(stats.work > budget_) { stats.budget_spent = true; break; }
       ++stats.outer_iterations;
       double E = E_prev;
       for(int it = 0; it < opt.max_newton; ++it) {
         ++stats.newton_steps;
         const double before = E;
-        if(!newton_direction(p, ldlt, w, eps, 0, g, d) || !line_search(p, w, g, d, 1., eps, 0, E, det_min)) break;
+        stats.work += double(p.faces.size());
+        if(!newton_direction(p, ldlt, w, eps, 0, g, d) || !line_search(p, w, g, d, 1., eps, 0, E, det_min, stats.work)) break;
         if(before - E <= 1e-9 * std::fabs(E)) break;
       }
       const double sigma = (std::max)(1 - E / E_prev, 0.1);
@@ -350,7 +359,8 @@ private:
       const double before = E;
       if(!newton_direction(p, ldlt, w, eps, weight, g, d)) break;
       const double t = (std::min)(1., 0.8 * p.positive_step(w, d));
-      if(!line_search(p, w, g, d, t, eps, weight, E, det_min)) break;
+      double work = 0;
+      if(!line_search(p, w, g, d, t, eps, weight, E, det_min, work)) break;
       if(before - E <= 1e-8 * std::fabs(E)) break;
     }
     for(std::size_t l = 0; l < p.vars.size(); ++l) x[std::size_t(p.vars[l])] += p.displacement(l, w);
@@ -367,6 +377,7 @@ private:
   Variable_rows incidence_;
   std::vector<std::size_t> vertex_faces_start_;
   std::vector<int> vertex_faces_;
+  double budget_ = 0;                                          // face evaluations of step 1 (run())
 };
 
 } // namespace internal

@@ -40,25 +40,32 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
 {
   std::vector<int> turns(std::size_t(cm.n_vertices), 0);
   std::vector<char> exact(std::size_t(cm.n_vertices), 1), has_corner(std::size_t(cm.n_vertices), 0);
-  std::vector<double> angle(std::size_t(cm.n_vertices), 0.);
   auto uv = [&](int h, double p[2]) { const std::size_t s = std::size_t(st.sector_of[h]); p[0] = x[2 * s]; p[1] = x[2 * s + 1]; };
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    const std::size_t v = std::size_t(cm.target[h]);
-    has_corner[v] = 1;
-    double q[2], a[2], b[2];
-    uv(h, q); uv(cm.next[h], a); uv(cm.prev[h], b);
-    int c = 0;
-    if(corner_quarter_crossings(q, a, b, c)) turns[v] += c;
-    else exact[v] = 0;
-    const double ax = a[0] - q[0], ay = a[1] - q[1], bx = b[0] - q[0], by = b[1] - q[1];
-    angle[v] += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  for(int pass = 0; pass < 2; ++pass) {       // pass 1: floating-point angles where the exact count is undetermined
+    std::vector<double> angle(pass == 1 ? std::size_t(cm.n_vertices) : 0, 0.);
+    for(int h = 0; h < cm.n_halfedges; ++h) {
+      if(cm.is_border_halfedge(h)) continue;
+      const std::size_t v = std::size_t(cm.target[h]);
+      if(pass == 1 && exact[v]) continue;
+      double q[2], a[2], b[2];
+      uv(h, q); uv(cm.next[h], a); uv(cm.prev[h], b);
+      if(pass == 1) {
+        const double ax = a[0] - q[0], ay = a[1] - q[1], bx = b[0] - q[0], by = b[1] - q[1];
+        angle[v] += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+        continue;
+      }
+      has_corner[v] = 1;
+      int c = 0;
+      if(corner_quarter_crossings(q, a, b, c)) turns[v] += c;
+      else exact[v] = 0;
+    }
+    if(pass == 1)
+      for(int v = 0; v < cm.n_vertices; ++v)
+        if(!exact[std::size_t(v)]) turns[std::size_t(v)] = int(std::lround(angle[std::size_t(v)] / (std::acos(-1.) / 2)));
+    if(std::find(exact.begin(), exact.end(), 0) == exact.end()) break;
   }
-  const double quarter = std::acos(-1.) / 2;
-  for(int v = 0; v < cm.n_vertices; ++v) {
+  for(int v = 0; v < cm.n_vertices; ++v)
     if(cm.vertex_on_border[std::size_t(v)] || !has_corner[std::size_t(v)]) turns[std::size_t(v)] = 4;
-    else if(!exact[std::size_t(v)]) turns[std::size_t(v)] = int(std::lround(angle[std::size_t(v)] / quarter));
-  }
   return turns;
 }
 
@@ -72,11 +79,13 @@ inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector
   std::vector<char> folded(std::size_t(cm.n_vertices), 0);
   for(std::size_t f = 0; f < face_halfedges.size(); ++f)
     if(!input_positive[f]) for(int h : face_halfedges[f]) folded[std::size_t(cm.target[h])] = 1;
+  // the 3D angle sums, only at the vertices of class 2 next to fold-overs
   std::vector<double> angle3(std::size_t(cm.n_vertices), 0.);
   if(!points.empty())
     for(const std::array<int, 3>& h : face_halfedges)
       for(int m = 0; m < 3; ++m) {
         const std::size_t q = std::size_t(cm.target[h[std::size_t(m)]]);
+        if(!folded[q] || ((turns[q] % 4) + 4) % 4 != 2) continue;
         const std::size_t a = std::size_t(cm.target[h[std::size_t((m + 1) % 3)]]), b = std::size_t(cm.target[h[std::size_t((m + 2) % 3)]]);
         double e1[3], e2[3], dot = 0, l1 = 0, l2 = 0;
         for(int c = 0; c < 3; ++c) {
