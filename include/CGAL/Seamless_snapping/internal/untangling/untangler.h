@@ -22,7 +22,8 @@
 //    solution, forced_folds.h, are left out) by Newton's method on the reduced variables (element
 //    Hessians projected onto the PSD cone, N^T H N factored by a sparse LDL^T with one symbolic analysis,
 //    Armijo backtracking) and the paper's continuation in eps: after each minimization, with E_prev / E
-//    the energy before / after it and D_min the smallest det J, sigma = max(1 - E / E_prev, 0.1),
+//    the energy before / after it and D_min the smallest det J, sigma = max(1 - E / E_prev, 0.3) (the paper
+//    has 0.1; see Untangle_options::sigma_min),
 //    mu = (1 - sigma) chi(D_min, eps), eps <- 2 sqrt(mu (mu - D_min)) while D_min < mu, else 1e-9; done
 //    when D_min > 0 and E changes by less than a relative 1e-5, given up when the number of non-positive
 //    faces has not dropped for `stall` updates. A region's result is kept if it has fewer non-positive
@@ -69,6 +70,8 @@ struct Untangle_options
   int max_newton = 3;                         // Newton steps per eps
   int stall = 20;                             // eps updates without fewer non-positive faces before an attempt gives up
   double eps0 = 1;                            // the first eps (J is relative to the reference: D ~ 1)
+  double sigma_min = 0.3;                     // floor of sigma in the eps update (the paper: 0.1; 0.3 halves the Newton
+                                              // steps on the shared maps with as good or better results, bench_snap --untangle)
   bool polish = true;                         // step 2
   int polish_rings = 2;
   double polish_lambda = 1e-3;
@@ -307,7 +310,7 @@ private:
         if(!newton_direction(p, ldlt, w, eps, 0, g, d) || !line_search(p, w, g, d, 1., eps, 0, E, det_min, stats.work)) break;
         if(before - E <= 1e-9 * std::fabs(E)) break;
       }
-      const double sigma = (std::max)(1 - E / E_prev, 0.1);
+      const double sigma = (std::max)(1 - E / E_prev, opt.sigma_min);
       const double mu = (1 - sigma) * untangling_chi(det_min, eps);
       const bool done = det_min > 0 && std::fabs(E_prev - E) <= 1e-5 * std::fabs(E);
       eps = det_min < mu ? (std::max)(1e-9, 2 * std::sqrt(mu * (mu - det_min))) : 1e-9;
