@@ -81,30 +81,42 @@ inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
 
 // The exact test behind is_exactly_seamless().
 // `seam_override[e]`: as in compute_seam_topology(); `given_k[e]`: k of halfedge(e) or empty (any k);
-// `aligned[e]`: edges that must be axis-parallel in UV, or empty.
+// `aligned[e]`: edges that must be axis-parallel in UV, or empty. With `why`, a failure names the
+// first edge that fails and how.
 inline bool is_exactly_seamless_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
-                                     const std::vector<int>& given_k, const std::vector<char>& aligned)
+                                     const std::vector<int>& given_k, const std::vector<char>& aligned,
+                                     std::string* why = nullptr)
 {
+  auto fail = [&](int h, const std::string& what) {
+    if(why != nullptr) *why = "edge " + vertex_pair_name(cm, h) + " " + what;
+    return false;
+  };
   for(int e = 0; e < cm.n_edges; ++e) {
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       // doubles: the difference is zero iff the two coordinates are equal
-      if(cm.u[g] != cm.u[cm.prev[g]] && cm.v[g] != cm.v[cm.prev[g]]) return false;
+      if(cm.u[g] != cm.u[cm.prev[g]] && cm.v[g] != cm.v[cm.prev[g]])
+        return fail(h, "is constrained (edge_is_constrained_map) but not parallel to the u or v axis in UV");
     }
     if(cm.is_border_edge(e)) continue;
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
     if(!seam) {
-      if(!continuous) return false;    // declared continuous, but the UVs jump
+      if(!continuous) return fail(h, "is not a seam (seam_edge_map) but its two faces disagree on its UVs");
       continue;
     }
     if(!given_k.empty()) {
-      if(!exact_transition_holds(cm, h, given_k[e])) return false;
+      if(!exact_transition_holds(cm, h, given_k[e]))
+        return fail(h, "(a cut edge): the rotation by k = " + std::to_string(given_k[e]) + " quarter turns (rotation_map) "
+                       "does not map the UV edge vector of one face exactly onto the other's");
     } else {
       bool some = false;
       for(int k = 0; k < 4 && !some; ++k) some = exact_transition_holds(cm, h, k);
-      if(!some) return false;
+      if(!some)
+        return fail(h, "(a cut edge between faces " + std::to_string(cm.face[h]) + " and " + std::to_string(cm.face[o]) +
+                       "): no rotation by a multiple of 90 degrees maps the UV edge vector of one face exactly onto the "
+                       "other's: the map is not exactly seamless");
     }
   }
   return true;

@@ -326,22 +326,31 @@ inline bool grid_scale_exponent(double S, int& s)
 // - every interior vertex around which these k sum to K != 0 mod 4 (a cone of the field) has
 //   integer UVs in all its corners;
 // - every edge of `aligned` lies on an integer isoline (its constant coordinate is an integer).
+// With `why`, a failure says which edge or cone fails and how; with `edge_k`, on success, the k of
+// halfedge(e) of every cut edge e (0 for the other edges).
 inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
                                            const std::vector<int>& given_k, const std::vector<char>& aligned,
-                                           int scale_exponent)
+                                           int scale_exponent, std::string* why = nullptr,
+                                           std::vector<int>* edge_k = nullptr)
 {
-  if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned)) return false;
+  if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned, why)) return false;
   const CGAL::Gmpq scale = scale_exponent >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << scale_exponent)
                                                : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -scale_exponent);
   auto U = [&](int h, int c) { return CGAL::Gmpq(c == 0 ? cm.u[h] : cm.v[h]) * scale; };
-  std::vector<int> K(cm.n_vertices, 0);
+  auto fail = [&](const std::string& what) {
+    if(why != nullptr) *why = what + " (grid scale 2^" + std::to_string(scale_exponent) + "): not an integer-grid map";
+    return false;
+  };
+  std::vector<int> K(cm.n_vertices, 0), k_of(cm.n_edges, 0);
   for(int e = 0; e < cm.n_edges; ++e) {
     if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       const int c = cm.u[g] == cm.u[cm.prev[g]] ? 0 : 1;   // exactly axis-parallel (checked above)
-      if(!is_integer(U(g, c))) return false;
+      if(!is_integer(U(g, c)))
+        return fail("constrained edge " + vertex_pair_name(cm, h) + " lies on the isoline " + (c == 0 ? "u" : "v") +
+                    " = " + format_double(CGAL::to_double(U(g, c)), 17) + " in grid units, not an integer one");
     }
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
@@ -356,15 +365,22 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
         integral = is_integer(U(o, c) - CGAL::Gmpq(double(R.sign[c])) * U(cm.prev[h], R.col[c]));
       if(integral) found = k;
     }
-    if(found < 0) return false;
+    if(found < 0)
+      return fail("cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
+                  std::to_string(cm.face[o]) + "): its translation is not an integer vector");
+    k_of[e] = found;
     K[cm.source(h)] += found;
     K[cm.target[h]] -= found;   // k(opposite(h)) = -k, seen from the other end
   }
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h];
     if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || (K[v] % 4 + 4) % 4 == 0) continue;
-    if(!is_integer(U(h, 0)) || !is_integer(U(h, 1))) return false;
+    if(!is_integer(U(h, 0)) || !is_integer(U(h, 1)))
+      return fail("cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * ((K[v] % 4 + 4) % 4)) +
+                  " degrees) has the UV " + point_name(CGAL::to_double(U(h, 0)), CGAL::to_double(U(h, 1))) +
+                  " in face " + std::to_string(cm.face[h]) + " in grid units, not an integer point");
   }
+  if(edge_k != nullptr) edge_k->swap(k_of);
   return true;
 }
 
