@@ -33,6 +33,8 @@ enum integer_grid_map_t  { integer_grid_map };  // bool: integer translations, c
 enum grid_scale_t        { grid_scale };        // double, a power of two: grid lines at multiples of 1/S (default 1)
 enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per face corner (libQEx's layout)
 enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of that corner is kept bit-identical
+enum vertex_origin_map_t { vertex_origin_map }; // quad mesh vertex -> Quad_vertex_origin: where it lies on the map (extract_quad_mesh)
+enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector of the map's faces it covers (extract_quad_mesh)
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -52,7 +54,9 @@ enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of t
   SS_NP(integer_grid_map_t,        integer_grid_map)         \
   SS_NP(grid_scale_t,              grid_scale)               \
   SS_NP(vt_per_corner_t,           vt_per_corner)            \
-  SS_NP(pinned_corner_map_t,       pinned_corner_map)
+  SS_NP(pinned_corner_map_t,       pinned_corner_map)        \
+  SS_NP(vertex_origin_map_t,       vertex_origin_map)        \
+  SS_NP(face_origin_map_t,         face_origin_map)
 
 namespace parameters {
 
