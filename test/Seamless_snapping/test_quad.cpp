@@ -8,6 +8,8 @@
 // Author(s)     : The Seamless Snapping authors
 
 // Tests of the quad layer: extract_quad_mesh() on exact integer-grid maps, and quad_valences() against it.
+//   quad: exact tests on doubles  same_difference() and is_integer_sum() (TwoSum, used by the exact integer-grid
+//                               check) agree with Gmpq on 200000 random, near-miss and exact cases
 // Every extracted mesh is checked here, independently of the extractor (check_quad_mesh()): a valid
 // manifold polygon mesh of quads; closed when the map is; V - E + F and the number of quads equal to the
 // map's Euler characteristic and exact UV area (Gmpq, computed here from the corner UVs) when no cell was
@@ -52,6 +54,7 @@
 #include <cstdio>
 #include <iterator>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -460,10 +463,42 @@ static void test_shared_data()
   assert(extracted >= 3);
 }
 
+// The exact tests on doubles that the extractor's input check uses (exact_uv_check.h, integer_grid_constraints.h):
+// same_difference (x - y == z - w, by TwoSum pairs) and is_integer_sum ((a + b) 2^s an integer) against Gmpq, on
+// random doubles of every magnitude, on near misses (one ulp off) and on exact hits.
+static void test_exact_double_tests()
+{
+  std::mt19937_64 rng(11);
+  auto any_double = [&]() {
+    const double m = std::uniform_real_distribution<double>(-1, 1)(rng);
+    return std::ldexp(m, int(rng() % 2090) - 1070);   // finite: below 2^1020
+  };
+  auto grid_double = [&]() { return double(std::int64_t(rng() % 2001) - 1000) * std::ldexp(1., -int(rng() % 60)); };
+  std::size_t equal = 0, integral = 0;
+  for(int i = 0; i < 200000; ++i) {
+    const bool grid = i % 2 == 0;
+    double x = grid ? grid_double() : any_double(), y = grid ? grid_double() : any_double();
+    double z = grid ? grid_double() : any_double(), w = grid ? grid_double() : any_double();
+    if(i % 4 == 1) { z = x + std::ldexp(1., int(rng() % 8)); w = y + std::ldexp(1., int(rng() % 8)); }   // often equal
+    if(i % 8 == 3) w = std::nextafter(w, 1e300);                                                   // a near miss
+    const bool same = Q(x) - Q(y) == Q(z) - Q(w);
+    assert(SS::internal::same_difference(x, y, z, w) == same);
+    equal += same ? 1 : 0;
+    const int e = int(rng() % 80) - 40;
+    const Q scaled = (Q(x) + Q(y)) * (e >= 0 ? Q(CGAL::Gmpz(1) << e) : Q(CGAL::Gmpz(1), CGAL::Gmpz(1) << -e));
+    assert(SS::internal::is_integer_sum(x, y, e) == SS::internal::is_integer(scaled));
+    integral += SS::internal::is_integer(scaled) ? 1 : 0;
+  }
+  std::cout << "quad: exact tests on doubles: 200000 cases agree with Gmpq (" << equal << " equal differences, " << integral
+            << " integer sums)\n";
+  assert(equal > 10000 && integral > 10000);
+}
+
 int main(int argc, char** argv)
 {
   std::setvbuf(stdout, nullptr, _IONBF, 0);
   parse_test_arguments(argc, argv);
+  test_exact_double_tests();
   test_cube();
   test_torus();
   test_grid();

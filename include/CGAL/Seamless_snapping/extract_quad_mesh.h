@@ -172,7 +172,9 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   Origin_map origin_map = choose_parameter<Origin_map>(get_parameter(np_out, snap_np::vertex_origin_map));
   Face_origin_map face_origin_map = choose_parameter<Face_origin_map>(get_parameter(np_out, snap_np::face_origin_map));
 
-  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, qm, vpm_out, origin_map, face_origin_map);
+  const bool covered_faces = !CGAL::parameters::is_default_parameter<NamedParameters_out, snap_np::face_origin_map_t>::value;
+  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, qm, vpm_out, origin_map, face_origin_map,
+                                                covered_faces);
 }
 
 } // namespace Seamless_snapping

@@ -93,6 +93,26 @@ inline void candidate_cells(const Uv_point t[3], std::int64_t& i0, std::int64_t&
   j0 = std::int64_t(std::floor(v0)); j1 = std::int64_t(std::ceil(v1)) - 1;
 }
 
+// The sign of the orientation of (a, b, q) for many grid points q and one side (a, b), exactly: the
+// determinant (b - a) x (q - a) in double with Shewchuk's first error bound for this formula (orient2d's
+// errboundA, valid without underflow), the exact predicate where the bound does not decide.
+class Side_orientation
+{
+public:
+  Side_orientation(const Uv_point& a, const Uv_point& b) : a_(a), b_(b), dx_(b.x() - a.x()), dy_(b.y() - a.y()) {}
+  signed char operator()(double qx, double qy) const
+  {
+    const double l = dx_ * (qy - a_.y()), r = dy_ * (qx - a_.x()), det = l - r;
+    const double bound = 3.3306690738754716e-16 * (std::fabs(l) + std::fabs(r));   // (3 + 16 eps) eps, eps = 2^-53
+    if(det > bound && bound > 0x1p-900) return 1;
+    if(-det > bound && bound > 0x1p-900) return -1;
+    return static_cast<signed char>(CGAL::orientation(a_, b_, Uv_point(qx, qy)));
+  }
+private:
+  Uv_point a_, b_;
+  double dx_, dy_;
+};
+
 // The pieces of face f (first halfedge h0), appended to `out`; `sign` is scratch space.
 inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& out, std::vector<signed char>& sign)
 {
@@ -102,11 +122,12 @@ inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& o
   candidate_cells(t, i0, i1, j0, j1);
   const std::size_t ni = std::size_t(i1 - i0 + 2), nj = std::size_t(j1 - j0 + 2), n = ni * nj;   // grid points
   sign.resize(3 * n);
-  for(std::size_t b = 0; b < nj; ++b)
-    for(std::size_t a = 0; a < ni; ++a) {
-      const Uv_point q(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
-      for(int s = 0; s < 3; ++s) sign[std::size_t(s) * n + b * ni + a] = static_cast<signed char>(CGAL::orientation(t[s], t[(s + 1) % 3], q));
-    }
+  for(int s = 0; s < 3; ++s) {
+    const Side_orientation side(t[s], t[(s + 1) % 3]);
+    signed char* row = sign.data() + std::size_t(s) * n;
+    for(std::size_t b = 0; b < nj; ++b)
+      for(std::size_t a = 0; a < ni; ++a) row[b * ni + a] = side(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
+  }
   for(std::size_t b = 0; b + 1 < nj; ++b)
     for(std::size_t a = 0; a + 1 < ni; ++a) {
       std::size_t g[4];                           // the cell's corners in the grid, counter-clockwise
@@ -172,6 +193,8 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
     }
   }
   out.first.reserve(std::size_t(cm.n_faces) + 1);
+  out.cell.reserve(candidates); out.face.reserve(candidates); out.corner.reserve(candidates); out.cut.reserve(candidates);
+  out.glue.reserve(candidates);
   std::vector<signed char> sign;
   for(int f = 0; f < cm.n_faces; ++f) {
     out.first.push_back(out.cell.size());

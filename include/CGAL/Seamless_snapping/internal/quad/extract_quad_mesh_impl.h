@@ -38,9 +38,10 @@ template <class TriangleMesh> struct Quad_vertex_origin;
 namespace internal {
 namespace quad {
 
+// `covered`: fill face_origin_map (false when the caller gave none)
 template <class TriangleMesh, class QuadMesh, class VPM_out, class Origin_map, class Face_origin_map>
 void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<TriangleMesh>& desc, const Quad_extraction& x,
-                   QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map, Face_origin_map face_origin_map)
+                   QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map, Face_origin_map face_origin_map, bool covered_faces)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef boost::graph_traits<QuadMesh> QT;
@@ -69,8 +70,11 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
                                                                     qv[std::size_t(c[2])], qv[std::size_t(c[3])]}};
     const typename QT::face_descriptor f = CGAL::Euler::add_face(corners, qm);
     CGAL_assertion(f != QT::null_face());     // the faces of the verified mesh, in the same order
+    if(!covered_faces) continue;
     std::vector<typename GT::face_descriptor> covered;
-    for(int g : x.cells.faces[q]) covered.push_back(face_of[std::size_t(g)]);
+    covered.reserve(x.cells.faces_first[q + 1] - x.cells.faces_first[q]);
+    for(std::size_t k = x.cells.faces_first[q]; k < x.cells.faces_first[q + 1]; ++k)
+      covered.push_back(face_of[std::size_t(x.cells.faces[k])]);
     put(face_origin_map, f, covered);
   }
 }
@@ -79,7 +83,7 @@ template <class TriangleMesh, class HalfedgeUVMap, class VPM_in, class QuadMesh,
           class Face_origin_map>
 Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv, VPM_in vpm_in, double grid_scale,
                                         QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
-                                        Face_origin_map face_origin_map)
+                                        Face_origin_map face_origin_map, bool covered_faces)
 {
   const auto t0 = std::chrono::steady_clock::now();
   Quad_mesh_report report;
@@ -91,13 +95,14 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
     report.status = INVALID_INPUT;
     report.message = "the grid scale " + format_double(grid_scale, 17) + " is not a power of two";
   }
-  if(report.status != SUCCESS) return report;
-  std::vector<typename boost::property_traits<VPM_in>::value_type> points;
-  for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
-  report.status = extract_quads(scale_exponent, points, x, report);
-  if(report.status != SUCCESS) return report;
+  if(report.status == SUCCESS) {
+    std::vector<typename boost::property_traits<VPM_in>::value_type> points;
+    for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
+    report.status = extract_quads(scale_exponent, points, x, report);
+  }
+  if(report.status != SUCCESS) { report.total_ms = ms_since(t0); return report; }
 
-  add_quad_mesh(tm, desc, x, qm, vpm_out, origin_map, face_origin_map);
+  add_quad_mesh(tm, desc, x, qm, vpm_out, origin_map, face_origin_map, covered_faces);
   report.message = std::to_string(report.quads) + " quads, " + std::to_string(report.quad_vertices) + " vertices (" +
                    std::to_string(report.irregular_vertices) + " irregular, " + std::to_string(report.cones) +
                    " cones in the map), Euler characteristic " + std::to_string(report.euler_characteristic) + ", " +

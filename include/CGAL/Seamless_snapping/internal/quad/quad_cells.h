@@ -44,7 +44,8 @@ struct Quad_cells
 {
   std::vector<Integer_point> points;            // the quad vertices
   std::vector<std::array<int, 4> > quads;       // per complete cell: its corners (indices into points), counter-clockwise
-  std::vector<std::vector<int> > faces;         // per quad: the faces of the map it covers, ascending
+  std::vector<std::size_t> faces_first;         // per quad q: the faces of the map it covers, ascending, are
+  std::vector<int> faces;                       // faces[faces_first[q] .. faces_first[q + 1] - 1]
   std::size_t incomplete = 0;                   // cells cut by the border, dropped
   int first_incomplete_face = -1;               // a face with a piece of the first of them
 };
@@ -110,6 +111,7 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
   // corners
   Integer_point_index index;
   std::vector<int> corner(4 * roots.size(), -1);
+  out.faces_first.assign(1, 0);
   for(std::size_t x = 0; x < pieces.size(); ++x) {
     const std::size_t cell = std::size_t(cell_of[x]);
     if(!complete[cell]) continue;
@@ -160,7 +162,8 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
     }
     out.quads.push_back(q);
     const auto b = faces_of_cell.begin() + std::ptrdiff_t(count[cell]), e = faces_of_cell.begin() + std::ptrdiff_t(count[cell + 1]);
-    out.faces.emplace_back(b, std::unique(b, e));
+    out.faces.insert(out.faces.end(), b, std::unique(b, e));
+    out.faces_first.push_back(out.faces.size());
   }
   out.points = index.points();
   return SUCCESS;

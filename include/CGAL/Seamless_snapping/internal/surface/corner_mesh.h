@@ -182,6 +182,7 @@ inline int natural_uv_exponent(const Corner_mesh& cm)
 inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const int* forced_exponent = nullptr)
 {
   const int e = forced_exponent != nullptr ? *forced_exponent : natural_uv_exponent(cm);
+  if(e == 0) { cm.uv_exponent = 0; return SUCCESS; }   // nothing to scale
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const double n[2] = {std::ldexp(cm.u[h], -e), std::ldexp(cm.v[h], -e)};

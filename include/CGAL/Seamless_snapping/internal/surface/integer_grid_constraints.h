@@ -83,6 +83,23 @@ inline void translation(const Corner_mesh& cm, const Seam_topology& st, const Cu
 
 inline bool is_integer(const CGAL::Gmpq& q) { return q.denominator() == 1; }
 
+// true iff (a + b) 2^s is an integer, exactly: the TwoSum pair (S, E) of a + b scaled by 2^s (exact when it
+// neither overflows nor loses bits to underflow) is the exact value S' + E'; with |S'| < 2^52 it is an integer
+// iff E' = 0 and S' is one (an integer of at most 2^53 is a double, which fl() returns as it is). Otherwise in
+// rational arithmetic.
+inline bool is_integer_sum(double a, double b, int s)
+{
+  if(std::fabs(a) < 0x1p1000 && std::fabs(b) < 0x1p1000) {
+    double S, E;
+    two_sum(a, b, S, E);
+    const double Ss = std::ldexp(S, s), Es = std::ldexp(E, s);
+    if(std::fabs(Ss) < 0x1p52 && std::ldexp(Ss, -s) == S && std::ldexp(Es, -s) == E)
+      return Es == 0 && Ss == std::floor(Ss);
+  }
+  const CGAL::Gmpq scale = s >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << s) : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -s);
+  return is_integer((CGAL::Gmpq(a) + CGAL::Gmpq(b)) * scale);
+}
+
 // true iff t of h at the given end is an integer vector, exactly
 inline bool exact_integer_translation(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, int h,
                                       bool front, const std::vector<double>& x)
@@ -334,9 +351,7 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
                                            std::vector<int>* edge_k = nullptr)
 {
   if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned, why)) return false;
-  const CGAL::Gmpq scale = scale_exponent >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << scale_exponent)
-                                               : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -scale_exponent);
-  auto U = [&](int h, int c) { return CGAL::Gmpq(c == 0 ? cm.u[h] : cm.v[h]) * scale; };
+  auto U = [&](int h, int c) { return c == 0 ? cm.u[h] : cm.v[h]; };   // the corner UVs; grid units: times 2^scale_exponent
   auto fail = [&](const std::string& what) {
     if(why != nullptr) *why = what + " (grid scale 2^" + std::to_string(scale_exponent) + "): not an integer-grid map";
     return false;
@@ -348,9 +363,9 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       const int c = cm.u[g] == cm.u[cm.prev[g]] ? 0 : 1;   // exactly axis-parallel (checked above)
-      if(!is_integer(U(g, c)))
+      if(!is_integer_sum(U(g, c), 0, scale_exponent))
         return fail("constrained edge " + vertex_pair_name(cm, h) + " lies on the isoline " + (c == 0 ? "u" : "v") +
-                    " = " + format_double(CGAL::to_double(U(g, c)), 17) + " in grid units, not an integer one");
+                    " = " + format_double(std::ldexp(U(g, c), scale_exponent), 17) + " in grid units, not an integer one");
     }
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
@@ -362,7 +377,7 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
       const Quarter_turn R(k);
       bool integral = true;      // t at source(h): U(o) - R^k U(prev h)
       for(int c = 0; c < 2 && integral; ++c)
-        integral = is_integer(U(o, c) - CGAL::Gmpq(double(R.sign[c])) * U(cm.prev[h], R.col[c]));
+        integral = is_integer_sum(U(o, c), -R.sign[c] * U(cm.prev[h], R.col[c]), scale_exponent);
       if(integral) found = k;
     }
     if(found < 0)
@@ -375,9 +390,9 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h];
     if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || (K[v] % 4 + 4) % 4 == 0) continue;
-    if(!is_integer(U(h, 0)) || !is_integer(U(h, 1)))
+    if(!is_integer_sum(U(h, 0), 0, scale_exponent) || !is_integer_sum(U(h, 1), 0, scale_exponent))
       return fail("cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * ((K[v] % 4 + 4) % 4)) +
-                  " degrees) has the UV " + point_name(CGAL::to_double(U(h, 0)), CGAL::to_double(U(h, 1))) +
+                  " degrees) has the UV " + point_name(std::ldexp(U(h, 0), scale_exponent), std::ldexp(U(h, 1), scale_exponent)) +
                   " in face " + std::to_string(cm.face[h]) + " in grid units, not an integer point");
   }
   if(edge_k != nullptr) edge_k->swap(k_of);
