@@ -75,7 +75,7 @@ struct Quad_mesh_report
   /// the quad mesh covers the whole map: `SUCCESS` and no cell dropped; then `quads` equals `uv_area`
   bool covers_map() const { return status == SUCCESS && incomplete_cells == 0; }
 
-  /// returns the report as one JSON object (`uv_area` as a string "p/q")
+  /// returns the report as one JSON object (`uv_area` as a string "p/q", or "p" when it is an integer)
   std::string to_json() const
   {
     std::ostringstream o;
@@ -91,8 +91,9 @@ struct Quad_mesh_report
       for(std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << v[i];
       o << "],\n";
     };
-    std::ostringstream area;
-    area << uv_area;
+    std::ostringstream area;                       // "p/q", or "p" for an integer (as Python's Fraction prints it)
+    area << uv_area.numerator();
+    if(uv_area.denominator() != 1) area << "/" << uv_area.denominator();
     str("status", status_name(status));
     str("message", message);
     num("faces", double(faces)); num("input_euler_characteristic", input_euler_characteristic);

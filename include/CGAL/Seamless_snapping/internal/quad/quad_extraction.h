@@ -90,6 +90,9 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
     }
 
   facts.valence = quad_valences(cm).valence;
+  // Twice the UV area, exactly: the sum over the faces of det(a, b, c) = a x b + b x c + c x a (shoelace about the
+  // origin), in which the two terms of an edge whose faces agree on its UVs cancel exactly; what is left are the
+  // terms of the sides on cut edges and on the border, each an exact product of doubles (CGAL::Mpzf).
   std::vector<char> used(std::size_t(cm.n_vertices), 0), on_integer(std::size_t(cm.n_vertices), 1);
   CGAL::Mpzf twice = 0;
   for(int h = 0; h < cm.n_halfedges; ++h) {
@@ -97,11 +100,11 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
     const std::size_t v = std::size_t(cm.target[h]);
     used[v] = 1;
     if(cm.u[h] != std::floor(cm.u[h]) || cm.v[h] != std::floor(cm.v[h])) on_integer[v] = 0;
-    if(h < cm.next[h] && h < cm.prev[h]) {                         // once per face: twice its signed area
-      const int a = cm.prev[h], c = cm.next[h];
-      twice += (CGAL::Mpzf(cm.u[h]) - CGAL::Mpzf(cm.u[a])) * (CGAL::Mpzf(cm.v[c]) - CGAL::Mpzf(cm.v[a])) -
-               (CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a])) * (CGAL::Mpzf(cm.u[c]) - CGAL::Mpzf(cm.u[a]));
-    }
+    const int a = cm.prev[h], o = cm.opp[h];
+    if(!cm.is_border_halfedge(o) && cm.u[h] == cm.u[cm.prev[o]] && cm.v[h] == cm.v[cm.prev[o]] && cm.u[a] == cm.u[o] &&
+       cm.v[a] == cm.v[o])
+      continue;                                                     // cancels with the opposite side
+    twice += CGAL::Mpzf(cm.u[a]) * CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a]) * CGAL::Mpzf(cm.u[h]);
   }
   facts.cones = 0;
   std::size_t vertices = 0;
