@@ -73,8 +73,12 @@ static double ms_since(std::chrono::steady_clock::time_point t0)
 static bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // Same vertex order and the same faces in the same order; corners matched by target vertex index.
-static bool bit_identical(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, std::string& why)
+// Same connectivity and positions bit for bit; the largest difference of a corner UV in `max_uv_difference` (or, with
+// `uv_tolerance` 0, false at the first UV that is not bit-identical).
+static bool same_mesh(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, double uv_tolerance, double& max_uv_difference,
+                      std::string& why)
 {
+  max_uv_difference = 0;
   if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces()) { why = "counts"; return false; }
   for(vertex_descriptor v : a.vertices()) {
     const Point_3& p = a.point(v); const Point_3& q = b.point(vertex_descriptor(v.idx()));
@@ -87,12 +91,22 @@ static bool bit_identical(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, st
       for(halfedge_descriptor k : CGAL::halfedges_around_face(b.halfedge(g), b))
         if(b.target(k).idx() == a.target(h).idx()) {
           found = true;
-          if(!same_bits(get(ua, h).x(), get(ub, k).x()) || !same_bits(get(ua, h).y(), get(ub, k).y())) { why = "UV in face " + std::to_string(f.idx()); return false; }
+          if(!same_bits(get(ua, h).x(), get(ub, k).x()) || !same_bits(get(ua, h).y(), get(ub, k).y())) {
+            max_uv_difference = (std::max)({max_uv_difference, std::abs(get(ua, h).x() - get(ub, k).x()),
+                                            std::abs(get(ua, h).y() - get(ub, k).y())});
+            if(!(max_uv_difference <= uv_tolerance)) { why = "UV in face " + std::to_string(f.idx()); return false; }
+          }
         }
       if(!found) { why = "connectivity of face " + std::to_string(f.idx()); return false; }
     }
   }
   return true;
+}
+
+static bool bit_identical(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, std::string& why)
+{
+  double difference = 0;
+  return same_mesh(a, ua, b, ub, 0, difference, why);
 }
 
 static fs::path scratch_dir()
@@ -500,13 +514,19 @@ static void test_orbifold(const fs::path& tmp)
   // (checked implicitly by the fit: only 99-ish cut edges out of 41k)
   CHECK(fit.cut_halfedges.size() < 500, "Square: seam is short");
 
-  // same map, bit for bit, as shared/data/cgal-orbifold-generated (made the same way, SOURCES.md note G)
+  // the same map as shared/data/cgal-orbifold-generated (made the same way, SOURCES.md note G): the same mesh bit for
+  // bit, and UVs that differ by solver rounding only (the mean-value weights go through libm, the solve through Eigen;
+  // on another machine the last bits differ: not bit for bit)
   const fs::path shared_bear = fs::path(SS_SHARED_DATA_DIR) / "cgal-orbifold-generated" / "bear_orbifold_square_mvc.obj";
   if(fs::exists(shared_bear)) {
     Mesh m2; UV_map uv2 = m2.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
     CHECK(SS::IO::read_OBJ_with_corner_uvs(shared_bear.string(), m2, uv2, msg) == SS::SUCCESS, msg);
     std::string why;
-    CHECK(bit_identical(sm, uv, m2, uv2, why), "orbifold map equals bear_orbifold_square_mvc.obj bit for bit: " << why);
+    double difference = 0;
+    const bool same = same_mesh(sm, uv, m2, uv2, 1e-9 * fit.uv_diagonal, difference, why);
+    std::printf("  bear_orbifold_square_mvc.obj: the same mesh, UVs differ by at most %.3g of the UV diagonal\n",
+                difference / fit.uv_diagonal);
+    CHECK(same, "orbifold map equals bear_orbifold_square_mvc.obj up to solver rounding: " << why);
   } else {
     std::cout << "  comparison with bear_orbifold_square_mvc.obj: SKIPPED (no shared data)\n";
   }
