@@ -8,6 +8,8 @@ import os
 import subprocess
 import sys
 
+from fold_over_grid import write_fold_over_grid
+
 exe, src, work = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
 
@@ -101,21 +103,9 @@ rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
 check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
       "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
 
-# --vval next to fold-overs: refused (FOLD_OVERS, the faces listed), neither OUT.obj nor the VVAL file written.
-# A 3 x 3 grid whose vertex (1, 1) has the UV (3, 1): two UV triangles flip, two have zero area (no seam: an
-# exact integer-grid map as it is)
+# --vval next to fold-overs: refused (FOLD_OVERS, the faces listed), neither OUT.obj nor the VVAL file written
 folds = os.path.join(work, "folds.obj")
-with open(folds, "w") as o:
-    for j in range(4):
-        for i in range(4):
-            o.write("v %d %d 0\n" % (i, j))
-    for j in range(4):
-        for i in range(4):
-            o.write("vt %d %d\n" % ((3, 1) if (i, j) == (1, 1) else (i, j)))
-    for j in range(3):
-        for i in range(3):
-            a, b, c, d = 4 * j + i + 1, 4 * j + i + 2, 4 * (j + 1) + i + 2, 4 * (j + 1) + i + 1
-            o.write("f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n" % (a, a, b, b, c, c, a, a, c, c, d, d))
+write_fold_over_grid(folds)
 out9, vval9 = os.path.join(work, "folds_out.obj"), os.path.join(work, "folds.vval")
 rc, text = run(folds, out9, "--integer-grid", "--vval", vval9)
 check(rc == 1 and "FOLD_OVERS" in text and "fold-overs" in text and not os.path.exists(out9) and not os.path.exists(vval9),

@@ -9,6 +9,8 @@ import os
 import subprocess
 import sys
 
+from fold_over_grid import write_fold_over_grid
+
 exe, parallelogram, square, work = sys.argv[1:5]
 os.makedirs(work, exist_ok=True)
 checks, failures = [0], []
@@ -68,17 +70,7 @@ for ext in ["obj", "off", "ply"]:
 
 # 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
 folds = os.path.join(work, "folds.obj")
-with open(folds, "w") as o:                         # a 3 x 3 grid, vertex (1, 1) at UV (3, 1): fold-overs
-    for j in range(4):
-        for i in range(4):
-            o.write("v %d %d 0\n" % (i, j))
-    for j in range(4):
-        for i in range(4):
-            o.write("vt %d %d\n" % ((3, 1) if (i, j) == (1, 1) else (i, j)))
-    for j in range(3):
-        for i in range(3):
-            a, b, c, d = 4 * j + i + 1, 4 * j + i + 2, 4 * (j + 1) + i + 2, 4 * (j + 1) + i + 1
-            o.write("f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n" % (a, a, b, b, c, c, a, a, c, c, d, d))
+write_fold_over_grid(folds)
 for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, [], "FOLD_OVERS", "quad_mesh"),
                                  (parallelogram, ["--grid-scale", "3"], "power of two", "snap")]:
     out = os.path.join(work, "refused.obj")

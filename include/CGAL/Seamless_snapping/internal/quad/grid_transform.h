@@ -20,6 +20,7 @@
 // o_1 = (-1, 0), o_2 = (-1, -1), o_3 = (0, -1) (the rotated unit square's lower-left corner).
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>   // rotate_quarter_turns()
 
 #include <CGAL/assertions.h>
 
@@ -45,12 +46,9 @@ inline int quarter_turns_mod4(int k) { return ((k % 4) + 4) % 4; }
 // R^k p
 inline Grid_point rotate(int k, const Grid_point& p)
 {
-  switch(quarter_turns_mod4(k)) {
-    case 0: return p;
-    case 1: return Grid_point{-p.v, p.u};
-    case 2: return Grid_point{-p.u, -p.v};
-    default: return Grid_point{p.v, -p.u};
-  }
+  Grid_point r;
+  rotate_quarter_turns(k, p.u, p.v, r.u, r.v);
+  return r;
 }
 
 struct Grid_transform
@@ -99,8 +97,9 @@ inline std::vector<Grid_transform> halfedge_transitions(const Corner_mesh& cm, c
     if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[std::size_t(e)], o = cm.opp[h], ph = cm.prev[h];
     const int k = quarter_turns_mod4(edge_k[std::size_t(e)]);
-    const double r[2][4] = {{cm.u[ph], -cm.v[ph], -cm.u[ph], cm.v[ph]}, {cm.v[ph], cm.u[ph], -cm.v[ph], -cm.u[ph]}};
-    const double tu = cm.u[o] - r[0][k], tv = cm.v[o] - r[1][k];   // R^k (x, y): (x, y), (-y, x), (-x, -y), (y, -x)
+    double ru, rv;
+    rotate_quarter_turns(k, cm.u[ph], cm.v[ph], ru, rv);
+    const double tu = cm.u[o] - ru, tv = cm.v[o] - rv;
     CGAL_assertion(tu == std::floor(tu) && tv == std::floor(tv));
     T[std::size_t(h)] = Grid_transform{k, Grid_point{std::int64_t(tu), std::int64_t(tv)}};
     T[std::size_t(o)] = inverse(T[std::size_t(h)]);
