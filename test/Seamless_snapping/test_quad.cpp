@@ -28,6 +28,8 @@
 //   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
 //                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
 //                               not a power of two; the output mesh is unchanged on every refusal
+//   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
+//                               (8 quads around it), off the integer points refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
 //                               with integer_grid_map(true) at grid scales 2, 4, 8: chi 2, 4 cones of valence 2,
 //                               scale covariance; the Square map (cones of 90 degrees) is refused (valence 1)
@@ -354,6 +356,41 @@ static void make_quarter_turn_cone(Mesh& m, UV_map& uv)
   }
 }
 
+// A fan of 8 triangles around an interior vertex c whose UV angle sum is 8 quarter turns in one chart (no cut edge:
+// the map winds twice around c, a branch point), c at `center`, the other vertices at 2 units in the axis directions.
+static void make_double_fan(Mesh& m, UV_map& uv, const Point_2& center)
+{
+  const vertex_descriptor c = m.add_vertex(Point_3(0, 0, 1));
+  std::vector<vertex_descriptor> w;
+  for(int i = 0; i < 8; ++i) w.push_back(m.add_vertex(Point_3(std::cos(CGAL_PI * i / 4), std::sin(CGAL_PI * i / 4), 0)));
+  uv = uv_of(m);
+  const double d[4][2] = {{2, 0}, {0, 2}, {-2, 0}, {0, -2}};
+  for(int i = 0; i < 8; ++i) {
+    const face_descriptor f = m.add_face(c, w[std::size_t(i)], w[std::size_t((i + 1) % 8)]);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+      const int k = m.target(h) == c ? -1 : m.target(h) == w[std::size_t(i)] ? i % 4 : (i + 1) % 4;
+      put(uv, h, k < 0 ? center : Point_2(center.x() + d[k][0], center.y() + d[k][1]));
+    }
+  }
+}
+
+static void test_branch_points()
+{
+  // on an integer point: 8 quads around it, a vertex of valence 8 (the cells along the diagonal border are cut)
+  Mesh m; UV_map uv;
+  make_double_fan(m, uv, Point_2(0, 0));
+  assert(SS::is_exact_integer_grid_map(m, uv) && SS::quad_valences(m, uv).valence[0] == 8);
+  Quad_result r;
+  extract(m, uv, 1, r);
+  check_quad_mesh(m, uv, 1, r, "branch point of 8 quarter turns on (0, 0)");
+  assert(r.report.quads == 8 && r.report.valence_histogram[8] == 1 && r.report.incomplete_cells > 0);
+  // off the integer points: refused
+  Mesh b; UV_map uvb;
+  make_double_fan(b, uvb, Point_2(0.5, 0.25));
+  assert(SS::is_exact_integer_grid_map(b, uvb));
+  check_refused(b, uvb, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns off the grid");
+}
+
 static void test_refusals()
 {
   // fold-overs and zero-area triangles: the grid with vertex (1, 1) moved to (3, 1) in UV, (1, 2) onto (1, 3);
@@ -503,6 +540,7 @@ int main(int argc, char** argv)
   test_torus();
   test_grid();
   test_refusals();
+  test_branch_points();
   if(!sanitizer_subset()) test_bear_orbifold();
   test_shared_data();
   std::cout << "test_quad: all passed\n";

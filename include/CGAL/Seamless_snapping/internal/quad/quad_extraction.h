@@ -61,6 +61,58 @@ inline double ms_since(std::chrono::steady_clock::time_point t0)
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// What the quad mesh is verified against (UVs in grid units): the quad valences, the cones (interior vertices of
+// valence other than 4), the Euler characteristic, the border loops, and twice the UV area, exactly: the sum over the
+// faces of det(a, b, c) = a x b + b x c + c x a (shoelace about the origin), in which the two terms of an edge whose
+// faces agree on its UVs cancel exactly; what is left are the terms of the sides on cut edges and on the border, each
+// an exact product of doubles (CGAL::Mpzf).
+inline Map_facts map_facts(const Corner_mesh& cm)
+{
+  Map_facts facts;
+  facts.valence = quad_valences(cm).valence;
+  std::vector<char> used(std::size_t(cm.n_vertices), 0);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    used[std::size_t(cm.target[h])] = 1;
+    const int a = cm.prev[h], o = cm.opp[h];
+    if(!cm.is_border_halfedge(o) && cm.u[h] == cm.u[cm.prev[o]] && cm.v[h] == cm.v[cm.prev[o]] && cm.u[a] == cm.u[o] &&
+       cm.v[a] == cm.v[o])
+      continue;                                                     // cancels with the opposite side
+    facts.twice_area += CGAL::Mpzf(cm.u[a]) * CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a]) * CGAL::Mpzf(cm.u[h]);
+  }
+  std::size_t vertices = 0;
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    vertices += used[std::size_t(v)];
+    facts.cones += !cm.vertex_on_border[v] && used[std::size_t(v)] && facts.valence[std::size_t(v)] != 4 ? 1 : 0;
+  }
+  std::vector<char> walked(std::size_t(cm.n_halfedges), 0);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(!cm.is_border_halfedge(h) || walked[std::size_t(h)]) continue;
+    ++facts.boundary_loops;
+    for(int g = h; !walked[std::size_t(g)]; g = cm.next[g]) walked[std::size_t(g)] = 1;
+  }
+  facts.euler_characteristic = int(vertices) - cm.n_edges + cm.n_faces;
+  return facts;
+}
+
+// Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
+// a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice).
+inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, std::string& message)
+{
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    const int v = cm.target[h], q = valence[std::size_t(v)];
+    if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || q == 4) continue;
+    const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
+    if(on_integer && q != 1) continue;
+    message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns " +
+              (q == 1 ? "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
+                        "a corner twice; no quad mesh has it"
+                      : "but is not on an integer point: the map branches inside a cell");
+    return INVALID_INPUT;
+  }
+  return SUCCESS;
+}
+
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
 inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<int>& edge_k, Map_facts& facts,
                                Quad_mesh_report& r)
@@ -89,51 +141,12 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
       return RANGE_EXCEEDED;
     }
 
-  facts.valence = quad_valences(cm).valence;
-  // Twice the UV area, exactly: the sum over the faces of det(a, b, c) = a x b + b x c + c x a (shoelace about the
-  // origin), in which the two terms of an edge whose faces agree on its UVs cancel exactly; what is left are the
-  // terms of the sides on cut edges and on the border, each an exact product of doubles (CGAL::Mpzf).
-  std::vector<char> used(std::size_t(cm.n_vertices), 0), on_integer(std::size_t(cm.n_vertices), 1);
-  CGAL::Mpzf twice = 0;
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    const std::size_t v = std::size_t(cm.target[h]);
-    used[v] = 1;
-    if(cm.u[h] != std::floor(cm.u[h]) || cm.v[h] != std::floor(cm.v[h])) on_integer[v] = 0;
-    const int a = cm.prev[h], o = cm.opp[h];
-    if(!cm.is_border_halfedge(o) && cm.u[h] == cm.u[cm.prev[o]] && cm.v[h] == cm.v[cm.prev[o]] && cm.u[a] == cm.u[o] &&
-       cm.v[a] == cm.v[o])
-      continue;                                                     // cancels with the opposite side
-    twice += CGAL::Mpzf(cm.u[a]) * CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a]) * CGAL::Mpzf(cm.u[h]);
-  }
-  facts.cones = 0;
-  std::size_t vertices = 0;
-  for(int v = 0; v < cm.n_vertices; ++v) {
-    vertices += used[std::size_t(v)];
-    const int q = facts.valence[std::size_t(v)];
-    if(cm.vertex_on_border[v] || !used[std::size_t(v)] || q == 4) continue;
-    ++facts.cones;
-    if(!on_integer[std::size_t(v)] || q == 1) {
-      r.message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns " +
-                  (q == 1 ? "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one "
-                            "edge, a corner twice; no quad mesh has it"
-                          : "but is not on an integer point: the map branches inside a cell");
-      return INVALID_INPUT;
-    }
-  }
-  std::vector<char> walked(std::size_t(cm.n_halfedges), 0);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(!cm.is_border_halfedge(h) || walked[std::size_t(h)]) continue;
-    ++facts.boundary_loops;
-    for(int g = h; !walked[std::size_t(g)]; g = cm.next[g]) walked[std::size_t(g)] = 1;
-  }
-  facts.euler_characteristic = int(vertices) - cm.n_edges + cm.n_faces;
-  facts.twice_area = twice;
+  facts = map_facts(cm);
   r.input_euler_characteristic = facts.euler_characteristic;
   r.input_boundary_loops = facts.boundary_loops;
   r.cones = facts.cones;
-  r.uv_area = CGAL::Gmpq(twice) / 2;
-  return SUCCESS;
+  r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
+  return check_cones(cm, facts.valence, r.message);
 }
 
 // The 3D point of an integer point p: the combination of the vertices of its edge or face with the
