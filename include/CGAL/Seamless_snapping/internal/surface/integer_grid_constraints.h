@@ -210,8 +210,9 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     bool near = true;
     for(int c = 0; c < 2; ++c) {
       const double r = std::nearbyint(ta[c]);
-      near = near && std::fabs(r) < 0x1p52 && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
-      t[2 * h + c] = long(r);
+      const bool in_range = std::fabs(r) < 0x1p52;             // converted to long only then (else UB)
+      near = near && in_range && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
+      t[2 * h + c] = in_range ? long(r) : 0;
     }
     if(!near) {
       if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + point_name(ta[0], ta[1]);
