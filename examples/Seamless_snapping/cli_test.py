@@ -11,6 +11,8 @@ import os
 import subprocess
 import sys
 
+from fold_over_grid import write_fold_over_grid
+
 exe, src, work = sys.argv[1:4]
 os.makedirs(work, exist_ok=True)
 
@@ -103,6 +105,14 @@ out6, vval6 = os.path.join(work, "far.obj"), os.path.join(work, "far.vval")
 rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
 check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
       "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
+
+# --vval next to fold-overs: refused (FOLD_OVERS, the faces listed), neither OUT.obj nor the VVAL file written
+folds = os.path.join(work, "folds.obj")
+write_fold_over_grid(folds)
+out9, vval9 = os.path.join(work, "folds_out.obj"), os.path.join(work, "folds.vval")
+rc, text = run(folds, out9, "--integer-grid", "--vval", vval9)
+check(rc == 1 and "FOLD_OVERS" in text and "fold-overs" in text and not os.path.exists(out9) and not os.path.exists(vval9),
+      "--vval next to fold-overs: exit 1, nothing written: %d %s" % (rc, text))
 
 # 6. --pin FILE: a seam vertex whose two sectors' UVs are rounded to multiples of 2^-20 (on the snap's grid) keeps
 # them bit for bit; a vertex with generic UVs (bits below the grid quantum) is refused, nothing written

@@ -44,12 +44,13 @@ int main(int argc, char** argv)
   if(!igm || r.integer_translations_after != r.cut_edges || r.cones_on_integer_points_after != r.field_cones)
     return fail("the snapped map is not an exact integer-grid map");
 
-  // the valences a quad extractor needs: exact angle sums in quarter turns (4 regular, 3 and 5 at cones)
+  // the valences a quad extractor needs: the integer-grid directions leaving each vertex (4 regular, 3 and 5 at
+  // cones), counted exactly; refused (FOLD_OVERS) when the map has fold-overs or zero-area UV triangles
   const SS::Quad_valences q = SS::quad_valences(mesh, uv);
-  if(q.status != SS::SUCCESS) return fail("quad_valences: " + q.message);
+  if(q.status != SS::SUCCESS) return fail(std::string("quad_valences: ") + SS::status_name(q.status) + ": " + q.message);
   std::size_t irregular = 0;
   for(std::size_t v = 0; v < q.valence.size(); ++v) irregular += (q.valence[v] != 4 && !mesh.is_border(Mesh::Vertex_index(v)));
-  std::printf("valences: %zu interior vertices not of valence 4, %zu approximate\n", irregular, q.approximate.size());
+  std::printf("valences: %zu interior vertices not of valence 4\n", irregular);
 
   if(argc > 3) {
     if(SS::IO::write_OBJ_with_corner_uvs(argv[3], mesh, uv, msg, SS::parameters::vt_per_corner(true)) != SS::SUCCESS) return fail(msg);

@@ -101,11 +101,13 @@ static const char* help_text =
   "  --vt-per-corner      write one 'vt' per face corner (the layout libQEx's test meshes use)\n"
   "  --vval FILE          with --integer-grid: also write libQEx's vertex valence file (VVAL: a JSON\n"
   "                       header line, the vertex count, one integer per vertex in the order of\n"
-  "                       OUT.obj's 'v' lines), the UV angle sum of each vertex in quarter turns,\n"
-  "                       counted exactly with sign tests (fold-overs included; a sum of at most 0\n"
-  "                       next to fold-overs is written as the smallest positive value of its class\n"
-  "                       mod 4); give it to libQEx as the third argument. Written only when OUT.obj\n"
-  "                       was written.\n"
+  "                       OUT.obj's 'v' lines): the number of integer-grid directions leaving each\n"
+  "                       vertex, counted exactly with sign tests (quad_valences()), which is its\n"
+  "                       valence in the quad mesh that seamless_quad extracts. Refused (exit 1,\n"
+  "                       nothing written) when the snapped map has fold-overs or zero-area UV\n"
+  "                       triangles: no quad mesh has the valences next to them, and libQEx, which\n"
+  "                       trusts the file, leaves holes there; run libQEx without a VVAL file, or\n"
+  "                       make the map fold-free first. Written only when OUT.obj was written.\n"
   "  --untangle           make every UV triangle positively oriented (remove fold-overs) by moving the UVs\n"
   "                       near them inside the space of maps with the same constraints (seam rotations,\n"
   "                       with --integer-grid integer translations and cone positions), then snap exactly;\n"
@@ -464,17 +466,10 @@ int main(int argc, char** argv)
   SS::Quad_valences valences;
   if(!vval_file.empty()) {
     valences = SS::quad_valences(mesh, uv);
-    if(valences.status != SS::SUCCESS) return fail("vertex valences: " + valences.message);
+    if(valences.status != SS::SUCCESS)
+      return fail("--vval: " + std::string(SS::status_name(valences.status)) + ": " + valences.message +
+                  (valences.status == SS::FOLD_OVERS ? " (libQEx does better without a VVAL file here); nothing was written" : ""));
   }
-  // A signed angle sum of at most 0 quarter turns only occurs next to fold-overs (each flipped triangle
-  // winds its vertices back by 360 degrees). VVAL has no such valences: the smallest positive valence of the
-  // same class mod 4 (the class is fixed by the seam rotations) is written, and the vertices are listed.
-  std::vector<std::size_t> folded;
-  for(std::size_t v = 0; v < valences.valence.size(); ++v)
-    if(valences.valence[v] <= 0) {
-      folded.push_back(v);
-      valences.valence[v] = (valences.valence[v] % 4 + 4) % 4 == 0 ? 4 : (valences.valence[v] % 4 + 4) % 4;
-    }
   const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
                                          : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message,
                                                                              params::vt_per_corner(vt_per_corner));
@@ -487,16 +482,8 @@ int main(int argc, char** argv)
       for(std::size_t v : valences.border) on_border[v] = 1;
       std::size_t cones = 0;
       for(std::size_t v = 0; v < valences.valence.size(); ++v) cones += !on_border[v] && valences.valence[v] != 4 ? 1 : 0;
-      std::cout << message << ": " << cones << " interior vertices with a valence other than 4, "
-                << valences.approximate.size() << " interior valences rounded (a 180-degree corner or a zero-length "
-                << "edge), not counted exactly; " << valences.border.size() << " border vertices (rounded; libQEx "
-                << "ignores them)\n";
-      if(!folded.empty()) {
-        std::cout << "  " << folded.size() << " vertices next to fold-overs have a signed UV angle sum of at most 0 "
-                  << "quarter turns; written as the smallest positive valence of the same class mod 4 (vertices";
-        for(std::size_t i = 0; i < folded.size() && i < 10; ++i) std::cout << " " << folded[i];
-        std::cout << (folded.size() > 10 ? " ...)\n" : ")\n");
-      }
+      std::cout << message << ": " << cones << " interior vertices with a valence other than 4; " << valences.border.size()
+                << " border vertices (valence: the grid directions in their fan; libQEx ignores them)\n";
     }
   }
   return EXIT_SUCCESS;

@@ -9,8 +9,9 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
     seamless_snapping.write_obj("out.obj", V, F, UV2, FUV2)
     x, report = seamless_snapping.project(C, b, xbar)      # C: scipy.sparse or 2-D integer array
     graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
+    QV, QF, report = seamless_snapping.extract_quad_mesh(V, F, UV3, FUV3)   # the quad mesh of an exact integer-grid map
 
-snap and project return new arrays only when every constraint holds exactly (report["status"] == "SUCCESS");
+snap, project and extract_quad_mesh return new arrays only when they succeed (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
 The tracing functions do not raise for a map they cannot read or trace: their dict has a "status" other than
 "SUCCESS". Arguments refused before anything is computed (a file that cannot be read or written, index arrays
@@ -27,7 +28,8 @@ import numpy as np
 from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
-           "motorcycle_graph", "trace_isoline", "DIRECTIONS", "SnapError", "InputError", "__version__"]
+           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "DIRECTIONS", "SnapError", "InputError",
+           "__version__"]
 __version__ = _core.version
 
 #: An argument refused before anything is computed: an OBJ file that cannot be read (the message is the C++
@@ -38,7 +40,7 @@ InputError.__module__ = __name__
 
 
 class SnapError(RuntimeError):
-    """A snap or projection that did not succeed; `report` holds the status and the message."""
+    """A snap, projection or quad extraction that did not succeed; `report` holds the status and the message."""
 
     def __init__(self, report):
         super().__init__("%s: %s" % (report["status"], report["message"]))
@@ -250,3 +252,30 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_fac
     if d["status"] == "SUCCESS":
         _exact_polyline(d)
     return d
+
+
+def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_failure=True):
+    """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
+    snap(..., integer_grid_map=True)): its vertices are the integer points of the map (UV times `grid_scale`, a
+    power of 2), its edges the unit segments of the integer isolines, its faces the unit cells, all decided exactly.
+
+    Returns (QV, QF, report): QV #QV x 3 float (3D positions, barycentric, rounded), QF #QF x 4 int (counter-clockwise
+    in UV, consistently oriented), and the report: the C++ Quad_mesh_report as a dict ("status", "message", "quads",
+    "quad_vertices", "irregular_vertices", "cones", "euler_characteristic", "boundary_loops", "valence_histogram",
+    "incomplete_cells", "covers_map", "uv_area" (exact, "p/q"), "fold_overs", "zero_area_faces", times ...) plus the
+    origins of the quad vertices and faces as arrays:
+      "QV_location": 0 at a vertex of (V, F), 1 inside an edge, 2 inside a face;
+      "QV_face": the row of F in whose UV chart "QV_uv" is given; "QV_uv": #QV x 2 int, the integer UV in grid units
+              (the UV is QV_uv / grid_scale, exactly); "QV_vertex": the row of V at location 0, else -1;
+      "QF_faces": per quad, the rows of F it covers.
+    Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
+    integer-grid map, a cone of valence 1, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
+    zero-area UV triangles, listed in report["fold_overs"] and report["zero_area_faces"]), "RANGE_EXCEEDED".
+    Cells cut by a border that is not on an integer isoline are left out: report["incomplete_cells"].
+    """
+    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), bool(weld), float(grid_scale))
+    report = json.loads(text)
+    report.update(origins)
+    if report["status"] != "SUCCESS" and raise_on_failure:
+        raise SnapError(report)
+    return QV, QF, report

@@ -1,12 +1,13 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
 // project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...),
-// read_obj(filename, weld), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h).
+// read_obj(filename, weld), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text. Arguments refused
 // before any computation raise InputError (a ValueError), registered here for the Python side too.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
+#include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 
@@ -342,6 +343,63 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
   return d;
 }
 
+// The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
+py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
+                            double grid_scale)
+{
+  SS::internal::Matrix_mesh_with_uv m;
+  SS::Quad_mesh_report r;
+  py::dict origins;
+  {
+    py::gil_scoped_release release;
+    r.status = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, r.message);
+  }
+  if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json(), origins);
+  Mesh q;
+  auto origin = q.add_property_map<Mesh::Vertex_index, SS::Quad_vertex_origin<Mesh> >("v:origin").first;
+  auto covered = q.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
+  {
+    py::gil_scoped_release release;
+    r = SS::extract_quad_mesh(m.mesh, m.uv, q, SS::parameters::grid_scale(grid_scale),
+                              SS::parameters::vertex_origin_map(origin).face_origin_map(covered));
+  }
+  if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json(), origins);
+  const Row_maps rows(m, F);
+  const py::ssize_t nv = py::ssize_t(q.number_of_vertices()), nf = py::ssize_t(q.number_of_faces());
+  py::array_t<double> QV({nv, py::ssize_t(3)});
+  py::array_t<long long> QF({nf, py::ssize_t(4)}), location(nv), face(nv), vertex(nv), uv({nv, py::ssize_t(2)});
+  auto qv = QV.mutable_unchecked<2>();
+  auto qf = QF.mutable_unchecked<2>();
+  auto lo = location.mutable_unchecked<1>();
+  auto fa = face.mutable_unchecked<1>();
+  auto va = vertex.mutable_unchecked<1>();
+  auto ua = uv.mutable_unchecked<2>();
+  for(Mesh::Vertex_index v : q.vertices()) {
+    const py::ssize_t i = py::ssize_t(v);
+    for(int c = 0; c < 3; ++c) qv(i, c) = q.point(v)[c];
+    const SS::Quad_vertex_origin<Mesh>& o = origin[v];
+    lo(i) = int(o.location);
+    fa(i) = rows.face_row[std::size_t(o.face)];
+    va(i) = o.location == SS::Quad_vertex_origin<Mesh>::VERTEX ? rows.vertex_row[std::size_t(m.mesh.target(o.halfedge))] : -1;
+    ua(i, 0) = o.u;
+    ua(i, 1) = o.v;
+  }
+  py::list faces;
+  for(Mesh::Face_index f : q.faces()) {
+    int k = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(q.halfedge(f), q)) qf(py::ssize_t(f), k++) = (long long)(v);
+    std::vector<long long> c;
+    for(Mesh::Face_index g : covered[f]) c.push_back(rows.face_row[std::size_t(g)]);
+    faces.append(py::array_t<long long>(py::ssize_t(c.size()), c.data()));
+  }
+  origins["QV_location"] = location;
+  origins["QV_face"] = face;
+  origins["QV_vertex"] = vertex;
+  origins["QV_uv"] = uv;
+  origins["QF_faces"] = faces;
+  return py::make_tuple(QV, QF, r.to_json(), origins);
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m)
@@ -364,5 +422,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
   m.def("trace_isoline", &trace_isoline, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("face"),
         py::arg("corner"), py::arg("direction"), py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
+  m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
+        py::arg("grid_scale"));
   m.attr("version") = "0.1.0";
 }

@@ -553,3 +553,82 @@ def test_trace_isoline_refuses_unknown_directions():
         ss.trace_isoline(V, F, UV2, FUV2, 0.5, 0, "+u")
     with pytest.raises(ss.InputError, match="corner 3 is not 0, 1 or 2"):
         ss.trace_isoline(V, F, UV2, FUV2, 0, 3, "+u")
+
+
+# ---- quad meshes ----
+
+def check_quad_mesh(V, F, UV, FUV, QV, QF, report, grid_scale=1.0, closed=True):
+    """The quad mesh against the map, here in Fractions: every quad vertex's integer UV maps back exactly into the
+    closed UV triangle of its face (onto the corner of its vertex at location 0), every edge of a closed mesh is in
+    exactly two quads, V - E + F is the map's, and there are as many quads as the map's exact UV area."""
+    assert report["status"] == "SUCCESS" and QF.shape[1] == 4 and QV.shape == (len(report["QV_face"]), 3)
+    S = Fraction(grid_scale)
+    area = Fraction(0)
+    for f in range(len(F)):
+        a, b, c = (tuple(Fraction(x) for x in UV[FUV[f][k]]) for k in range(3))
+        area += ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2
+    assert report["uv_area"] == str(area * S * S) and len(QF) == area * S * S
+    for i in range(len(QV)):
+        f = report["QV_face"][i]
+        p = tuple(Fraction(int(x)) / S for x in report["QV_uv"][i])
+        t = [tuple(Fraction(x) for x in UV[FUV[f][k]]) for k in range(3)]
+        sides = [(t[(k + 1) % 3][0] - t[k][0]) * (p[1] - t[k][1]) - (t[(k + 1) % 3][1] - t[k][1]) * (p[0] - t[k][0])
+                 for k in range(3)]
+        assert all(s >= 0 for s in sides)
+        location = report["QV_location"][i]
+        assert (location == 0) == (sides.count(0) == 2) and (location == 2) == (sides.count(0) == 0)
+        if location == 0:
+            k = [F[f][k] for k in range(3) if t[k] == p]
+            assert len(k) == 1 and np.array_equal(V[k[0]], V[report["QV_vertex"][i]]) and np.array_equal(QV[i], V[k[0]])
+    edges = {}
+    for q in QF:
+        for k in range(4):
+            e = (min(q[k], q[(k + 1) % 4]), max(q[k], q[(k + 1) % 4]))
+            edges[e] = edges.get(e, 0) + 1
+    assert all(n == 2 for n in edges.values()) == closed and all(n <= 2 for n in edges.values())
+    assert len(QV) - len(edges) + len(QF) == report["euler_characteristic"] == report["input_euler_characteristic"]
+    assert report["irregular_vertices"] == report["cones"] and report["covers_map"]
+    assert all(len(c) > 0 for c in report["QF_faces"])
+
+
+def test_extract_quad_mesh_generated():
+    V, F, UV, FUV = flat_torus(n=4)                       # exact as generated
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
+    check_quad_mesh(V, F, UV, FUV, QV, QF, r)
+    assert len(QF) == 16 and r["euler_characteristic"] == 0 and r["irregular_vertices"] == 0
+    QV2, QF2, r2 = ss.extract_quad_mesh(V, F, UV / 4, FUV, grid_scale=4.0)    # scale covariance, bit for bit
+    assert np.array_equal(QV2, QV) and np.array_equal(QF2, QF) and np.array_equal(r2["QV_uv"], r["QV_uv"])
+    # the cut grid snapped to an integer-grid map: its border lies on integer isolines, so every cell is complete
+    Vc, Fc, UVc, FUVc = cut_grid(n=8, noise=1e-9, size=8.0, t=(3.0, 1.0))
+    UV2, FUV2, _ = ss.snap(Vc, Fc, UVc, FUVc, integer_grid_map=True)
+    QV, QF, r = ss.extract_quad_mesh(Vc, Fc, UV2, FUV2, grid_scale=2.0)
+    check_quad_mesh(Vc, Fc, UV2, FUV2, QV, QF, r, grid_scale=2.0, closed=False)
+    assert len(QF) == 256 and r["boundary_loops"] == 1
+
+
+def test_extract_quad_mesh_refusals():
+    V, F, UV, FUV = flat_torus(n=4, noise=1e-10)          # not exactly seamless
+    with pytest.raises(ss.SnapError) as e:
+        ss.extract_quad_mesh(V, F, UV, FUV)
+    assert e.value.report["status"] == "INVALID_INPUT" and "integer-grid map" in e.value.report["message"]
+    V, F, UV, FUV = flat_torus(n=4)
+    UV = UV.copy()
+    UV[FUV[F == 5]] = [3.0, 1.0]                           # vertex (1, 1) moved to (3, 1): fold-overs, still an IGM
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV, raise_on_failure=False)
+    assert QV is None and QF is None and r["status"] == "FOLD_OVERS" and len(r["fold_overs"]) > 0
+    assert "fold-overs" in r["message"]
+
+
+@pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
+                                       ("directional/spherer-param.obj", True)])
+def test_extract_quad_mesh_shared_data(name, weld):
+    path = os.path.join(SHARED, name)
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = read_obj(path)
+    UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld, integer_grid_map=True)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
+    # welded: the rows of V with one position are one vertex; compare positions, not rows
+    check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
+    assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]

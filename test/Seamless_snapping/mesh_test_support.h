@@ -21,7 +21,9 @@
 
 #include "test_arguments.h"
 
+#include <cassert>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstdint>
 #include <cstring>
@@ -134,6 +136,31 @@ static inline std::vector<vertex_descriptor> triangulated_grid(Mesh& m, int n, b
       else              { m.add_face(a, b, d); m.add_face(b, c, d); }
     }
   return vs;
+}
+
+// a flat n x n torus of unit squares (vertex (i, j), i, j mod n), corner UVs (i, j) unwrapped in each
+// face: the seams of the cut i = 0 and j = 0 translate by (period_u, 0) and (0, n)
+static inline void make_flat_torus(Mesh& m, UV_map& uv, int n, double period_u)
+{
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const double a = 2 * CGAL_PI * i / n, b = 2 * CGAL_PI * j / n;
+      vs.push_back(m.add_vertex(Point_3((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b))));
+    }
+  uv = uv_of(m);
+  auto V = [&](int i, int j) { return vs[(j % n) * n + (i % n)]; };
+  auto add = [&](int i0, int j0, int i1, int j1, int i2, int j2) {
+    const int I[3] = {i0, i1, i2}, J[3] = {j0, j1, j2};
+    const auto f = m.add_face(V(i0, j0), V(i1, j1), V(i2, j2));
+    assert(f != Mesh::null_face());
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      for(int c = 0; c < 3; ++c)
+        if(m.target(h) == V(I[c], J[c]))
+          put(uv, h, Point_2(I[c] == n ? period_u : double(I[c]), double(J[c])));
+  };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) { add(i, j, i + 1, j, i + 1, j + 1); add(i, j, i + 1, j + 1, i, j + 1); }
 }
 
 #endif // CGAL_SEAMLESS_SNAPPING_TEST_MESH_TEST_SUPPORT_H

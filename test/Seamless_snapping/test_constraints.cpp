@@ -32,10 +32,11 @@
 //                                                        corners): an exact IGM after; scaled by 0.3: INVALID_INPUT
 //                                                        with advice, map bit-identical
 //   quad valences                                       quad_valences() on the results: flat torus all 4, the
-//                                                        180-degree cone 2; on the data every exactly counted valence
-//                                                        is 0 mod 4 exactly away from the field cones, and
-//                                                        sum(4 - valence) = 4 chi + 4 F- (signed Gauss-Bonnet) where
-//                                                        nothing is rounded; a map that is not exactly seamless is
+//                                                        180-degree cone 2; on the fold-free data every interior
+//                                                        valence is 0 mod 4 exactly away from the field cones, and
+//                                                        sum(4 - valence) = 4 chi (Gauss-Bonnet) on closed maps;
+//                                                        with fold-overs left FOLD_OVERS listing exactly the flipped
+//                                                        and zero-area faces; a map that is not exactly seamless is
 //                                                        INVALID_INPUT
 //   pinned corners: torus, data                          pinned_corner_map, default and integer-grid mode: pinned
 //                                                        corners stay bit-identical, the result is exactly seamless
@@ -472,31 +473,6 @@ static void test_invalid()
 // integer-grid maps (integer_grid_map(true), is_exact_integer_grid_map())
 // ---------------------------------------------------------------------------------------------
 
-// a flat n x n torus of unit squares (vertex (i, j), i, j mod n), corner UVs (i, j) unwrapped in each
-// face: the seams of the cut i = 0 and j = 0 translate by (period_u, 0) and (0, n)
-static void make_flat_torus(Mesh& m, UV_map& uv, int n, double period_u)
-{
-  std::vector<vertex_descriptor> vs;
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const double a = 2 * CGAL_PI * i / n, b = 2 * CGAL_PI * j / n;
-      vs.push_back(m.add_vertex(Point_3((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b))));
-    }
-  uv = uv_of(m);
-  auto V = [&](int i, int j) { return vs[(j % n) * n + (i % n)]; };
-  auto add = [&](int i0, int j0, int i1, int j1, int i2, int j2) {
-    const int I[3] = {i0, i1, i2}, J[3] = {j0, j1, j2};
-    const auto f = m.add_face(V(i0, j0), V(i1, j1), V(i2, j2));
-    assert(f != Mesh::null_face());
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
-      for(int c = 0; c < 3; ++c)
-        if(m.target(h) == V(I[c], J[c]))
-          put(uv, h, Point_2(I[c] == n ? period_u : double(I[c]), double(J[c])));
-  };
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) { add(i, j, i + 1, j, i + 1, j + 1); add(i, j, i + 1, j + 1, i, j + 1); }
-}
-
 // a fan of 4 triangles around an interior vertex c, spanning 180 degrees in UV (a cone with k = 2
 // across the cut edge c-w0), apex at `apex`; the translation of the cut is (2 apex_u, 2 apex_v)
 static void make_half_turn_cone(Mesh& m, UV_map& uv, double apex_u, double apex_v)
@@ -536,7 +512,7 @@ static void test_integer_grid_analytic()
     assert(r.integer_translations_after == r.cut_edges && r.cut_edges > 0);
     assert(r.max_change > 0 && r.max_change < 1e-10);
     const SS::Quad_valences qv = SS::quad_valences(m, uv);   // a flat torus: every vertex regular
-    assert(qv.status == SS::SUCCESS && qv.valence == std::vector<int>(9, 4) && qv.approximate.empty() && qv.border.empty());
+    assert(qv.status == SS::SUCCESS && qv.valence == std::vector<int>(9, 4) && qv.border.empty());
     // the same map at grid scale 4 (UVs / 4): grid_scale(4) gives the result / 4, bit for bit
     Mesh q; UV_map uvq;
     make_flat_torus(q, uvq, 3, 3.0000000001);
@@ -588,44 +564,40 @@ static void test_integer_grid_analytic()
     assert(SS::is_exact_integer_grid_map(m, uv));
     for(halfedge_descriptor h : m.halfedges())
       if(!m.is_border(h) && m.target(h) == vertex_descriptor(0)) assert(get(uv, h) == Point_2(1, 0));
-    const SS::Quad_valences q = SS::quad_valences(m, uv);   // the 180-degree cone: valence 2 (border vertices rounded)
-    assert(q.status == SS::SUCCESS && q.valence[0] == 2 && q.approximate.empty() && q.border.size() == 4);
+    const SS::Quad_valences q = SS::quad_valences(m, uv);   // the 180-degree cone: valence 2
+    assert(q.status == SS::SUCCESS && q.valence[0] == 2 && q.border.size() == 4);
     std::cout << "integer grid: near-integer cone pinned: OK\n";
   }
 }
 
-// quad_valences() of a snapped integer-grid map: every valence counted exactly (interior, no 180-degree corner)
-// is congruent mod 4 to the field's class (a multiple of 4 exactly away from the field cones), and on a closed
-// mesh without rounded valences Gauss-Bonnet holds exactly with signed angles: sum (4 - valence) = 4 chi + 4 F-
+// quad_valences() of a snapped integer-grid map. With fold-overs or zero-area triangles left: refused
+// (FOLD_OVERS), listing exactly the faces the snap report counts. Fold-free: every interior valence is
+// 0 mod 4 exactly away from the field cones, and on a closed map Gauss-Bonnet holds exactly:
+// sum over the interior vertices of (4 - valence) = 4 chi.
 static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report& r, const char* what)
 {
   const SS::Quad_valences q = SS::quad_valences(m, uv);
+  if(r.flips_after_repair + r.degenerate_after_repair > 0) {
+    assert(q.status == SS::FOLD_OVERS && q.valence.empty());
+    assert(q.fold_overs.size() == r.flips_after_repair && q.zero_area_faces.size() == r.degenerate_after_repair);
+    std::printf("quad valences: %-44s FOLD_OVERS: %s\n", what, q.message.c_str());
+    return;
+  }
   assert(q.status == SS::SUCCESS && q.valence.size() == m.number_of_vertices());
-  std::vector<char> rounded(q.valence.size(), 0);
-  for(std::size_t v : q.approximate) rounded[v] = 1;
-  for(std::size_t v : q.border) rounded[v] = 1;
-  std::size_t off_class = 0, exact = 0;
+  std::vector<char> border(q.valence.size(), 0);
+  for(std::size_t v : q.border) border[v] = 1;
+  std::size_t off_class = 0;
   long sum = 0;
   for(std::size_t v = 0; v < q.valence.size(); ++v) {
+    if(border[v]) continue;
     sum += 4 - q.valence[v];
-    if(rounded[v]) continue;
-    ++exact;
     off_class += ((q.valence[v] % 4) + 4) % 4 != 0 ? 1 : 0;
   }
-  std::size_t negative = 0;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  for(Mesh::Face_index fi : m.faces()) {
-    const halfedge_descriptor h = m.halfedge(fi);
-    if(CGAL::orientation(P(get(uv, h).x(), get(uv, h).y()), P(get(uv, m.next(h)).x(), get(uv, m.next(h)).y()),
-                         P(get(uv, m.prev(h)).x(), get(uv, m.prev(h)).y())) == CGAL::NEGATIVE) ++negative;
-  }
   const long chi = long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
-  std::printf("quad valences: %-44s %zu exact, %zu rounded, %zu border; %zu not = 0 mod 4 (field cones %zu); "
-              "sum(4 - valence) %ld, 4 chi + 4 F- = %ld\n", what, exact, q.approximate.size(), q.border.size(), off_class,
-              r.field_cones, sum, 4 * chi + 4 * long(negative));
-  if(q.approximate.empty()) assert(off_class == r.field_cones);
-  else assert(off_class <= r.field_cones);
-  if(q.approximate.empty() && q.border.empty()) assert(sum == 4 * chi + 4 * long(negative));
+  std::printf("quad valences: %-44s %zu border; %zu not = 0 mod 4 (field cones %zu); sum(4 - valence) %ld, 4 chi = %ld\n",
+              what, q.border.size(), off_class, r.field_cones, sum, 4 * chi);
+  assert(off_class == r.field_cones);
+  if(q.border.empty()) assert(sum == 4 * chi);
 }
 
 // every near-IGM file of the shared data: SUCCESS, exact IGM (checked independently), small change, no new flips

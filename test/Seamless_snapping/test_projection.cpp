@@ -820,7 +820,7 @@ void test_status_names()
 {
   std::cout << "== 6. status names" << std::endl;
   const SS::Status all[] = { SS::SUCCESS, SS::INVALID_INPUT, SS::INFEASIBLE, SS::RANGE_EXCEEDED, SS::SAFE_DOT_FAILED,
-                             SS::NOT_QUARTER_TURN_SEAMLESS, SS::EXACTNESS_CHECK_FAILED };
+                             SS::NOT_QUARTER_TURN_SEAMLESS, SS::EXACTNESS_CHECK_FAILED, SS::FOLD_OVERS };
   std::set<std::string> names;
   for(SS::Status st : all) {
     const char* name = SS::status_name(st);
@@ -829,7 +829,7 @@ void test_status_names()
     names.insert(name);
   }
   assert(names.size() == sizeof(all) / sizeof(all[0]));
-  assert(int(SS::EXACTNESS_CHECK_FAILED) + 1 == int(sizeof(all) / sizeof(all[0])));   // the list above is complete
+  assert(int(SS::FOLD_OVERS) + 1 == int(sizeof(all) / sizeof(all[0])));   // the list above is complete
   std::cout << names.size() << " statuses, distinct non-null names" << std::endl;
 }
 

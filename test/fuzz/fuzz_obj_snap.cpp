@@ -13,12 +13,17 @@
 //  - a failed read leaves the (empty) mesh empty;
 //  - a successful read gives a mesh with faces;
 //  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
-//  - on any other status, every halfedge UV is bit-identical to what was read.
+//  - on any other status, every halfedge UV is bit-identical to what was read;
+//  - the map as read, snapped with integer_grid_map(true): on SUCCESS, extract_quad_mesh() either gives a valid
+//    polygon mesh of quads (as many as the exact UV area when no cell was dropped) or refuses with the output
+//    mesh left empty.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
 // The bit-for-bit check compares the UVs after a refused snap with those read in the same run: machine independent.
 
 #include "../Seamless_snapping/mesh_test_support.h"
 
+#include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -47,11 +52,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   FUZZ_REQUIRE(m.number_of_faces() > 0, "a mesh that reads has faces");
 
+  Mesh grid = m;                                   // the map as read, for the integer-grid snap below
   const std::vector<std::uint64_t> before = uv_bits(m, uv);
   const SS::Snap_report report = SS::snap_seamless_parameterization(m, uv);
   if(report.status == SS::SUCCESS)
     FUZZ_REQUIRE(SS::is_exactly_seamless(m, uv), "SUCCESS means exactly seamless");
   else
     FUZZ_REQUIRE(uv_bits(m, uv) == before, "the UV map is untouched on failure");
+
+  UV_map guv = uv_of(grid);
+  if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true)).status != SS::SUCCESS) return 0;
+  Mesh quads;
+  const SS::Quad_mesh_report q = SS::extract_quad_mesh(grid, guv, quads);
+  if(q.status == SS::SUCCESS) {
+    FUZZ_REQUIRE(CGAL::is_valid_polygon_mesh(quads) && CGAL::is_quad_mesh(quads) && q.quads == quads.number_of_faces(),
+                 "a quad mesh of quads");
+    FUZZ_REQUIRE(!q.covers_map() || CGAL::Gmpq(double(q.quads)) == q.uv_area, "as many quads as the UV area");
+  } else {
+    FUZZ_REQUIRE(quads.number_of_vertices() == 0 && quads.number_of_faces() == 0, "nothing written on failure");
+  }
   return 0;
 }

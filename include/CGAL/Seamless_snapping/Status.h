@@ -26,7 +26,8 @@ enum Status
   RANGE_EXCEEDED,           ///< a value (implied variable, lcm-rounded free variable, right-hand side) leaves the fixed-point range (-delta, delta) (Sec. 4.3, Sec. 7)
   SAFE_DOT_FAILED,          ///< the safe dot product (Alg. 5) could not proceed without leaving (-delta, delta)
   NOT_QUARTER_TURN_SEAMLESS,///< a transition of the input is not a rotation by a multiple of 90 degrees (e.g. 120 degree orbifolds)
-  EXACTNESS_CHECK_FAILED    ///< the final exact check found a violated constraint (an internal error; reported, never hidden)
+  EXACTNESS_CHECK_FAILED,   ///< the final exact check found a violated constraint (an internal error; reported, never hidden)
+  FOLD_OVERS                ///< the UV map has fold-overs (negatively oriented UV triangles) or zero-area UV triangles, listed in the result: it is not locally injective, as quad extraction needs (`extract_quad_mesh()`, `quad_valences()`)
 };
 
 /// returns a short, distinct, human-readable name of `s`.
@@ -40,6 +41,7 @@ inline const char* status_name(Status s)
     case SAFE_DOT_FAILED:           return "SAFE_DOT_FAILED";
     case NOT_QUARTER_TURN_SEAMLESS: return "NOT_QUARTER_TURN_SEAMLESS";
     case EXACTNESS_CHECK_FAILED:    return "EXACTNESS_CHECK_FAILED";
+    case FOLD_OVERS:                return "FOLD_OVERS";
   }
   return "UNKNOWN_STATUS";
 }

@@ -13,6 +13,7 @@
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
 
 #include <cstddef>
@@ -29,32 +30,32 @@ namespace Seamless_snapping {
  */
 struct Quad_valences
 {
-  Status status = SUCCESS;                 ///< `SUCCESS`, or `INVALID_INPUT` (see `message`)
+  Status status = SUCCESS;                 ///< `SUCCESS`, `INVALID_INPUT` or `FOLD_OVERS` (see `message`)
   std::string message;                     ///< why the valences could not be computed
-  std::vector<int> valence;                ///< per vertex, in the order of `vertices(tm)`: the signed UV angle sum in quarter turns
-  std::vector<std::size_t> approximate;    ///< interior vertices whose valence is the rounded floating-point angle sum (a corner of +-180 degrees or a zero-length edge)
-  std::vector<std::size_t> border;         ///< border vertices: rounded floating-point angle sum as well (quad extractors ignore it)
+  std::vector<int> valence;                ///< per vertex, in the order of `vertices(tm)`: the number of integer-grid directions leaving it (see `quad_valences()`)
+  std::vector<std::size_t> border;         ///< border vertices (their valence counts the directions of their closed fan)
+  std::vector<std::size_t> fold_overs;     ///< `FOLD_OVERS`: the faces (ranks in `faces(tm)`) whose UV triangle is negatively oriented
+  std::vector<std::size_t> zero_area_faces;///< `FOLD_OVERS`: the faces whose UV triangle has zero area
 };
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
  *
- * computes the quad valence of every vertex of an exactly seamless per-corner UV map: its signed UV angle sum in
- * quarter turns (4 at a regular vertex, 3 and 5 at cones of -90 and +90 degrees), the number of integer-grid
- * edges that leave the vertex in an integer-grid map. Quad extractors guess it from floating-point angle sums,
- * which fold-overs and degenerate triangles make ambiguous; libQEx reads it from a VVAL file
- * (`IO::write_VVAL()`).
+ * computes the quad valence of every vertex of an exactly seamless, fold-free per-corner UV map: the number of
+ * integer-grid directions (the axis directions of its charts) that leave the vertex into the surface. It is the
+ * valence of the vertex in the quad mesh of an integer-grid map (`extract_quad_mesh()`) wherever the vertex is an
+ * integer point: at an interior vertex its UV angle sum in quarter turns (4 at a regular vertex, 3 and 5 at cones
+ * of -90 and +90 degrees), at a border vertex the axis directions in its closed fan (3 on a straight border along
+ * an isoline, 2 at a convex right-angle corner). Quad extractors that guess it from floating-point angle sums can be
+ * told it instead; libQEx reads it from a VVAL file (`IO::write_VVAL()`).
  *
  * It is computed with exact sign tests only: per corner, the signed number of quadrant boundaries that the
  * corner's angle sweeps (the quadrants of the two edge vectors from exact comparisons, the sense of the turn from
- * the exact orientation predicate); around an interior vertex of an exactly seamless map these counts add up to
- * the angle sum divided by 90 degrees, exactly, fold-overs (negative corners) included. Where a corner has an
- * angle of 180 degrees (a zero-area triangle whose vertex lies between the two others) or a zero-length edge, the
- * count is undetermined: the vertex gets the floating-point angle sum rounded to quarter turns and is listed in
- * `Quad_valences::approximate`; border vertices get that rounding too. Fold-overs count with their sign: each
- * negatively oriented triangle winds its three corners back by 360 degrees in all (on a closed mesh without
- * degenerate triangles, the sum of `4 - valence` is `4 chi + 4 F-`, with `F-` the flipped triangles), so a vertex
- * next to fold-overs may get a valence of 0 or less; its class mod 4 is still that of the seam rotations around it.
+ * the exact orientation predicate); around a vertex of an exactly seamless map these counts telescope, exactly.
+ *
+ * Maps with fold-overs or zero-area UV triangles are refused (`FOLD_OVERS`, the faces listed): there the angle sum
+ * is a signed winding number (each flipped triangle winds its corners back by 360 degrees in all), which no quad
+ * mesh has, and a quad extractor that trusts it leaves holes. `extract_quad_mesh()` refuses the same maps.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
  * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
@@ -64,9 +65,10 @@ struct Quad_valences
  * \param uv the corner UV map: `get(uv, h)` is the UV of the corner (`target(h)`, `face(h)`)
  *
  * \return the valences; `INVALID_INPUT` (nothing computed) if the map is not exactly seamless
- *         (`is_exactly_seamless()`), is empty, has a face that is not a triangle or a non-finite UV.
+ *         (`is_exactly_seamless()`), is empty, has a face that is not a triangle or a non-finite UV; `FOLD_OVERS`
+ *         (nothing computed) if a UV triangle is negatively oriented or has zero area.
  *
- * \sa `snap_seamless_parameterization()` with `integer_grid_map(true)`, `IO::write_VVAL()`
+ * \sa `snap_seamless_parameterization()` with `integer_grid_map(true)`, `extract_quad_mesh()`, `IO::write_VVAL()`
  */
 template <class TriangleMesh, class HalfedgeUVMap>
 Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
@@ -82,9 +84,17 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
                 "(snap_seamless_parameterization())";
     return r;
   }
+  const internal::Fold_overs folds = internal::find_fold_overs(cm);
+  if(!folds.empty()) {
+    r.status = FOLD_OVERS;
+    r.message = "the map has " + folds.describe() + ": no quad mesh has the signed angle sums next to them; make the map "
+                "fold-free first";
+    r.fold_overs.assign(folds.negative.begin(), folds.negative.end());
+    r.zero_area_faces.assign(folds.degenerate.begin(), folds.degenerate.end());
+    return r;
+  }
   const internal::Quad_valence_result q = internal::quad_valences(cm);
   r.valence = q.valence;
-  r.approximate.assign(q.approximate.begin(), q.approximate.end());
   r.border.assign(q.border.begin(), q.border.end());
   return r;
 }

@@ -35,6 +35,8 @@ enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per
 enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of that corner is kept bit-identical
 enum untangle_t          { untangle };          // bool: remove fold-overs inside the constraint space (default: integer_grid_map)
 enum max_untangle_change_t{ max_untangle_change };// double, grid cells: largest UV move the untangling may make (default: any)
+enum vertex_origin_map_t { vertex_origin_map }; // quad mesh vertex -> Quad_vertex_origin: where it lies on the map (extract_quad_mesh)
+enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector of the map's faces it covers (extract_quad_mesh)
 } // namespace snap_np
 
 // The package's own named parameters, as an X-macro list (like CGAL's parameters_interface.h):
@@ -56,7 +58,9 @@ enum max_untangle_change_t{ max_untangle_change };// double, grid cells: largest
   SS_NP(vt_per_corner_t,           vt_per_corner)            \
   SS_NP(pinned_corner_map_t,       pinned_corner_map)        \
   SS_NP(untangle_t,                untangle)                 \
-  SS_NP(max_untangle_change_t,     max_untangle_change)
+  SS_NP(max_untangle_change_t,     max_untangle_change)      \
+  SS_NP(vertex_origin_map_t,       vertex_origin_map)        \
+  SS_NP(face_origin_map_t,         face_origin_map)
 
 namespace parameters {
 

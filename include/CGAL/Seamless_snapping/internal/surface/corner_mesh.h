@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -182,6 +183,20 @@ inline int natural_uv_exponent(const Corner_mesh& cm)
 inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const int* forced_exponent = nullptr)
 {
   const int e = forced_exponent != nullptr ? *forced_exponent : natural_uv_exponent(cm);
+  if(e == 0) { cm.uv_exponent = 0; return SUCCESS; }   // nothing to scale
+  // when every scaled nonzero |UV| stays a normal double, the scaling is one exact product each
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h))
+      for(double x : {std::fabs(cm.u[h]), std::fabs(cm.v[h])}) { hi = (std::max)(hi, x); if(x > 0) lo = (std::min)(lo, x); }
+  if(e > -1000 && e < 1000 && std::ldexp(hi, -e) < 0x1p1020 && (lo == std::numeric_limits<double>::infinity() ||
+                                                                std::ldexp(lo, -e) >= 0x1p-1020)) {
+    const double f = std::ldexp(1., -e);
+    for(int h = 0; h < cm.n_halfedges; ++h)
+      if(!cm.is_border_halfedge(h)) { cm.u[h] *= f; cm.v[h] *= f; }
+    cm.uv_exponent = e;
+    return SUCCESS;
+  }
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const double n[2] = {std::ldexp(cm.u[h], -e), std::ldexp(cm.v[h], -e)};

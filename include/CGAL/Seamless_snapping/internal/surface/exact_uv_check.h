@@ -63,48 +63,84 @@ inline double max_abs_residual(const Constraint_rows& rows, const std::vector<do
   return m.to_double();
 }
 
+// The exact sum a + b of two doubles as the pair (s, e), s = fl(a + b), e = a + b - s (Knuth's TwoSum: an
+// error-free transformation in round-to-nearest without overflow). The pair is a function of the exact sum,
+// and determines it: two exact sums are equal iff their pairs are.
+inline void two_sum(double a, double b, double& s, double& e)
+{
+  s = a + b;
+  const double bb = s - a;
+  e = (a - (s - bb)) + (b - bb);
+}
+
+// true iff x - y == z - w exactly (the differences of doubles need not be doubles): x + w == z + y, compared as
+// TwoSum pairs; with a value beyond 2^1000 (where a sum might overflow) in rational arithmetic instead.
+inline bool same_difference(double x, double y, double z, double w)
+{
+  const double big = 0x1p1000;
+  if(!(std::fabs(x) < big && std::fabs(y) < big && std::fabs(z) < big && std::fabs(w) < big))
+    return CGAL::Gmpq(x) - CGAL::Gmpq(y) == CGAL::Gmpq(z) - CGAL::Gmpq(w);
+  double s1, e1, s2, e2;
+  two_sum(x, w, s1, e1);
+  two_sum(z, y, s2, e2);
+  return s1 == s2 && e1 == e2;
+}
+
 // true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).
 inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
 {
   const int o = cm.opp[h];
   const int ph = cm.prev[h], po = cm.prev[o];
-  // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o)
-  const CGAL::Gmpq di[2] = { CGAL::Gmpq(cm.u[h]) - CGAL::Gmpq(cm.u[ph]), CGAL::Gmpq(cm.v[h]) - CGAL::Gmpq(cm.v[ph]) };
-  const CGAL::Gmpq dj[2] = { CGAL::Gmpq(cm.u[po]) - CGAL::Gmpq(cm.u[o]), CGAL::Gmpq(cm.v[po]) - CGAL::Gmpq(cm.v[o]) };
+  // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o); (R^k d_i)_c = sign_c (d_i)_col_c
   const Quarter_turn R(k);
   for(int c = 0; c < 2; ++c) {
-    const CGAL::Gmpq rc = R.sign[c] > 0 ? di[R.col[c]] : CGAL::Gmpq(-di[R.col[c]]);
-    if(rc != dj[c]) return false;
+    const std::vector<double>& in = R.col[c] == 0 ? cm.u : cm.v;
+    const std::vector<double>& out = c == 0 ? cm.u : cm.v;
+    const bool same = R.sign[c] > 0 ? same_difference(in[h], in[ph], out[po], out[o])
+                                    : same_difference(in[ph], in[h], out[po], out[o]);
+    if(!same) return false;
   }
   return true;
 }
 
 // The exact test behind is_exactly_seamless().
 // `seam_override[e]`: as in compute_seam_topology(); `given_k[e]`: k of halfedge(e) or empty (any k);
-// `aligned[e]`: edges that must be axis-parallel in UV, or empty.
+// `aligned[e]`: edges that must be axis-parallel in UV, or empty. With `why`, a failure names the
+// first edge that fails and how.
 inline bool is_exactly_seamless_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
-                                     const std::vector<int>& given_k, const std::vector<char>& aligned)
+                                     const std::vector<int>& given_k, const std::vector<char>& aligned,
+                                     std::string* why = nullptr)
 {
+  auto fail = [&](int h, const std::string& what) {
+    if(why != nullptr) *why = "edge " + vertex_pair_name(cm, h) + " " + what;
+    return false;
+  };
   for(int e = 0; e < cm.n_edges; ++e) {
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       // doubles: the difference is zero iff the two coordinates are equal
-      if(cm.u[g] != cm.u[cm.prev[g]] && cm.v[g] != cm.v[cm.prev[g]]) return false;
+      if(cm.u[g] != cm.u[cm.prev[g]] && cm.v[g] != cm.v[cm.prev[g]])
+        return fail(h, "is constrained (edge_is_constrained_map) but not parallel to the u or v axis in UV");
     }
     if(cm.is_border_edge(e)) continue;
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
     if(!seam) {
-      if(!continuous) return false;    // declared continuous, but the UVs jump
+      if(!continuous) return fail(h, "is not a seam (seam_edge_map) but its two faces disagree on its UVs");
       continue;
     }
     if(!given_k.empty()) {
-      if(!exact_transition_holds(cm, h, given_k[e])) return false;
+      if(!exact_transition_holds(cm, h, given_k[e]))
+        return fail(h, "(a cut edge): the rotation by k = " + std::to_string(given_k[e]) + " quarter turns (rotation_map) "
+                       "does not map the UV edge vector of one face exactly onto the other's");
     } else {
       bool some = false;
       for(int k = 0; k < 4 && !some; ++k) some = exact_transition_holds(cm, h, k);
-      if(!some) return false;
+      if(!some)
+        return fail(h, "(a cut edge between faces " + std::to_string(cm.face[h]) + " and " + std::to_string(cm.face[o]) +
+                       "): no rotation by a multiple of 90 degrees maps the UV edge vector of one face exactly onto the "
+                       "other's: the map is not exactly seamless");
     }
   }
   return true;

@@ -83,6 +83,23 @@ inline void translation(const Corner_mesh& cm, const Seam_topology& st, const Cu
 
 inline bool is_integer(const CGAL::Gmpq& q) { return q.denominator() == 1; }
 
+// true iff (a + b) 2^s is an integer, exactly: the TwoSum pair (S, E) of a + b scaled by 2^s (exact when it
+// neither overflows nor loses bits to underflow) is the exact value S' + E'; with |S'| < 2^52 it is an integer
+// iff E' = 0 and S' is one (an integer of at most 2^53 is a double, which fl() returns as it is). Otherwise in
+// rational arithmetic.
+inline bool is_integer_sum(double a, double b, int s)
+{
+  if(std::fabs(a) < 0x1p1000 && std::fabs(b) < 0x1p1000) {
+    double S, E;
+    two_sum(a, b, S, E);
+    const double Ss = std::ldexp(S, s), Es = std::ldexp(E, s);
+    if(std::fabs(Ss) < 0x1p52 && std::ldexp(Ss, -s) == S && std::ldexp(Es, -s) == E)
+      return Es == 0 && Ss == std::floor(Ss);
+  }
+  const CGAL::Gmpq scale = s >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << s) : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -s);
+  return is_integer((CGAL::Gmpq(a) + CGAL::Gmpq(b)) * scale);
+}
+
 // true iff t of h at the given end is an integer vector, exactly
 inline bool exact_integer_translation(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, int h,
                                       bool front, const std::vector<double>& x)
@@ -193,8 +210,9 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     bool near = true;
     for(int c = 0; c < 2; ++c) {
       const double r = std::nearbyint(ta[c]);
-      near = near && std::fabs(r) < 0x1p52 && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
-      t[2 * h + c] = long(r);
+      const bool in_range = std::fabs(r) < 0x1p52;             // converted to long only then (else UB)
+      near = near && in_range && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
+      t[2 * h + c] = in_range ? long(r) : 0;
     }
     if(!near) {
       if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + point_name(ta[0], ta[1]);
@@ -326,22 +344,29 @@ inline bool grid_scale_exponent(double S, int& s)
 // - every interior vertex around which these k sum to K != 0 mod 4 (a cone of the field) has
 //   integer UVs in all its corners;
 // - every edge of `aligned` lies on an integer isoline (its constant coordinate is an integer).
+// With `why`, a failure says which edge or cone fails and how; with `edge_k`, on success, the k of
+// halfedge(e) of every cut edge e (0 for the other edges).
 inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
                                            const std::vector<int>& given_k, const std::vector<char>& aligned,
-                                           int scale_exponent)
+                                           int scale_exponent, std::string* why = nullptr,
+                                           std::vector<int>* edge_k = nullptr)
 {
-  if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned)) return false;
-  const CGAL::Gmpq scale = scale_exponent >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << scale_exponent)
-                                               : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -scale_exponent);
-  auto U = [&](int h, int c) { return CGAL::Gmpq(c == 0 ? cm.u[h] : cm.v[h]) * scale; };
-  std::vector<int> K(cm.n_vertices, 0);
+  if(!is_exactly_seamless_impl(cm, seam_override, given_k, aligned, why)) return false;
+  auto U = [&](int h, int c) { return c == 0 ? cm.u[h] : cm.v[h]; };   // the corner UVs; grid units: times 2^scale_exponent
+  auto fail = [&](const std::string& what) {
+    if(why != nullptr) *why = what + " (grid scale 2^" + std::to_string(scale_exponent) + "): not an integer-grid map";
+    return false;
+  };
+  std::vector<int> K(cm.n_vertices, 0), k_of(cm.n_edges, 0);
   for(int e = 0; e < cm.n_edges; ++e) {
     if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       const int c = cm.u[g] == cm.u[cm.prev[g]] ? 0 : 1;   // exactly axis-parallel (checked above)
-      if(!is_integer(U(g, c))) return false;
+      if(!is_integer_sum(U(g, c), 0, scale_exponent))
+        return fail("constrained edge " + vertex_pair_name(cm, h) + " lies on the isoline " + (c == 0 ? "u" : "v") +
+                    " = " + format_double(std::ldexp(U(g, c), scale_exponent), 17) + " in grid units, not an integer one");
     }
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
@@ -353,18 +378,25 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
       const Quarter_turn R(k);
       bool integral = true;      // t at source(h): U(o) - R^k U(prev h)
       for(int c = 0; c < 2 && integral; ++c)
-        integral = is_integer(U(o, c) - CGAL::Gmpq(double(R.sign[c])) * U(cm.prev[h], R.col[c]));
+        integral = is_integer_sum(U(o, c), -R.sign[c] * U(cm.prev[h], R.col[c]), scale_exponent);
       if(integral) found = k;
     }
-    if(found < 0) return false;
+    if(found < 0)
+      return fail("cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
+                  std::to_string(cm.face[o]) + "): its translation is not an integer vector");
+    k_of[e] = found;
     K[cm.source(h)] += found;
     K[cm.target[h]] -= found;   // k(opposite(h)) = -k, seen from the other end
   }
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h];
     if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || (K[v] % 4 + 4) % 4 == 0) continue;
-    if(!is_integer(U(h, 0)) || !is_integer(U(h, 1))) return false;
+    if(!is_integer_sum(U(h, 0), 0, scale_exponent) || !is_integer_sum(U(h, 1), 0, scale_exponent))
+      return fail("cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * ((K[v] % 4 + 4) % 4)) +
+                  " degrees) has the UV " + point_name(std::ldexp(U(h, 0), scale_exponent), std::ldexp(U(h, 1), scale_exponent)) +
+                  " in face " + std::to_string(cm.face[h]) + " in grid units, not an integer point");
   }
+  if(edge_k != nullptr) edge_k->swap(k_of);
   return true;
 }
 

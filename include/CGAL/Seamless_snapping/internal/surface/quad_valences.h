@@ -10,9 +10,10 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_QUAD_VALENCES_H
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_QUAD_VALENCES_H
 
-// The quad valence of every vertex of an exactly seamless map: its signed UV angle sum in quarter
-// turns (4 at a regular vertex, 3 or 5 at a +-90 degree cone), what a quad extractor needs to know
-// how many grid edges leave the vertex (libQEx's vertex valences, the VVAL file).
+// The quad valence of every vertex of an exactly seamless, fold-free map: the number of integer-grid
+// directions that leave it, i.e. the degree of its vertex in the quad mesh when it is an integer point
+// (extract_quad_mesh()): its UV angle sum in quarter turns at an interior vertex (4 at a regular vertex,
+// 3 or 5 at a +-90 degree cone), the axis directions in its closed fan at a border vertex.
 //
 // Exact, with sign tests only. The quadrant of a nonzero vector d is q(d) = floor(angle(d) / 90 deg),
 // i.e. [0, 90) -> 0, [90, 180) -> 1, ...: it needs the signs of d_x and d_y only, and d = b - c of two
@@ -23,23 +24,22 @@
 //   (q(b - v) - q(a - v)) mod 4  if phi > 0,    -((q(a - v) - q(b - v)) mod 4)  if phi < 0,
 //   0                             if the two directions coincide (a zero-area corner of angle 0).
 // It does not change when both vectors are rotated by a quarter turn, so each corner is evaluated in
-// its own face. Around an interior vertex of an exactly seamless map consecutive corners share their
-// edge direction after the transition (a rotation by k quarter turns, exact), so the counts telescope
-// in the unfolded 1-ring: their sum is floor((theta_0 + Theta) / 90) - floor(theta_0 / 90) for the
-// signed angle sum Theta, which is a multiple of 90 degrees: the sum is Theta / 90 exactly, fold-overs
-// (negative corners) included.
-// Not exact, and listed: a vertex with a corner of angle +-180 degrees (a zero-area triangle whose
-// vertex v lies between the other two) or with a zero-length edge (the direction is undefined): the
-// value is then the floating-point signed angle sum rounded to quarter turns. Border vertices get
-// that rounding too (their angle sum need not be a multiple of 90 degrees; libQEx ignores their
-// valence).
+// its own face. Around a vertex of an exactly seamless map consecutive corners share their edge
+// direction after the transition (a rotation by k quarter turns, exact), so the counts telescope in
+// the unfolded fan: from the direction theta_0 of its first edge, their sum is
+//   floor((theta_0 + Theta) / 90) - floor(theta_0 / 90)
+// for the angle sum Theta. At an interior vertex Theta is a multiple of 90 degrees: the sum is
+// Theta / 90, the axis directions in [theta_0, theta_0 + Theta). A border fan holds the axis directions
+// of the closed interval [theta_0, theta_0 + Theta): the sum, plus 1 when theta_0 is itself an axis
+// direction (its first edge is exactly axis-parallel). On a fold-free map (every corner of angle in
+// (0, 180) degrees) every count is determined; a corner of 180 degrees or a zero-length edge (only in a
+// zero-area triangle) leaves it undetermined, and fold-overs make the sum a signed winding number that
+// no quad mesh has (quad_valences() refuses such maps).
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -50,8 +50,7 @@ namespace internal {
 struct Quad_valence_result
 {
   std::vector<int> valence;          // per vertex (Corner_mesh numbering)
-  std::vector<int> approximate;      // interior vertices whose valence was rounded, not counted exactly
-  std::vector<int> border;           // border vertices (rounded as well)
+  std::vector<int> border;           // border vertices
 };
 
 // q(b - a): the quadrant of the vector from a to b (-1 if a == b)
@@ -90,28 +89,25 @@ inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossing
   return corner_quarter_crossings(q, pa, pb, crossings);
 }
 
-// Precondition: the corner UVs of `cm` form an exactly seamless map.
+// Precondition: the corner UVs of `cm` form an exactly seamless map without fold-overs and zero-area
+// triangles (find_fold_overs() is empty).
 inline Quad_valence_result quad_valences(const Corner_mesh& cm)
 {
   Quad_valence_result r;
   r.valence.assign(cm.n_vertices, 0);
-  std::vector<char> exact(cm.n_vertices, 1);
-  std::vector<double> angle_sum(cm.n_vertices, 0.);
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const int v = cm.target[h];
-    angle_sum[v] += corner_angle(cm, h);
     int c = 0;
-    if(corner_quarter_crossings(cm, h, c)) r.valence[v] += c;
-    else exact[v] = 0;
+    const bool determined = corner_quarter_crossings(cm, h, c);
+    CGAL_assertion(determined);
+    CGAL_USE(determined);
+    r.valence[v] += c;
+    const int a = cm.next[h];                        // v -> target(a): the first edge of a border fan
+    if(cm.is_border_halfedge(cm.opp[a]) && (cm.u[a] == cm.u[h] || cm.v[a] == cm.v[h])) ++r.valence[v];
   }
-  const double quarter = std::acos(-1.) / 2;
-  for(int v = 0; v < cm.n_vertices; ++v) {
+  for(int v = 0; v < cm.n_vertices; ++v)
     if(cm.vertex_on_border[v]) r.border.push_back(v);
-    else if(!exact[v]) r.approximate.push_back(v);
-    else continue;
-    r.valence[v] = int(std::lround(angle_sum[v] / quarter));
-  }
   return r;
 }
 

@@ -48,8 +48,10 @@ namespace internal {
 // relative UV length under which a cut edge counts as degenerate (its direction is not checked)
 constexpr double degenerate_cut_edge_length = 1e-6;
 
-// (x, y) -> R^k (x, y), R(x, y) = (-y, x)
-inline void rotate_quarter_turns(int k, double x, double y, double& rx, double& ry)
+// (x, y) -> R^k (x, y), R(x, y) = (-y, x), for any signed number type (double, CGAL::Gmpq, integers); exact
+// (negations and swaps only); (rx, ry) may be (x, y) itself
+template <class T>
+void rotate_quarter_turns(int k, T x, T y, T& rx, T& ry)
 {
   switch(((k % 4) + 4) % 4) {
     case 0: rx = x;  ry = y;  break;

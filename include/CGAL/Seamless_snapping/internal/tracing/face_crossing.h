@@ -79,12 +79,9 @@ inline Face_exit cross_face(const Corner_mesh& cm, int h0, const Exact_uv& p, in
 
 inline Exact_uv rotate(int k, const Exact_uv& x)
 {
-  switch(direction_mod4(k)) {
-    case 0: return x;
-    case 1: return Exact_uv{-x.v, x.u};
-    case 2: return Exact_uv{-x.u, -x.v};
-    default: return Exact_uv{x.v, -x.u};
-  }
+  Exact_uv r;
+  rotate_quarter_turns(k, x.u, x.v, r.u, r.v);
+  return r;
 }
 
 // The transition R^k x + t of the edge of h from face(h) to face(opposite(h)), anchored at the

@@ -1,0 +1,1 @@
+${SS_EXAMPLE_DATA}/bear_parallelogram.obj 4 ${SS_EXAMPLE_DATA}/bear_quads.off

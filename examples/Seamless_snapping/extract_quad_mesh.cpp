@@ -1,0 +1,62 @@
+// Public API: the quad mesh of a UV map. The map (e.g. an Orbifold Tutte or a field-aligned parametrization
+// whose seam translations and cones are integers up to solver error) is snapped to an exact integer-grid map,
+// then extract_quad_mesh() makes its quad mesh: every vertex an integer point of the map, every face a unit
+// cell, checked and verified exactly.
+//   extract_quad_mesh IN.obj [GRID_SCALE [OUT.off]]     (GRID_SCALE: a power of two, default 1)
+// CTest runs it on the bear map that quad_figure writes (Orbifold Tutte Parallelogram) at grid scale 4.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace SS = CGAL::Seamless_snapping;
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+static int fail(const std::string& why) { std::fprintf(stderr, "extract_quad_mesh: %s\n", why.c_str()); return EXIT_FAILURE; }
+
+int main(int argc, char** argv)
+{
+  if(argc < 2) return fail("usage: extract_quad_mesh IN.obj [GRID_SCALE [OUT.off]]");
+  const double scale = argc > 2 ? std::atof(argv[2]) : 1.0;
+  Mesh mesh;
+  // corner map: uv[h] = UV of target(h) as seen from face(h)
+  auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  std::string msg;
+  if(SS::IO::read_OBJ_with_corner_uvs(argv[1], mesh, uv, msg) != SS::SUCCESS) return fail(msg);
+
+  // 1. an exact integer-grid map: integer translations across the cuts, cones on integer points
+  const SS::Snap_report r =
+      SS::snap_seamless_parameterization(mesh, uv, SS::parameters::integer_grid_map(true).grid_scale(scale));
+  if(r.status != SS::SUCCESS) return fail(std::string("snap: ") + SS::status_name(r.status) + ": " + r.message);
+
+  // 2. its quad mesh, with where every quad vertex lies on the triangle mesh and which triangles each quad covers
+  Mesh quads;
+  auto origin = quads.add_property_map<Mesh::Vertex_index, SS::Quad_vertex_origin<Mesh> >("v:origin").first;
+  auto covered = quads.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
+  const SS::Quad_mesh_report q = SS::extract_quad_mesh(mesh, uv, quads, SS::parameters::grid_scale(scale),
+                                                       SS::parameters::vertex_origin_map(origin).face_origin_map(covered));
+  if(q.status != SS::SUCCESS) return fail(std::string("quad mesh: ") + SS::status_name(q.status) + ": " + q.message);
+  std::printf("%zu triangles -> %s\n", std::size_t(mesh.number_of_faces()), q.message.c_str());
+
+  // a quad vertex at a mesh vertex, on an edge or inside a face, and its exact UV: (u, v) / grid scale
+  std::size_t at[3] = {0, 0, 0};
+  for(Mesh::Vertex_index v : quads.vertices()) ++at[origin[v].location];
+  const SS::Quad_vertex_origin<Mesh>& o = origin[*quads.vertices().begin()];
+  std::printf("quad vertices at mesh vertices %zu, on edges %zu, inside faces %zu; the first is (%lld, %lld) / %g in the "
+              "chart of face %u; the first quad covers %zu triangles\n", at[0], at[1], at[2], (long long)o.u, (long long)o.v,
+              scale, unsigned(o.face), covered[*quads.faces().begin()].size());
+  if(!q.covers_map()) return fail("cells cut by the border were dropped");
+
+  if(argc > 3) {
+    if(!CGAL::IO::write_OFF(argv[3], quads, CGAL::parameters::stream_precision(17))) return fail("cannot write the quad mesh");
+    std::printf("quad mesh written to %s\n", argv[3]);
+  }
+  return EXIT_SUCCESS;
+}

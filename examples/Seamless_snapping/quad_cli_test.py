@@ -1,0 +1,96 @@
+"""CTest test of the seamless_quad command line: the quad mesh of CGAL's bear with an Orbifold Tutte
+Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here from the files (every face a quad,
+every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area); refusals with
+exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs (FOLD_OVERS),
+a grid scale that is not a power of two; command-line errors (exit 2).
+usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR"""
+import json
+import os
+import subprocess
+import sys
+
+from fold_over_grid import write_fold_over_grid
+
+exe, parallelogram, square, work = sys.argv[1:5]
+os.makedirs(work, exist_ok=True)
+checks, failures = [0], []
+
+
+def check(ok, what):
+    checks[0] += 1
+    if not ok:
+        failures.append(what)
+
+
+def run(*args):
+    p = subprocess.run([exe, *args], capture_output=True, text=True)
+    return p.returncode, p.stdout + p.stderr
+
+
+def faces_of(path):
+    """the faces (0-based vertex indices) and the vertex count of an OBJ, OFF or ASCII PLY file"""
+    lines = [l.split() for l in open(path) if l.split()]
+    if path.endswith(".obj"):
+        return sum(1 for l in lines if l[0] == "v"), [[int(c.split("/")[0]) - 1 for c in l[1:]] for l in lines if l[0] == "f"]
+    if path.endswith(".off"):
+        nv, nf = int(lines[1][0]), int(lines[1][1])
+        return nv, [[int(x) for x in l[1:1 + int(l[0])]] for l in lines[2 + nv:2 + nv + nf]]
+    end = next(i for i, l in enumerate(lines) if l[0] == "end_header")
+    nv = next(int(l[2]) for l in lines if l[:2] == ["element", "vertex"])
+    nf = next(int(l[2]) for l in lines if l[:2] == ["element", "face"])
+    return nv, [[int(x) for x in l[1:1 + int(l[0])]] for l in lines[end + 1 + nv:end + 1 + nv + nf]]
+
+
+# 1. the parallelogram bear at grid scale 4, in the three formats
+report = os.path.join(work, "quad.json")
+for ext in ["obj", "off", "ply"]:
+    out = os.path.join(work, "bear_quads." + ext)
+    rc, text = run(parallelogram, out, "--grid-scale", "4", "--report", report)
+    check(rc == 0 and "verified" in text, "%s: exit %d %s" % (ext, rc, text))
+    if rc != 0:
+        continue
+    r = json.load(open(report))
+    q = r["quad_mesh"]
+    check(r["snap"]["status"] == "SUCCESS" and q["status"] == "SUCCESS" and q["covers_map"], "%s: report %s" % (ext, q))
+    nv, faces = faces_of(out)
+    edges = {}
+    for f in faces:
+        for i in range(len(f)):
+            e = (min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)]))
+            edges[e] = edges.get(e, 0) + 1
+    check(all(len(f) == 4 for f in faces), "%s: every face a quad" % ext)
+    check(all(n == 2 for n in edges.values()), "%s: every edge in exactly two quads (closed, manifold edges)" % ext)
+    check(nv - len(edges) + len(faces) == 2 == q["euler_characteristic"], "%s: V - E + F = 2" % ext)
+    check(len(faces) == q["quads"] and str(len(faces)) == q["uv_area"], "%s: %d quads, UV area %s" % (ext, len(faces), q["uv_area"]))
+    check(q["irregular_vertices"] == q["cones"] == 4, "%s: 4 irregular vertices = the 4 cones" % ext)
+    if ext == "ply":
+        header = open(out).read().split("end_header")[0]
+        check(all(p in header for p in ["input_kind", "input_face", "grid_u", "grid_v", "input_faces"]),
+              "ply: the origin properties are written")
+
+# 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
+folds = os.path.join(work, "folds.obj")
+write_fold_over_grid(folds)
+for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, [], "FOLD_OVERS", "quad_mesh"),
+                                 (parallelogram, ["--grid-scale", "3"], "power of two", "snap")]:
+    out = os.path.join(work, "refused.obj")
+    rc, text = run(src, out, "--report", report, *args)
+    check(rc == 1 and words in text and not os.path.exists(out), "refused (%s): exit %d %s" % (words, rc, text))
+    r = json.load(open(report))
+    check(r[where]["status"] != "SUCCESS", "refused (%s): the report says so" % words)
+    if words == "FOLD_OVERS":
+        check(len(r["quad_mesh"]["fold_overs"]) > 0, "FOLD_OVERS: the report lists the fold-overs")
+
+# 3. command-line errors and --help
+rc, text = run(parallelogram, os.path.join(work, "x.stl"))
+check(rc == 2 and ".obj, .off or .ply" in text, "unknown output format: %d %s" % (rc, text))
+rc, text = run(parallelogram)
+check(rc == 2, "missing OUT: %d" % rc)
+rc, text = run("--help")
+for opt in ["--weld", "--grid-scale", "--report", "--quiet", "--help"]:
+    check(rc == 0 and opt in text, "--help lists " + opt)
+
+for f in failures:
+    print("FAILED:", f)
+print("quad_cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))
+sys.exit(1 if failures else 0)

@@ -1,0 +1,212 @@
+// seamless_quad: the quad mesh of a UV map, from the command line.
+//
+//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--report FILE.json] [--quiet]
+//
+// Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
+// exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
+// mesh (extract_quad_mesh(), which checks the map and verifies the mesh) and writes OUT atomically.
+// Exit status 0 only when OUT was written.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <CGAL/Seamless_snapping/version.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double>                     K;
+typedef K::Point_2                                         Point_2;
+typedef K::Point_3                                         Point_3;
+typedef CGAL::Surface_mesh<Point_3>                        Mesh;
+typedef Mesh::Property_map<Mesh::Halfedge_index, Point_2>  UV_map;
+
+namespace SS = CGAL::Seamless_snapping;
+namespace params = CGAL::Seamless_snapping::parameters;
+
+static const char* usage_text =
+  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--report FILE.json] [--quiet]\n";
+
+static const char* help_text =
+  "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
+  "integer-grid map (every seam translation an integer vector, every cone on an integer point; the\n"
+  "package's snap with integer_grid_map(true)), then extracts its quad mesh: the vertices are the\n"
+  "integer points of the map, the edges the unit segments of its integer isolines, the faces its unit\n"
+  "cells, all decided exactly. The result is verified before it is written: every face a quad,\n"
+  "manifold, closed if the input is, Euler characteristic and number of quads (= the exact UV area)\n"
+  "those of the map, irregular vertices exactly the cones.\n"
+  "\n"
+  "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
+  "(scale it with --grid-scale), a map with fold-overs or zero-area UV triangles (listed; make it\n"
+  "fold-free first), a cone of 90 degrees (valence 1: no quad mesh has it), a grid too coarse for the\n"
+  "surface (cells that wrap around or share more than a side: use a larger --grid-scale).\n"
+  "\n"
+  "Options:\n"
+  "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
+  "                       libigl/Directional output, whose seams are otherwise borders)\n"
+  "  --grid-scale S       the integer grid is at multiples of 1/S in UV (S a power of two); larger S,\n"
+  "                       finer quads (S^2 times as many)\n"
+  "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
+  "  --quiet              print nothing but errors\n"
+  "  --help               print this help\n"
+  "\n"
+  "Output, by the extension of OUT: .obj and .off (positions with 17 significant digits, quads), or\n"
+  ".ply (ASCII, with per vertex input_kind (0 at a mesh vertex, 1 on an edge, 2 inside a face),\n"
+  "input_face (the input face, 0-based in the order of the mesh's faces, in whose UV chart grid_u, grid_v\n"
+  "are given), grid_u, grid_v (the integer UV in grid units), and per face input_face (the first input\n"
+  "face it covers) and input_faces (how many it covers)). Written atomically (temporary file + rename).\n"
+  "Cells cut by a border that is not on an integer isoline are left out and counted (a line says so).\n"
+  "\n"
+  "Exit status: 0 when OUT was written; 1 when reading, snapping, extracting or writing failed (one line\n"
+  "on stderr says why; OUT is then not created or changed); 2 for a command-line error.\n";
+
+static std::string one_line(std::string s)
+{
+  for(char& c : s) if(c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+static int fail(const std::string& why)
+{
+  std::cerr << "seamless_quad: " << one_line(why) << std::endl;
+  return EXIT_FAILURE;
+}
+
+static std::string extension_of(const std::string& file)
+{
+  const std::size_t dot = file.rfind('.');
+  std::string e = dot == std::string::npos ? "" : file.substr(dot + 1);
+  for(char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+static std::string json_string(const std::string& v)
+{
+  std::string o = "\"";
+  for(char c : v) { if(c == '"' || c == '\\') o += '\\'; if(c == '\n') { o += "\\n"; continue; } o += c; }
+  return o + "\"";
+}
+
+int main(int argc, char** argv)
+{
+  std::string in, out, report_file;
+  bool weld = false, quiet = false;
+  double grid_scale = 1;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
+    else if(a == "--weld") weld = true;
+    else if(a == "--quiet") quiet = true;
+    else if(a == "--grid-scale") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
+        std::cerr << "seamless_quad: --grid-scale needs a number\n" << usage_text; return 2;
+      }
+      ++i;
+    }
+    else if(a == "--report") {
+      if(i + 1 >= argc) { std::cerr << "seamless_quad: --report needs a file name\n" << usage_text; return 2; }
+      report_file = argv[++i];
+    }
+    else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_quad: unknown option '" << a << "'\n" << usage_text; return 2; }
+    else if(in.empty()) in = a;
+    else if(out.empty()) out = a;
+    else { std::cerr << "seamless_quad: unexpected argument '" << a << "'\n" << usage_text; return 2; }
+  }
+  if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
+  const std::string format = extension_of(out);
+  if(format != "obj" && format != "off" && format != "ply") {
+    std::cerr << "seamless_quad: OUT must end in .obj, .off or .ply\n" << usage_text; return 2;
+  }
+
+  // 1. read; the corner map: uv[h] = UV of target(h) in face(h)
+  Mesh mesh;
+  UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
+  std::string message;
+  if(SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) != SS::SUCCESS)
+    return fail("cannot read input: " + message);
+  if(!quiet) std::cout << message << "\n";
+
+  // 2. snap to an exact integer-grid map (the UVs are written only on success)
+  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).grid_scale(grid_scale));
+  if(!quiet)
+    std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
+                "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,
+                snap.field_cones, snap.flips_after_repair, snap.degenerate_after_repair);
+
+  // 3. extract (the quad mesh is written into `quads` only on success)
+  Mesh quads;
+  auto origin = quads.add_property_map<Mesh::Vertex_index, SS::Quad_vertex_origin<Mesh> >("v:origin").first;
+  auto covered = quads.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
+  SS::Quad_mesh_report q;
+  if(snap.status == SS::SUCCESS && SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale)))
+    q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale),
+                              params::vertex_origin_map(origin).face_origin_map(covered));
+  else if(snap.status == SS::SUCCESS)
+    return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
+  if(!report_file.empty()) {
+    const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+                             ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
+                             snap.to_json() + ",\n  \"quad_mesh\": " +
+                             (snap.status == SS::SUCCESS ? q.to_json() : std::string("null")) + "}\n";
+    if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
+  }
+  if(snap.status != SS::SUCCESS)
+    return fail(std::string("snapping failed: ") + SS::status_name(snap.status) + ": " + snap.message);
+  if(q.status != SS::SUCCESS) return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + q.message);
+  if(!quiet) {
+    std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());
+    std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones)%s\n",
+                q.boundary_loops == 0 ? "closed" : (std::to_string(q.boundary_loops) + " boundary loops").c_str(),
+                q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones,
+                q.covers_map() ? ", as many quads as the exact UV area" : "");
+  }
+  if(q.incomplete_cells > 0)
+    std::cerr << "seamless_quad: note: " << q.incomplete_cells << " cells cut by the border (not on integer isolines) "
+              << "were left out\n";
+
+  // 4. write atomically
+  std::ostringstream os;
+  os.precision(17);
+  bool written = false;
+  if(format == "ply") {
+    auto kind = quads.add_property_map<Mesh::Vertex_index, std::int32_t>("v:input_kind").first;
+    auto face = quads.add_property_map<Mesh::Vertex_index, std::int32_t>("v:input_face").first;
+    auto gu = quads.add_property_map<Mesh::Vertex_index, std::int32_t>("v:grid_u").first;
+    auto gv = quads.add_property_map<Mesh::Vertex_index, std::int32_t>("v:grid_v").first;
+    auto first = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:input_face").first;
+    auto count = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:input_faces").first;
+    for(Mesh::Vertex_index v : quads.vertices()) {
+      const SS::Quad_vertex_origin<Mesh>& o = origin[v];
+      kind[v] = std::int32_t(o.location);
+      face[v] = std::int32_t(o.face);
+      gu[v] = std::int32_t(o.u);
+      gv[v] = std::int32_t(o.v);
+    }
+    for(Mesh::Face_index f : quads.faces()) { first[f] = std::int32_t(covered[f].front()); count[f] = std::int32_t(covered[f].size()); }
+    quads.remove_property_map(origin);
+    quads.remove_property_map(covered);
+    written = CGAL::IO::write_PLY(os, quads, "quad mesh of " + in, CGAL::parameters::use_binary_mode(false));
+  }
+  else if(format == "off") written = CGAL::IO::write_OFF(os, quads, CGAL::parameters::stream_precision(17));
+  else written = CGAL::IO::write_OBJ(os, quads, CGAL::parameters::stream_precision(17));
+  if(!written) return fail("cannot format the quad mesh as " + format);
+  if(SS::IO::internal::write_text_atomically(out, os.str(), message) != SS::SUCCESS) return fail(message);
+  if(!quiet) std::cout << std::to_string(q.quads) << " quads written to " << out << "\n";
+  return EXIT_SUCCESS;
+}

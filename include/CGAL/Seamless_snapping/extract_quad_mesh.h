@@ -1,0 +1,183 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_EXTRACT_QUAD_MESH_H
+#define CGAL_SEAMLESS_SNAPPING_EXTRACT_QUAD_MESH_H
+
+#include <CGAL/Seamless_snapping/Quad_mesh_report.h>
+#include <CGAL/Seamless_snapping/internal/parameters.h>
+#include <CGAL/Seamless_snapping/internal/quad/extract_quad_mesh_impl.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ * Where a vertex of the quad mesh of `extract_quad_mesh()` lies on the triangle mesh, and its integer UV.
+ * `(u, v)` are grid units: the UV in the chart of `face` is `(u, v) / grid_scale`, exactly.
+ */
+template <class TriangleMesh>
+struct Quad_vertex_origin
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  enum Location { VERTEX, EDGE, FACE };
+  Location location = FACE;                   ///< a vertex of the triangle mesh, a point inside an edge, or inside a face
+  typename GT::halfedge_descriptor halfedge;  ///< `VERTEX`: a halfedge whose target is the vertex; `EDGE`: a halfedge of the edge; `FACE`: a halfedge of the face
+  typename GT::face_descriptor face;          ///< `face(halfedge)`: the face in whose UV chart `(u, v)` is given
+  std::int64_t u = 0, v = 0;                  ///< the integer UV in the chart of `face`, in grid units
+};
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
+ *
+ * extracts the quad mesh of an exact, fold-free integer-grid map: its vertices are the integer points of the map
+ * (at vertices, inside edges and inside faces of `tm`; one vertex per point of the surface, identified across cut
+ * edges through their exact transitions `R^k u + t`), its edges the unit segments of the integer isolines, its faces
+ * the unit cells of the grid. Everything is decided with exact predicates on the doubles of the map (no tracing, no
+ * rounding, no tolerance). Only the 3D positions are rounded: every quad vertex is the combination of the vertices
+ * of its face (or edge) with the barycentric coordinates of its integer point, evaluated in `double`; the exact
+ * location is its integer UV (`vertex_origin_map`).
+ *
+ * The map is checked exactly first, and nothing is written if a check fails:
+ * - it must be an exact integer-grid map at `grid_scale` (`is_exact_integer_grid_map()`; e.g. the output of
+ *   `snap_seamless_parameterization()` with `integer_grid_map(true)`), else `INVALID_INPUT` naming the edge or cone
+ *   that is not exact or not integer;
+ * - every UV triangle must be positively oriented, else `FOLD_OVERS` with the fold-overs and zero-area triangles
+ *   listed in `Quad_mesh_report::fold_overs` and `Quad_mesh_report::zero_area_faces`;
+ * - every interior vertex whose quad valence (`quad_valences()`) is not 4 must lie on an integer point (the cones of
+ *   the field do in an integer-grid map; a vertex with an angle sum of 8 quarter turns might not), and no cone may
+ *   have valence 1 (a 90-degree cone: the cell at it would have two sides glued into one edge, which no polygon mesh
+ *   has), else `INVALID_INPUT`;
+ * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
+ *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
+ *   `grid_scale`; UVs beyond `2^30` grid units or more than `2^26` cells in the faces' UV bounding boxes give
+ *   `RANGE_EXCEEDED`.
+ *
+ * Guarantees on `SUCCESS`, each verified on the result before it is written (a violation would be reported as
+ * `EXACTNESS_CHECK_FAILED`, an internal error, never hidden): every face is a quad; the mesh is manifold; a closed map
+ * gives a closed mesh; every quad vertex of the map's interior has the valence that `quad_valences()` gives its
+ * point (4 away from the mesh vertices), so the irregular vertices are exactly the cones, of valence 4 minus their
+ * index in quarter turns; and if no cell was dropped (`Quad_mesh_report::covers_map()`), the number of quads equals the
+ * exact UV area of the map in grid units and `V - E + F` equals that of `tm`.
+ *
+ * Border: a cell cut by a border edge that does not lie on an integer isoline is incomplete; it is dropped (not in
+ * the mesh) and counted in `Quad_mesh_report::incomplete_cells`, with the status still `SUCCESS`: the quad mesh then
+ * covers the map minus those cells, and its border follows the integer isolines next to the map's border.
+ *
+ * The quad mesh is added to `qm` (which is typically empty); vertex `i` of the mesh is the `i`-th added. On failure
+ * `qm` is not changed.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
+ * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
+ *         as key type and a 2D point type with `double` coordinates as value type
+ * \tparam QuadMesh a model of `MutableFaceGraph`
+ * \tparam NamedParameters_in a sequence of \ref bgl_namedparameters "Named Parameters"
+ * \tparam NamedParameters_out a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the triangle mesh
+ * \param uv the corner UV map: `get(uv, h)` is the UV of the corner (`target(h)`, `face(h)`), in UV units
+ * \param qm the mesh that receives the quad mesh
+ * \param np_in an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the 3D positions of the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ *                    as key type and a 3D point type as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{grid_scale}
+ *     \cgalParamDescription{`S`: the integer grid of the map is at multiples of `1/S` in UV units}
+ *     \cgalParamType{`double`, a power of two}
+ *     \cgalParamDefault{1}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::grid_scale()`; the result does not depend on
+ *                     the scale of the map: a map scaled by `2^j` with `grid_scale(2^-j)` gives the same quad mesh}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \param np_out an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{receives the 3D position of every vertex of the quad mesh}
+ *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<QuadMesh>::%vertex_descriptor` as key
+ *                    type and a point type constructible from three `double` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, qm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_origin_map}
+ *     \cgalParamDescription{receives, per vertex of the quad mesh, where it lies on `tm` and its integer UV}
+ *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<QuadMesh>::%vertex_descriptor` as key
+ *                    type and `Quad_vertex_origin<TriangleMesh>` as value type}
+ *     \cgalParamDefault{none}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::vertex_origin_map()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{face_origin_map}
+ *     \cgalParamDescription{receives, per quad, the faces of `tm` it covers (those whose UV triangle meets its open
+ *                           cell), in the order of `faces(tm)`}
+ *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<QuadMesh>::%face_descriptor` as key
+ *                    type and `std::vector<boost::graph_traits<TriangleMesh>::%face_descriptor>` as value type}
+ *     \cgalParamDefault{none}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::face_origin_map()`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \return the report: status, message, what was checked and the measured quad mesh (`Quad_mesh_report`).
+ *
+ * \sa `snap_seamless_parameterization()` with `integer_grid_map(true)`, `is_exact_integer_grid_map()`, `quad_valences()`
+ */
+template <class TriangleMesh, class HalfedgeUVMap, class QuadMesh,
+          class NamedParameters_in = CGAL::parameters::Default_named_parameters,
+          class NamedParameters_out = CGAL::parameters::Default_named_parameters>
+Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, QuadMesh& qm,
+                                   const NamedParameters_in& np_in = CGAL::parameters::default_values(),
+                                   const NamedParameters_out& np_out = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef boost::graph_traits<QuadMesh> QT;
+
+  // input: vertex point map, grid scale
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters_in>::const_type VPM_in;
+  const VPM_in vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
+                                         get_const_property_map(CGAL::vertex_point, tm));
+  const double grid_scale = choose_parameter(get_parameter(np_in, snap_np::grid_scale), 1.);
+  // output: vertex point map, origins
+  typedef typename CGAL::GetVertexPointMap<QuadMesh, NamedParameters_out>::type VPM_out;
+  VPM_out vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                     get_property_map(CGAL::vertex_point, qm));
+  typedef Quad_vertex_origin<TriangleMesh> Origin;
+  typedef std::vector<typename GT::face_descriptor> Covered_faces;
+  typedef CGAL::Constant_property_map<typename QT::vertex_descriptor, Origin> No_origin_map;
+  typedef CGAL::Constant_property_map<typename QT::face_descriptor, Covered_faces> No_face_origin_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::vertex_origin_map_t, NamedParameters_out,
+                                                       No_origin_map>::type Origin_map;
+  typedef typename internal_np::Lookup_named_param_def<snap_np::face_origin_map_t, NamedParameters_out,
+                                                       No_face_origin_map>::type Face_origin_map;
+  Origin_map origin_map = choose_parameter<Origin_map>(get_parameter(np_out, snap_np::vertex_origin_map));
+  Face_origin_map face_origin_map = choose_parameter<Face_origin_map>(get_parameter(np_out, snap_np::face_origin_map));
+
+  const bool covered_faces = !CGAL::parameters::is_default_parameter<NamedParameters_out, snap_np::face_origin_map_t>::value;
+  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, qm, vpm_out, origin_map, face_origin_map,
+                                                covered_faces);
+}
+
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_EXTRACT_QUAD_MESH_H

@@ -1,0 +1,212 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_CELL_PIECES_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_CELL_PIECES_H
+
+// The pieces of a fold-free integer-grid map: the intersections of the open UV triangle of a face,
+// in its own chart (UVs in grid units), with the open unit cells (i, i+1) x (j, j+1) of that chart,
+// those with positive area. Decided exactly, with no construction: the UVs are doubles, the cell
+// corners integers, and every decision is a sign of the exact orientation predicate (CGAL's filtered
+// predicate on doubles) of a grid point against the line of a side of the face, computed once per
+// grid point of the face's bounding box and side:
+// - a cell meets the open triangle iff no side has all four corners of the cell on or to its right
+//   (separating axis theorem: two convex polygons have disjoint interiors iff a line through an edge
+//   of one of them separates them; the cells tested are those of the bounding box, whose overlap with
+//   the triangle's box is strict);
+// - the open segment of a side runs through the open cell (where two pieces of neighbouring faces are
+//   glued, or where the border cuts the cell) iff its u and v ranges overlap the cell's strictly and the
+//   cell's corners lie strictly on both sides of its line (the separating axes of a segment and a
+//   square are u, v and the segment's normal); a side on a grid line runs through no open cell;
+// - a corner of the cell lies in the closed triangle iff it is on or to the left of all three sides;
+//   on exactly one side's line: inside that side; on two: at their common corner of the face.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/quad/grid_transform.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Uv_point;
+
+inline Uv_point corner_point(const Corner_mesh& cm, int h) { return Uv_point(cm.u[h], cm.v[h]); }
+
+// Where a corner of a cell lies relative to the closed UV triangle of a face with corners c0, c1, c2
+// (its first halfedge and the next two; side s runs from corner c_s to corner c_{s+1}):
+enum Corner_place : signed char
+{
+  OUTSIDE = -1,
+  AT_CORNER_0 = 0, AT_CORNER_1, AT_CORNER_2,     // the face's corner c_k
+  ON_SIDE_0 = 3, ON_SIDE_1, ON_SIDE_2,           // inside side s
+  INSIDE = 6
+};
+
+// The corners of a cell, counter-clockwise from its lower-left corner: offsets from it.
+constexpr std::int64_t cell_corner_offset[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+// The pieces of all faces, face by face; within a face ordered by cell (row by row).
+struct Cell_pieces
+{
+  struct Glue { std::size_t piece; int halfedge; };   // the side of halfedge runs through the piece's open cell
+
+  std::vector<std::size_t> first;                   // per face f: its pieces are first[f] .. first[f + 1] - 1
+  std::vector<Grid_point> cell;                     // per piece: the lower-left corner of its cell, chart of its face
+  std::vector<int> face;                            // per piece
+  std::vector<std::array<Corner_place, 4> > corner; // per piece: where the cell's corners lie (cell_corner_offset order)
+  std::vector<char> cut;                            // per piece: a border side runs through its open cell
+  std::vector<Glue> glue;                           // interior sides through open cells, once per edge (halfedge < opposite)
+
+  std::size_t size() const { return cell.size(); }
+  // the piece of face f in cell c, or -1
+  long find(int f, const Grid_point& c) const
+  {
+    const auto b = cell.begin() + std::ptrdiff_t(first[std::size_t(f)]), e = cell.begin() + std::ptrdiff_t(first[std::size_t(f) + 1]);
+    const auto it = std::lower_bound(b, e, c);
+    return it != e && *it == c ? long(it - cell.begin()) : -1;
+  }
+};
+
+// The cells of the bounding box of the triangle t that overlap it strictly: i in [i0, i1], j in [j0, j1].
+inline void candidate_cells(const Uv_point t[3], std::int64_t& i0, std::int64_t& i1, std::int64_t& j0, std::int64_t& j1)
+{
+  const double u0 = (std::min)({t[0].x(), t[1].x(), t[2].x()}), u1 = (std::max)({t[0].x(), t[1].x(), t[2].x()});
+  const double v0 = (std::min)({t[0].y(), t[1].y(), t[2].y()}), v1 = (std::max)({t[0].y(), t[1].y(), t[2].y()});
+  i0 = std::int64_t(std::floor(u0)); i1 = std::int64_t(std::ceil(u1)) - 1;
+  j0 = std::int64_t(std::floor(v0)); j1 = std::int64_t(std::ceil(v1)) - 1;
+}
+
+// The sign of the orientation of (a, b, q) for many grid points q and one side (a, b), exactly: the
+// determinant (b - a) x (q - a) in double with Shewchuk's first error bound for this formula (orient2d's
+// errboundA, valid without underflow), the exact predicate where the bound does not decide.
+class Side_orientation
+{
+public:
+  Side_orientation(const Uv_point& a, const Uv_point& b) : a_(a), b_(b), dx_(b.x() - a.x()), dy_(b.y() - a.y()) {}
+  signed char operator()(double qx, double qy) const
+  {
+    const double l = dx_ * (qy - a_.y()), r = dy_ * (qx - a_.x()), det = l - r;
+    const double bound = 3.3306690738754716e-16 * (std::fabs(l) + std::fabs(r));   // (3 + 16 eps) eps, eps = 2^-53
+    if(det > bound && bound > 0x1p-900) return 1;
+    if(-det > bound && bound > 0x1p-900) return -1;
+    return static_cast<signed char>(CGAL::orientation(a_, b_, Uv_point(qx, qy)));
+  }
+private:
+  Uv_point a_, b_;
+  double dx_, dy_;
+};
+
+// The pieces of face f (first halfedge h0), appended to `out`; `sign` is scratch space.
+inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& out, std::vector<signed char>& sign)
+{
+  const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
+  const Uv_point t[3] = {corner_point(cm, c[0]), corner_point(cm, c[1]), corner_point(cm, c[2])};
+  std::int64_t i0, i1, j0, j1;
+  candidate_cells(t, i0, i1, j0, j1);
+  const std::size_t ni = std::size_t(i1 - i0 + 2), nj = std::size_t(j1 - j0 + 2), n = ni * nj;   // grid points
+  sign.resize(3 * n);
+  for(int s = 0; s < 3; ++s) {
+    const Side_orientation side(t[s], t[(s + 1) % 3]);
+    signed char* row = sign.data() + std::size_t(s) * n;
+    for(std::size_t b = 0; b < nj; ++b)
+      for(std::size_t a = 0; a < ni; ++a) row[b * ni + a] = side(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
+  }
+  for(std::size_t b = 0; b + 1 < nj; ++b)
+    for(std::size_t a = 0; a + 1 < ni; ++a) {
+      std::size_t g[4];                           // the cell's corners in the grid, counter-clockwise
+      for(int k = 0; k < 4; ++k) g[k] = (b + std::size_t(cell_corner_offset[k][1])) * ni + a + std::size_t(cell_corner_offset[k][0]);
+      bool left[3], right[3], separated = false;
+      for(int s = 0; s < 3; ++s) {
+        left[s] = right[s] = false;
+        for(int k = 0; k < 4; ++k) { left[s] = left[s] || sign[std::size_t(s) * n + g[k]] > 0; right[s] = right[s] || sign[std::size_t(s) * n + g[k]] < 0; }
+        separated = separated || !left[s];
+      }
+      if(separated) continue;
+      const std::size_t x = out.cell.size();
+      const Grid_point cell{i0 + std::int64_t(a), j0 + std::int64_t(b)};
+      out.cell.push_back(cell);
+      out.face.push_back(f);
+      std::array<Corner_place, 4> place;
+      for(int k = 0; k < 4; ++k) {
+        int zero = 0, on = -1;
+        bool outside = false;
+        for(int s = 0; s < 3; ++s) {
+          const signed char o = sign[std::size_t(s) * n + g[k]];
+          outside = outside || o < 0;
+          if(o == 0) { on = zero == 0 ? s : (on + 1) % 3 == s ? s : on; ++zero; }
+        }
+        // on sides s and s+1: the corner c_{s+1} between them; `on` keeps the later side of the pair
+        place[k] = outside ? OUTSIDE : zero == 0 ? INSIDE : zero == 1 ? Corner_place(ON_SIDE_0 + on) : Corner_place(AT_CORNER_0 + on);
+      }
+      out.corner.push_back(place);
+      char cut = 0;
+      for(int s = 0; s < 3; ++s) {                // side s: from t[s] to t[s+1], the halfedge c[s+1]
+        const Uv_point& p = t[s];
+        const Uv_point& q = t[(s + 1) % 3];
+        if(!left[s] || !right[s] || (std::max)(p.x(), q.x()) <= double(cell.u) || (std::min)(p.x(), q.x()) >= double(cell.u + 1) ||
+           (std::max)(p.y(), q.y()) <= double(cell.v) || (std::min)(p.y(), q.y()) >= double(cell.v + 1))
+          continue;
+        const int h = c[(s + 1) % 3], o = cm.opp[h];
+        if(cm.is_border_halfedge(o)) cut = 1;
+        else if(h < o) out.glue.push_back(Cell_pieces::Glue{x, h});
+      }
+      out.cut.push_back(cut);
+    }
+}
+
+// Collects the pieces of every face. Preconditions: the map is fold-free, its UVs are in grid units
+// with |u|, |v| < 2^30. RANGE_EXCEEDED (nothing collected) when the bounding boxes of the faces hold
+// more than `max_candidates` cells in all.
+inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
+                                  std::size_t max_candidates, Cell_pieces& out, std::string& message)
+{
+  out = Cell_pieces();
+  std::size_t candidates = 0;
+  for(int f = 0; f < cm.n_faces; ++f) {
+    const int h0 = face_halfedge[std::size_t(f)];
+    const Uv_point t[3] = {corner_point(cm, h0), corner_point(cm, cm.next[h0]), corner_point(cm, cm.prev[h0])};
+    std::int64_t i0, i1, j0, j1;
+    candidate_cells(t, i0, i1, j0, j1);
+    candidates += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
+    if(candidates > max_candidates) {
+      message = "the faces' UV bounding boxes hold more than " + std::to_string(max_candidates) + " unit cells of the " +
+                "integer grid (reached at face " + std::to_string(f) + "): the quad mesh would be too large; use a " +
+                "smaller grid_scale";
+      return RANGE_EXCEEDED;
+    }
+  }
+  out.first.reserve(std::size_t(cm.n_faces) + 1);
+  out.cell.reserve(candidates); out.face.reserve(candidates); out.corner.reserve(candidates); out.cut.reserve(candidates);
+  out.glue.reserve(candidates);
+  std::vector<signed char> sign;
+  for(int f = 0; f < cm.n_faces; ++f) {
+    out.first.push_back(out.cell.size());
+    add_face_pieces(cm, f, face_halfedge[std::size_t(f)], out, sign);
+  }
+  out.first.push_back(out.cell.size());
+  return SUCCESS;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_CELL_PIECES_H

@@ -1,0 +1,122 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_EXTRACT_QUAD_MESH_IMPL_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_EXTRACT_QUAD_MESH_IMPL_H
+
+// extract_quad_mesh() between the caller's types and the index-based extraction (quad_extraction.h):
+// reads the triangle mesh into a corner mesh, runs the extraction, and only when it succeeded (the quad
+// mesh built and verified) adds the same vertices and faces, in the same order, to the caller's mesh,
+// with the positions and the origin maps.
+
+#include <CGAL/Seamless_snapping/Quad_mesh_report.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_extraction.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+
+template <class TriangleMesh> struct Quad_vertex_origin;
+
+namespace internal {
+namespace quad {
+
+// `covered`: fill face_origin_map (false when the caller gave none)
+template <class TriangleMesh, class QuadMesh, class VPM_out, class Origin_map, class Face_origin_map>
+void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<TriangleMesh>& desc, const Quad_extraction& x,
+                   QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map, Face_origin_map face_origin_map, bool covered_faces)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef boost::graph_traits<QuadMesh> QT;
+  typedef typename boost::property_traits<VPM_out>::value_type Out_point;
+  typedef Quad_vertex_origin<TriangleMesh> Origin;
+  std::vector<typename GT::face_descriptor> face_of(std::size_t(x.cm.n_faces));
+  for(std::size_t h = 0; h < desc.halfedges.size(); ++h)
+    if(!x.cm.is_border_halfedge(int(h))) face_of[std::size_t(x.cm.face[h])] = face(desc.halfedges[h], tm);
+  std::vector<typename QT::vertex_descriptor> qv;
+  for(std::size_t i = 0; i < x.cells.points.size(); ++i) {
+    const Integer_point& p = x.cells.points[i];
+    const typename QT::vertex_descriptor v = add_vertex(qm);
+    put(vpm_out, v, Out_point(x.positions[i][0], x.positions[i][1], x.positions[i][2]));
+    Origin o;
+    o.location = p.kind == AT_VERTEX ? Origin::VERTEX : p.kind == ON_EDGE ? Origin::EDGE : Origin::FACE;
+    o.halfedge = desc.halfedges[std::size_t(p.halfedge)];
+    o.face = face(o.halfedge, tm);
+    o.u = p.uv.u;
+    o.v = p.uv.v;
+    put(origin_map, v, o);
+    qv.push_back(v);
+  }
+  for(std::size_t q = 0; q < x.cells.quads.size(); ++q) {
+    const std::array<int, 4>& c = x.cells.quads[q];
+    const std::array<typename QT::vertex_descriptor, 4> corners = {{qv[std::size_t(c[0])], qv[std::size_t(c[1])],
+                                                                    qv[std::size_t(c[2])], qv[std::size_t(c[3])]}};
+    const typename QT::face_descriptor f = CGAL::Euler::add_face(corners, qm);
+    CGAL_assertion(f != QT::null_face());     // the faces of the verified mesh, in the same order
+    if(!covered_faces) continue;
+    std::vector<typename GT::face_descriptor> covered;
+    covered.reserve(x.cells.faces_first[q + 1] - x.cells.faces_first[q]);
+    for(std::size_t k = x.cells.faces_first[q]; k < x.cells.faces_first[q + 1]; ++k)
+      covered.push_back(face_of[std::size_t(x.cells.faces[k])]);
+    put(face_origin_map, f, covered);
+  }
+}
+
+template <class TriangleMesh, class HalfedgeUVMap, class VPM_in, class QuadMesh, class VPM_out, class Origin_map,
+          class Face_origin_map>
+Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv, VPM_in vpm_in, double grid_scale,
+                                        QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
+                                        Face_origin_map face_origin_map, bool covered_faces)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Quad_mesh_report report;
+  Quad_extraction x;
+  Corner_mesh_descriptors<TriangleMesh> desc;
+  report.status = build_corner_mesh(tm, uv, x.cm, desc, report.message);
+  int scale_exponent = 0;
+  if(report.status == SUCCESS && !grid_scale_exponent(grid_scale, scale_exponent)) {
+    report.status = INVALID_INPUT;
+    report.message = "the grid scale " + format_double(grid_scale, 17) + " is not a power of two";
+  }
+  if(report.status == SUCCESS) {
+    std::vector<typename boost::property_traits<VPM_in>::value_type> points;
+    for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
+    report.status = extract_quads(scale_exponent, points, x, report);
+  }
+  if(report.status != SUCCESS) { report.total_ms = ms_since(t0); return report; }
+
+  add_quad_mesh(tm, desc, x, qm, vpm_out, origin_map, face_origin_map, covered_faces);
+  report.message = std::to_string(report.quads) + " quads, " + std::to_string(report.quad_vertices) + " vertices (" +
+                   std::to_string(report.irregular_vertices) + " irregular, " + std::to_string(report.cones) +
+                   " cones in the map), Euler characteristic " + std::to_string(report.euler_characteristic) + ", " +
+                   std::to_string(report.boundary_loops) + " boundary loops; " +
+                   (report.incomplete_cells == 0 ? std::string("the quads cover the map (as many as its UV area)")
+                                                 : std::to_string(report.incomplete_cells) + " cells cut by the border "
+                                                   "(not on integer isolines) were dropped");
+  report.total_ms = ms_since(t0);
+  return report;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_EXTRACT_QUAD_MESH_IMPL_H

@@ -1,0 +1,110 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_INTEGER_POINTS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_INTEGER_POINTS_H
+
+// The integer points of an integer-grid map, one per point of the surface. An integer point p of the
+// closed UV triangle of a face (in its chart, grid units), located exactly (cell_pieces.h), is named
+// canonically, so that the same surface point seen from different faces and charts gets the same name:
+//   AT_VERTEX  p is the UV of a corner of the face: the mesh vertex;
+//   ON_EDGE    p lies inside a side: the edge and p in the chart of the edge's canonical face, the face of
+//              its edge_halfedge (the other one on the border), reached through the edge's transition;
+//   IN_FACE    otherwise: the face and p in its chart.
+// Integer_point_index numbers the distinct names in the order they are first seen.
+
+#include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
+#include <CGAL/Seamless_snapping/internal/quad/grid_transform.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+enum Integer_point_kind { AT_VERTEX = 0, ON_EDGE = 1, IN_FACE = 2 };
+
+struct Integer_point
+{
+  Integer_point_kind kind = IN_FACE;
+  int element = -1;     // the vertex, edge or face (Corner_mesh numbering)
+  int halfedge = -1;    // a halfedge of the face whose chart holds `uv`: AT_VERTEX a corner of the vertex (its
+                        // target), ON_EDGE the side of the canonical face, IN_FACE the face's first halfedge
+  Grid_point uv;        // in the chart of face(halfedge), grid units
+};
+
+// names the integer point p of the closed UV triangle of the face of h0 (its first halfedge), at
+// `place` in it (cell_pieces.h)
+inline Integer_point locate_integer_point(const Corner_mesh& cm, int h0, const Grid_point& p, Corner_place place,
+                                          const std::vector<Grid_transform>& transition)
+{
+  const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
+  Integer_point r;
+  r.uv = p;
+  if(place <= AT_CORNER_2) {
+    r.kind = AT_VERTEX; r.halfedge = c[place]; r.element = cm.target[r.halfedge];
+  } else if(place <= ON_SIDE_2) {                  // side s runs from corner c_s to c_{s+1}: the halfedge c_{s+1}
+    const int g = c[(place - ON_SIDE_0 + 1) % 3];
+    r.kind = ON_EDGE;
+    r.element = cm.edge[g];
+    const int g0 = cm.edge_halfedge[std::size_t(r.element)];
+    r.halfedge = cm.is_border_halfedge(g0) ? cm.opp[g0] : g0;
+    if(r.halfedge != g) r.uv = transition[std::size_t(g)].apply(p);
+  } else {
+    r.kind = IN_FACE; r.element = cm.face[h0]; r.halfedge = h0;
+  }
+  return r;
+}
+
+class Integer_point_index
+{
+public:
+  const std::vector<Integer_point>& points() const { return points_; }
+
+  // the number of the point (a new one if its name was not seen yet)
+  int id(const Integer_point& p)
+  {
+    const Key k{int(p.kind), p.element, p.kind == AT_VERTEX ? 0 : p.uv.u, p.kind == AT_VERTEX ? 0 : p.uv.v};
+    const auto it = ids_.emplace(k, int(points_.size()));
+    if(it.second) points_.push_back(p);
+    return it.first->second;
+  }
+
+private:
+  struct Key
+  {
+    int kind, element;
+    std::int64_t u, v;
+    bool operator==(const Key& o) const { return kind == o.kind && element == o.element && u == o.u && v == o.v; }
+  };
+  struct Key_hash
+  {
+    std::size_t operator()(const Key& k) const
+    {
+      std::uint64_t h = std::uint64_t(k.element) * 0x9E3779B97F4A7C15ull + std::uint64_t(k.kind);
+      h ^= std::uint64_t(k.u) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+      h ^= std::uint64_t(k.v) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+      return std::size_t(h);
+    }
+  };
+  std::unordered_map<Key, int, Key_hash> ids_;
+  std::vector<Integer_point> points_;
+};
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_INTEGER_POINTS_H

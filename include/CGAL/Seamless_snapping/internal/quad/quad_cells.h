@@ -1,0 +1,177 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_CELLS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_CELLS_H
+
+// The cells of a fold-free integer-grid map, stitched from the pieces (cell_pieces.h) by exact equality:
+//   1. glue: wherever the open segment of an interior edge (side g of face f) runs through the open cell
+//      c of a piece (f, c), that piece and the piece (f', T(c)) of the face f' across the edge are one
+//      cell, T = R^k u + t the edge's transition (integer t). A union-find carries the transition to the
+//      chart of each set's first piece; a cycle that closes with another transition than the identity
+//      means a cell that is no disk (a guard: a cycle inside an open cell would need a cone inside it).
+//      A border edge through the open cell of a piece cuts the cell: incomplete, dropped and counted.
+//   2. corners: every corner of a piece's cell that lies in the closed UV triangle of its face is an
+//      integer point of the surface (integer_points.h); mapped into the chart of the cell's first piece
+//      it is one of the four corners of that chart's cell. Each corner of a complete cell must be
+//      exactly one surface point.
+// A complete cell is then a quad: its four corners counter-clockwise from the lower-left one in the
+// chart of its first piece (transitions keep the orientation), and the faces of its pieces.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
+#include <CGAL/Seamless_snapping/internal/quad/chart_union_find.h>
+#include <CGAL/Seamless_snapping/internal/quad/integer_points.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>   // vertex_pair_name()
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+struct Quad_cells
+{
+  std::vector<Integer_point> points;            // the quad vertices
+  std::vector<std::array<int, 4> > quads;       // per complete cell: its corners (indices into points), counter-clockwise
+  std::vector<std::size_t> faces_first;         // per quad q: the faces of the map it covers, ascending, are
+  std::vector<int> faces;                       // faces[faces_first[q] .. faces_first[q + 1] - 1]
+  std::size_t incomplete = 0;                   // cells cut by the border, dropped
+  int first_incomplete_face = -1;               // a face with a piece of the first of them
+};
+
+inline std::string cell_name(const Grid_point& c, int f)
+{
+  return "cell [" + std::to_string(c.u) + ", " + std::to_string(c.u + 1) + "] x [" + std::to_string(c.v) + ", " +
+         std::to_string(c.v + 1) + "] of face " + std::to_string(f);
+}
+
+// Stage 1: glues the pieces into cells.
+inline Status glue_pieces(const Corner_mesh& cm, const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
+                          Chart_union_find& uf, std::string& message)
+{
+  for(const Cell_pieces::Glue& glue : pieces.glue) {
+    const std::size_t x = glue.piece;
+    const int g = glue.halfedge, o = cm.opp[g];
+    const Grid_point& c = pieces.cell[x];
+    const Grid_transform& T = transition[std::size_t(g)];
+    const long y = pieces.find(cm.face[o], T.apply_to_cell(c));
+    if(y < 0) {
+      message = "internal error: the " + cell_name(c, pieces.face[x]) + " has no piece in face " +
+                std::to_string(cm.face[o]) + " across edge " + vertex_pair_name(cm, g);
+      return EXACTNESS_CHECK_FAILED;
+    }
+    if(!uf.unite(int(x), int(y), T)) {
+      message = "the " + cell_name(c, pieces.face[x]) + " closes around the surface (its pieces are joined through a "
+                "non-trivial transition, last across edge " + vertex_pair_name(cm, g) + "): it is not a disk, so the "
+                "cells are no quads; the integer grid is too coarse for the surface (use a larger grid_scale)";
+      return INVALID_INPUT;
+    }
+  }
+  return SUCCESS;
+}
+
+inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
+                           const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
+                           Quad_cells& out, std::string& message)
+{
+  out = Quad_cells();
+  Chart_union_find uf(int(pieces.size()));
+  const Status s = glue_pieces(cm, transition, pieces, uf, message);
+  if(s != SUCCESS) return s;
+
+  // cells, numbered by their first piece (the representative); incomplete ones marked
+  std::vector<int> cell_of(pieces.size(), -1), root_of(pieces.size(), -1);
+  std::vector<Grid_transform> to_root(pieces.size());
+  std::vector<int> roots;
+  for(std::size_t x = 0; x < pieces.size(); ++x) {
+    const int r = uf.find(int(x), to_root[x]);
+    root_of[x] = r;
+    if(cell_of[std::size_t(r)] < 0) { cell_of[std::size_t(r)] = int(roots.size()); roots.push_back(r); }
+    cell_of[x] = cell_of[std::size_t(r)];
+  }
+  std::vector<char> complete(roots.size(), 1);
+  for(std::size_t x = 0; x < pieces.size(); ++x)
+    if(pieces.cut[x] && complete[std::size_t(cell_of[x])]) {
+      complete[std::size_t(cell_of[x])] = 0;
+      ++out.incomplete;
+      if(out.first_incomplete_face < 0) out.first_incomplete_face = pieces.face[x];
+    }
+
+  // corners
+  Integer_point_index index;
+  std::vector<int> corner(4 * roots.size(), -1);
+  out.faces_first.assign(1, 0);
+  for(std::size_t x = 0; x < pieces.size(); ++x) {
+    const std::size_t cell = std::size_t(cell_of[x]);
+    if(!complete[cell]) continue;
+    const int f = pieces.face[x];
+    const Grid_point& c = pieces.cell[x];
+    const Grid_point& root_cell = pieces.cell[std::size_t(root_of[x])];
+    if(to_root[x].apply_to_cell(c) != root_cell) {
+      message = "internal error: the " + cell_name(c, f) + " is joined to a piece of another cell";
+      return EXACTNESS_CHECK_FAILED;
+    }
+    for(int k = 0; k < 4; ++k) {
+      const Corner_place place = pieces.corner[x][std::size_t(k)];
+      if(place == OUTSIDE) continue;
+      const Grid_point p{c.u + cell_corner_offset[k][0], c.v + cell_corner_offset[k][1]};
+      const Grid_point q = to_root[x].apply(p);
+      int i = 0;
+      while(i < 3 && !(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1])) ++i;
+      CGAL_assertion(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1]);
+      const int id = index.id(locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition));
+      int& slot = corner[4 * cell + std::size_t(i)];
+      if(slot >= 0 && slot != id) {
+        message = "the " + cell_name(c, f) + " has two surface points at one corner (" + std::to_string(p.u) + ", " +
+                  std::to_string(p.v) + "): it is not a disk; the integer grid is too coarse for the surface (use a "
+                  "larger grid_scale)";
+        return INVALID_INPUT;
+      }
+      slot = id;
+    }
+  }
+  // the faces per cell: pieces are ordered by face, so each cell's list comes out ascending
+  std::vector<std::size_t> count(roots.size() + 1, 0);
+  for(std::size_t x = 0; x < pieces.size(); ++x) ++count[std::size_t(cell_of[x]) + 1];
+  for(std::size_t k = 0; k < roots.size(); ++k) count[k + 1] += count[k];
+  std::vector<int> faces_of_cell(pieces.size());      // the pieces' faces, grouped by cell
+  std::vector<std::size_t> fill(count.begin(), count.end() - 1);
+  for(std::size_t x = 0; x < pieces.size(); ++x) faces_of_cell[fill[std::size_t(cell_of[x])]++] = pieces.face[x];
+  for(std::size_t cell = 0; cell < roots.size(); ++cell) {
+    if(!complete[cell]) continue;
+    std::array<int, 4> q;
+    for(int i = 0; i < 4; ++i) {
+      q[std::size_t(i)] = corner[4 * cell + std::size_t(i)];
+      if(q[std::size_t(i)] < 0) {
+        const std::size_t r = std::size_t(roots[cell]);
+        message = "internal error: corner " + std::to_string(i) + " of the " + cell_name(pieces.cell[r], pieces.face[r]) +
+                  " lies in no face";
+        return EXACTNESS_CHECK_FAILED;
+      }
+    }
+    out.quads.push_back(q);
+    const auto b = faces_of_cell.begin() + std::ptrdiff_t(count[cell]), e = faces_of_cell.begin() + std::ptrdiff_t(count[cell + 1]);
+    out.faces.insert(out.faces.end(), b, std::unique(b, e));
+    out.faces_first.push_back(out.faces.size());
+  }
+  out.points = index.points();
+  return SUCCESS;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_CELLS_H

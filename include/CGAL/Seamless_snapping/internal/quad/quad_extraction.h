@@ -1,0 +1,257 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_EXTRACTION_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_EXTRACTION_H
+
+// Quad mesh extraction from an exact, fold-free integer-grid map (extract_quad_mesh()), in three stages:
+//   1. check_quad_input(): an exact IGM (is_exact_integer_grid_map_impl(), which also gives the rotation k
+//      of every cut edge), no fold-overs or zero-area triangles, the UVs in grid units (multiplied by the
+//      grid scale, exactly) and within 2^30, every vertex whose quad valence is not 4 (quad_valences(): a
+//      cone) on an integer point and not of valence 1; the map's Euler characteristic, border loops and
+//      exact UV area, for the verification;
+//   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h);
+//   3. the quad mesh: 3D positions (barycentric coordinates of each integer point, in double), the cells
+//      added face by face to a Surface_mesh (add_face() refuses a face with a corner twice or an edge
+//      already taken in its direction), which must end up manifold (else refused, with what is wrong),
+//      measured, and verified against the map (quad_mesh_checks.h).
+// No tracing and no rational construction before stage 3: every decision is an exact predicate on
+// doubles and integers (the tracer's and the patch layout's rationals are not needed on the grid).
+
+#include <CGAL/Seamless_snapping/Quad_mesh_report.h>
+#include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_mesh_checks.h>
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+// the largest number of cells in the UV bounding boxes of the faces (about 40 bytes each at most)
+constexpr std::size_t max_candidate_cells = std::size_t(1) << 26;
+// the largest |UV coordinate| in grid units
+constexpr double max_grid_coordinate = 0x1p30;
+
+struct Quad_extraction
+{
+  Corner_mesh cm;                                  // the map, UVs in grid units
+  Quad_cells cells;
+  std::vector<std::array<double, 3> > positions;   // per quad vertex
+};
+
+inline double ms_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// What the quad mesh is verified against (UVs in grid units): the quad valences, the cones (interior vertices of
+// valence other than 4), the Euler characteristic, the border loops, and twice the UV area, exactly: the sum over the
+// faces of det(a, b, c) = a x b + b x c + c x a (shoelace about the origin), in which the two terms of an edge whose
+// faces agree on its UVs cancel exactly; what is left are the terms of the sides on cut edges and on the border, each
+// an exact product of doubles (CGAL::Mpzf).
+inline Map_facts map_facts(const Corner_mesh& cm)
+{
+  Map_facts facts;
+  facts.valence = quad_valences(cm).valence;
+  std::vector<char> used(std::size_t(cm.n_vertices), 0);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    used[std::size_t(cm.target[h])] = 1;
+    const int a = cm.prev[h], o = cm.opp[h];
+    if(!cm.is_border_halfedge(o) && cm.u[h] == cm.u[cm.prev[o]] && cm.v[h] == cm.v[cm.prev[o]] && cm.u[a] == cm.u[o] &&
+       cm.v[a] == cm.v[o])
+      continue;                                                     // cancels with the opposite side
+    facts.twice_area += CGAL::Mpzf(cm.u[a]) * CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a]) * CGAL::Mpzf(cm.u[h]);
+  }
+  std::size_t vertices = 0;
+  for(int v = 0; v < cm.n_vertices; ++v) {
+    vertices += used[std::size_t(v)];
+    facts.cones += !cm.vertex_on_border[v] && used[std::size_t(v)] && facts.valence[std::size_t(v)] != 4 ? 1 : 0;
+  }
+  std::vector<char> walked(std::size_t(cm.n_halfedges), 0);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(!cm.is_border_halfedge(h) || walked[std::size_t(h)]) continue;
+    ++facts.boundary_loops;
+    for(int g = h; !walked[std::size_t(g)]; g = cm.next[g]) walked[std::size_t(g)] = 1;
+  }
+  facts.euler_characteristic = int(vertices) - cm.n_edges + cm.n_faces;
+  return facts;
+}
+
+// Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
+// a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice).
+inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, std::string& message)
+{
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    const int v = cm.target[h], q = valence[std::size_t(v)];
+    if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || q == 4) continue;
+    const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
+    if(on_integer && q != 1) continue;
+    message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns " +
+              (q == 1 ? "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
+                        "a corner twice; no quad mesh has it"
+                      : "but is not on an integer point: the map branches inside a cell");
+    return INVALID_INPUT;
+  }
+  return SUCCESS;
+}
+
+// Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
+inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<int>& edge_k, Map_facts& facts,
+                               Quad_mesh_report& r)
+{
+  r.faces = std::size_t(cm.n_faces);
+  std::string why;
+  if(!is_exact_integer_grid_map_impl(cm, {}, {}, {}, scale_exponent, &why, &edge_k)) {
+    r.message = "not an exact integer-grid map: " + why + "; snap it with integer_grid_map(true) first";
+    return INVALID_INPUT;
+  }
+  const Fold_overs folds = find_fold_overs(cm);
+  if(!folds.empty()) {
+    r.fold_overs.assign(folds.negative.begin(), folds.negative.end());
+    r.zero_area_faces.assign(folds.degenerate.begin(), folds.degenerate.end());
+    r.message = "the map has " + folds.describe() + ": its integer isolines do not form quads there; make the map "
+                "fold-free (untangle it) first";
+    return FOLD_OVERS;
+  }
+  const int exponent = -scale_exponent;
+  const Status s = normalize_uv_scale(cm, r.message, &exponent);
+  if(s != SUCCESS) return s;
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && !(std::fabs(cm.u[h]) < max_grid_coordinate && std::fabs(cm.v[h]) < max_grid_coordinate)) {
+      r.message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
+                  ") is 2^30 grid units or more from the origin: the quad mesh would be too large";
+      return RANGE_EXCEEDED;
+    }
+
+  facts = map_facts(cm);
+  r.input_euler_characteristic = facts.euler_characteristic;
+  r.input_boundary_loops = facts.boundary_loops;
+  r.cones = facts.cones;
+  r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
+  return check_cones(cm, facts.valence, r.message);
+}
+
+// The 3D point of an integer point p: the combination of the vertices of its edge or face with the
+// barycentric coordinates of p, evaluated in double precision (p itself is exact: Integer_point). On an
+// edge the parameter is (p - a)_c / (b - a)_c along the coordinate c in which the edge is longer: two
+// differences of exact numbers and a quotient, each rounded once. In a face the coordinates are ratios of
+// the 2x2 determinants of the corners relative to p, rounded.
+template <class Point3>
+std::array<double, 3> integer_point_position(const Corner_mesh& cm, const Integer_point& p,
+                                             const std::vector<Point3>& vertex_point)
+{
+  auto xyz = [&](int h) {
+    const Point3& q = vertex_point[std::size_t(cm.target[h])];
+    return std::array<double, 3>{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+  };
+  if(p.kind == AT_VERTEX) return xyz(p.halfedge);
+  const double pu = double(p.uv.u), pv = double(p.uv.v);
+  int corner[3];
+  double w[3];
+  if(p.kind == ON_EDGE) {                          // from source(h) (corner prev(h)) to target(h)
+    corner[0] = cm.prev[p.halfedge]; corner[1] = p.halfedge; corner[2] = -1;
+    const double du = cm.u[corner[1]] - cm.u[corner[0]], dv = cm.v[corner[1]] - cm.v[corner[0]];
+    const double lambda = std::fabs(du) >= std::fabs(dv) ? (pu - cm.u[corner[0]]) / du : (pv - cm.v[corner[0]]) / dv;
+    w[0] = 1 - lambda; w[1] = lambda; w[2] = 0;
+  } else {
+    corner[0] = p.halfedge; corner[1] = cm.next[p.halfedge]; corner[2] = cm.next[corner[1]];
+    double x[3], y[3];
+    for(int i = 0; i < 3; ++i) { x[i] = cm.u[corner[i]] - pu; y[i] = cm.v[corner[i]] - pv; }
+    double total = 0;
+    for(int i = 0; i < 3; ++i) {                   // twice the area of (p, corner i+1, corner i+2)
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      w[i] = x[j] * y[k] - y[j] * x[k];
+      total += w[i];
+    }
+    for(double& wi : w) wi /= total;
+  }
+  std::array<double, 3> r{{0, 0, 0}};
+  for(int i = 0; i < 3; ++i) {
+    if(corner[i] < 0) continue;
+    const std::array<double, 3> q = xyz(corner[i]);
+    for(int k = 0; k < 3; ++k) r[std::size_t(k)] += w[i] * q[std::size_t(k)];
+  }
+  return r;
+}
+
+// Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm.
+template <class Point3>
+Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point, Quad_extraction& out,
+                     Quad_mesh_report& r)
+{
+  auto t0 = std::chrono::steady_clock::now();
+  Corner_mesh& cm = out.cm;
+  Map_facts facts;
+  std::vector<int> edge_k;
+  Status s = check_quad_input(cm, scale_exponent, edge_k, facts, r);
+  r.check_ms = ms_since(t0);
+  if(s != SUCCESS) return s;
+
+  t0 = std::chrono::steady_clock::now();
+  std::vector<int> face_halfedge(std::size_t(cm.n_faces), -1);
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && face_halfedge[std::size_t(cm.face[h])] < 0) face_halfedge[std::size_t(cm.face[h])] = h;
+  const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
+  Cell_pieces pieces;
+  s = collect_cell_pieces(cm, face_halfedge, max_candidate_cells, pieces, r.message);
+  if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, out.cells, r.message);
+  r.cells_ms = ms_since(t0);
+  if(s != SUCCESS) return s;
+  r.incomplete_cells = out.cells.incomplete;
+
+  t0 = std::chrono::steady_clock::now();
+  const Quad_cells& cells = out.cells;
+  out.positions.clear();
+  Quad_surface m;
+  for(const Integer_point& p : cells.points) {
+    out.positions.push_back(integer_point_position(cm, p, vertex_point));
+    const std::array<double, 3>& x = out.positions.back();
+    m.add_vertex(Quad_surface::Point(x[0], x[1], x[2]));
+  }
+  std::size_t refused = 0;
+  for(const std::array<int, 4>& q : cells.quads)
+    refused += m.add_face(Quad_surface::Vertex_index(q[0]), Quad_surface::Vertex_index(q[1]), Quad_surface::Vertex_index(q[2]),
+                          Quad_surface::Vertex_index(q[3])) == Quad_surface::null_face() ? 1 : 0;
+  measure_quad_mesh(m, r);
+  if(refused > 0 || r.non_manifold_vertices > 0) {
+    std::string first;
+    analyze_quad_soup(cells.quads, r, first);
+    r.message = "the " + std::to_string(cells.quads.size()) + " cells do not form a polygon mesh (" +
+                std::to_string(refused) + " could not be added: " + std::to_string(r.repeated_vertex_quads) +
+                " with a corner twice, " + std::to_string(r.non_manifold_edges) + " edges of more than two cells or " +
+                "twice in one direction; " + std::to_string(r.non_manifold_vertices) + " vertices whose cells form "
+                "several fans" + (first.empty() ? "" : "; " + first) + "): the integer grid is too coarse for the surface "
+                "(use a larger grid_scale)";
+    r.mesh_ms = ms_since(t0);
+    return INVALID_INPUT;
+  }
+  measure_quad_mesh(m, r);
+  const bool verified = verify_quad_guarantees(m, cells, facts, r, r.message);
+  r.mesh_ms = ms_since(t0);
+  return verified ? SUCCESS : EXACTNESS_CHECK_FAILED;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_EXTRACTION_H

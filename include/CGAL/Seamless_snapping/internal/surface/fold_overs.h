@@ -1,0 +1,74 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FOLD_OVERS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FOLD_OVERS_H
+
+// The faces that keep a corner UV map from being locally injective: fold-overs (negatively oriented
+// UV triangles) and zero-area UV triangles, found with the exact orientation predicate on the corner
+// UVs (CGAL's filtered predicate on doubles: exact). Quad extraction and quad valences need a map
+// without them (extract_quad_mesh(), quad_valences()): each face of a fold-free map covers its UV
+// triangle once, counter-clockwise.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+struct Fold_overs
+{
+  std::vector<int> negative;     // faces (Corner_mesh numbering) whose UV triangle is negatively oriented
+  std::vector<int> degenerate;   // faces whose UV triangle has zero area
+
+  bool empty() const { return negative.empty() && degenerate.empty(); }
+
+  // "N fold-overs (faces a b c ...) and M zero-area UV triangles (faces ...)", at most 10 faces each
+  std::string describe() const
+  {
+    auto list = [](const std::vector<int>& f) {
+      std::string s;
+      for(std::size_t i = 0; i < f.size() && i < 10; ++i) s += (i ? " " : "") + std::to_string(f[i]);
+      return s + (f.size() > 10 ? " ..." : "");
+    };
+    return std::to_string(negative.size()) + " fold-overs (negatively oriented UV triangles" +
+           (negative.empty() ? "" : ": faces " + list(negative)) + ") and " + std::to_string(degenerate.size()) +
+           " zero-area UV triangles" + (degenerate.empty() ? "" : " (faces " + list(degenerate) + ")");
+  }
+};
+
+inline Fold_overs find_fold_overs(const Corner_mesh& cm)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  Fold_overs r;
+  std::vector<signed char> o(std::size_t(cm.n_faces), 1);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
+    const int a = cm.prev[h], c = cm.next[h];
+    o[std::size_t(cm.face[h])] = static_cast<signed char>(
+        CGAL::orientation(P(cm.u[a], cm.v[a]), P(cm.u[h], cm.v[h]), P(cm.u[c], cm.v[c])));
+  }
+  for(int f = 0; f < cm.n_faces; ++f) {
+    if(o[std::size_t(f)] == CGAL::NEGATIVE) r.negative.push_back(f);
+    else if(o[std::size_t(f)] == CGAL::ZERO) r.degenerate.push_back(f);
+  }
+  return r;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_FOLD_OVERS_H

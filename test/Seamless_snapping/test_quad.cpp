@@ -1,0 +1,548 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+// Tests of the quad layer: extract_quad_mesh() on exact integer-grid maps, and quad_valences() against it.
+//   quad: exact tests on doubles  same_difference() and is_integer_sum() (TwoSum, used by the exact integer-grid
+//                               check) agree with Gmpq on 200000 random, near-miss and exact cases
+// Every extracted mesh is checked here, independently of the extractor (check_quad_mesh()): a valid
+// manifold polygon mesh of quads; closed when the map is; V - E + F and the number of quads equal to the
+// map's Euler characteristic and exact UV area (Gmpq, computed here from the corner UVs) when no cell was
+// dropped; every quad vertex maps back exactly to its integer UV (a corner UV of its vertex, a point of its
+// edge, a point inside its face, compared in Gmpq); its valence is quad_valences()'s for a mesh vertex, 4
+// elsewhere inside (3 on a border edge), so that the irregular vertices are exactly the cones; every face of
+// the map is covered; the report agrees with the mesh.
+//   quad: cube                  a generated exact IGM with 8 cones of valence 3, sides 1-3, grid scales 1, 2:
+//                               6 n^2 S^2 quads, chi 2; the map scaled by 2^-3 with grid_scale 8 gives the same
+//                               mesh bit for bit (scale covariance)
+//   quad: torus                 flat tori (no cone): n^2 quads, chi 0, all valence 4; a torus of one cell (its
+//                               four corners one point: INVALID_INPUT), cells sharing all sides (2 x 2 cells: not
+//                               a polygon mesh, INVALID_INPUT), a non-integer period (not an IGM, INVALID_INPUT)
+//   quad: grid                  a planar grid: border on isolines (16 quads, valences 2/3/4), and shifted off
+//                               them (the 16 cells cut by the border dropped and counted, 9 quads)
+//   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
+//                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
+//                               not a power of two; the output mesh is unchanged on every refusal
+//   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
+//                               (8 quads around it), off the integer points refused (INVALID_INPUT)
+//   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
+//                               with integer_grid_map(true) at grid scales 2, 4, 8: chi 2, 4 cones of valence 2,
+//                               scale covariance; the Square map (cones of 90 degrees) is refused (valence 1)
+//   quad: shared data           every shared map up to 1 MB (600 kB under --sanitizer-subset) snapped with
+//                               integer_grid_map(true): fold-free ones give a checked quad mesh (the horse also
+//                               at grid scale 2), the ones with fold-overs FOLD_OVERS listing the snap report's
+//                               flipped and zero-area faces
+
+#include "mesh_test_support.h"
+
+#include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/quad_valences.h>
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Gmpq.h>
+
+#include <array>
+#include <cassert>
+#include <cstdio>
+#include <iterator>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef Mesh::Face_index face_descriptor;
+typedef SS::Quad_vertex_origin<Mesh> Origin;
+typedef Mesh::Property_map<vertex_descriptor, Origin> Origin_map;
+typedef Mesh::Property_map<face_descriptor, std::vector<face_descriptor> > Covered_map;
+typedef CGAL::Gmpq Q;
+
+struct Quad_result
+{
+  SS::Quad_mesh_report report;
+  Mesh q;                        // the quad mesh (the same Surface_mesh type as the input)
+  Origin_map origin;
+  Covered_map covered;
+};
+
+static void extract(const Mesh& m, UV_map uv, double S, Quad_result& r)
+{
+  r.origin = r.q.add_property_map<vertex_descriptor, Origin>("v:origin").first;
+  r.covered = r.q.add_property_map<face_descriptor, std::vector<face_descriptor> >("f:covered").first;
+  r.report = SS::extract_quad_mesh(m, uv, r.q, SS::parameters::grid_scale(S),
+                                   SS::parameters::vertex_origin_map(r.origin).face_origin_map(r.covered));
+}
+
+static int euler(const Mesh& m)
+{
+  return int(m.number_of_vertices()) - int(m.number_of_edges()) + int(m.number_of_faces());
+}
+
+// the exact UV area of m in grid units (UVs times S), from its corner UVs
+static Q uv_area(const Mesh& m, UV_map uv, double S)
+{
+  Q twice(0);
+  for(face_descriptor f : m.faces()) {
+    const halfedge_descriptor h = m.halfedge(f);
+    const Point_2 a = get(uv, m.prev(h)), b = get(uv, h), c = get(uv, m.next(h));
+    twice += (Q(b.x()) - Q(a.x())) * (Q(c.y()) - Q(a.y())) - (Q(b.y()) - Q(a.y())) * (Q(c.x()) - Q(a.x()));
+  }
+  return twice * Q(S) * Q(S) / 2;
+}
+
+static Q cross(const std::array<Q, 2>& a, const std::array<Q, 2>& b, const std::array<Q, 2>& c)
+{
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+static std::array<Q, 2> exact_uv(UV_map uv, halfedge_descriptor h)
+{
+  return {{Q(get(uv, h).x()), Q(get(uv, h).y())}};
+}
+
+// The quad vertex's origin maps back exactly to its integer UV: P = (u, v) / S in the chart of its face is
+// the corner UV of its vertex (VERTEX), a point strictly inside its edge (EDGE), strictly inside its face
+// (FACE); its position is the barycentric point, rounded (checked to 1e-12 of the bounding box).
+static void check_origin(const Mesh& m, UV_map uv, double S, const Origin& o, const Point_3& position, double diagonal)
+{
+  assert(m.face(o.halfedge) == o.face && o.face != Mesh::null_face());
+  const std::array<Q, 2> P = {{Q(double(o.u)) / Q(S), Q(double(o.v)) / Q(S)}};
+  const halfedge_descriptor h = o.halfedge;
+  const std::array<Q, 2> a = exact_uv(uv, m.prev(h)), b = exact_uv(uv, h), c = exact_uv(uv, m.next(h));
+  std::array<Q, 3> w;                              // barycentric w.r.t. source(h), target(h), target(next(h))
+  const Q total = cross(a, b, c);
+  w[0] = cross(P, b, c) / total; w[1] = cross(a, P, c) / total; w[2] = Q(1) - w[0] - w[1];
+  if(o.location == Origin::VERTEX) {
+    assert(b == P && position == m.point(m.target(h)));
+    return;
+  }
+  assert(CGAL::is_zero(w[2]) == (o.location == Origin::EDGE));
+  assert(CGAL::is_positive(w[0]) && CGAL::is_positive(w[1]) && (o.location == Origin::EDGE || CGAL::is_positive(w[2])));
+  const vertex_descriptor vs[3] = {m.source(h), m.target(h), m.target(m.next(h))};
+  double x[3] = {0, 0, 0};
+  for(int i = 0; i < 3; ++i)
+    for(int k = 0; k < 3; ++k) x[k] += CGAL::to_double(w[std::size_t(i)]) * m.point(vs[i])[k];
+  for(int k = 0; k < 3; ++k) assert(std::abs(position[k] - x[k]) <= 1e-12 * diagonal);
+}
+
+// Checks r against m (see the header comment); `what` names the map in the output line.
+static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
+{
+  const SS::Quad_mesh_report& rep = r.report;
+  if(rep.status != SS::SUCCESS) std::cerr << what << ": " << SS::status_name(rep.status) << " " << rep.message << std::endl;
+  assert(rep.status == SS::SUCCESS);
+  const Mesh& q = r.q;
+  assert(CGAL::is_valid_polygon_mesh(q) && CGAL::is_quad_mesh(q) && q.number_of_faces() > 0);
+  std::vector<halfedge_descriptor> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(q, std::back_inserter(pinched));
+  assert(pinched.empty());
+  const bool covers = rep.incomplete_cells == 0;
+  assert(rep.covers_map() == covers);
+  const Q area = uv_area(m, uv, S);
+  assert(rep.uv_area == area);
+  if(covers) {
+    assert(Q(int(q.number_of_faces())) == area);                 // as many quads as the exact UV area
+    assert(euler(q) == euler(m));
+    assert(!CGAL::is_closed(m) || CGAL::is_closed(q));
+  } else {
+    assert(Q(int(q.number_of_faces())) < area && !CGAL::is_closed(q));
+  }
+  // origins, valences, cones
+  const SS::Quad_valences qv = SS::quad_valences(m, uv);
+  assert(qv.status == SS::SUCCESS);
+  std::size_t cones = 0, irregular = 0, met_cones = 0;
+  for(vertex_descriptor v : m.vertices()) cones += !m.is_border(v) && qv.valence[std::size_t(v)] != 4 ? 1 : 0;
+  CGAL::Bbox_3 box;
+  for(vertex_descriptor v : m.vertices()) box += m.point(v).bbox();
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  std::map<vertex_descriptor, int> mesh_vertices;
+  for(vertex_descriptor v : q.vertices()) {
+    const Origin& o = get(r.origin, v);
+    check_origin(m, uv, S, o, q.point(v), diagonal);
+    const bool border = q.is_border(v);
+    const int d = int(q.degree(v));
+    irregular += !border && d != 4 ? 1 : 0;
+    if(o.location == Origin::VERTEX) assert(++mesh_vertices[m.target(o.halfedge)] == 1);   // one quad vertex per mesh vertex
+    if(border && !covers) continue;
+    const int expected = o.location == Origin::VERTEX ? qv.valence[std::size_t(m.target(o.halfedge))] : (border ? 3 : 4);
+    if(d != expected) std::cerr << what << ": quad vertex " << v << " has valence " << d << ", expected " << expected << std::endl;
+    assert(d == expected);
+    met_cones += !border && o.location == Origin::VERTEX && expected != 4 ? 1 : 0;
+  }
+  assert(rep.irregular_vertices == irregular && rep.cones == cones);
+  if(covers) assert(irregular == cones && met_cones == cones);   // the irregular vertices are exactly the cones
+  // covered faces
+  std::vector<char> covered(m.number_of_faces(), 0);
+  for(face_descriptor f : q.faces()) {
+    const std::vector<face_descriptor>& c = get(r.covered, f);
+    assert(!c.empty() && std::is_sorted(c.begin(), c.end()));
+    for(face_descriptor g : c) covered[std::size_t(g)] = 1;
+  }
+  if(covers) assert(std::find(covered.begin(), covered.end(), 0) == covered.end());
+  // the report agrees with the mesh
+  std::size_t border_edges = 0;
+  for(Mesh::Edge_index e : q.edges()) border_edges += q.is_border(e) ? 1 : 0;
+  assert(rep.quads == q.number_of_faces() && rep.quad_vertices == q.number_of_vertices() &&
+         rep.quad_edges == q.number_of_edges() && rep.border_edges == border_edges && rep.euler_characteristic == euler(q));
+  assert(rep.non_manifold_vertices == 0 && (border_edges > 0 || rep.boundary_loops == 0));
+  std::string histogram;
+  for(std::size_t d = 0; d < rep.valence_histogram.size(); ++d)
+    if(rep.valence_histogram[d] > 0) histogram += " " + std::to_string(d) + ":" + std::to_string(rep.valence_histogram[d]);
+  std::printf("quad: %-46s %6zu quads %6zu vertices, chi %d, %zu boundary loops, %zu irregular = cones %zu, valences%s%s;"
+              " %.1f ms (check %.1f, cells %.1f, mesh %.1f)\n", what.c_str(), rep.quads, rep.quad_vertices,
+              rep.euler_characteristic, rep.boundary_loops, irregular, cones, histogram.c_str(),
+              covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
+              rep.check_ms, rep.cells_ms, rep.mesh_ms);
+}
+
+// the same quad mesh, bit for bit: positions, faces, origins
+static bool same_quad_mesh(const Quad_result& a, const Quad_result& b)
+{
+  if(a.q.number_of_vertices() != b.q.number_of_vertices() || a.q.number_of_faces() != b.q.number_of_faces()) return false;
+  for(vertex_descriptor v : a.q.vertices()) {
+    const Origin &oa = get(a.origin, v), &ob = get(b.origin, v);
+    if(a.q.point(v) != b.q.point(v) || oa.halfedge != ob.halfedge || oa.u != ob.u || oa.v != ob.v) return false;
+  }
+  for(face_descriptor f : a.q.faces()) {
+    std::vector<vertex_descriptor> va, vb;
+    for(vertex_descriptor v : CGAL::vertices_around_face(a.q.halfedge(f), a.q)) va.push_back(v);
+    for(vertex_descriptor v : CGAL::vertices_around_face(b.q.halfedge(f), b.q)) vb.push_back(v);
+    if(va != vb) return false;
+  }
+  return true;
+}
+
+static void scale_uv(Mesh& m, UV_map uv, double s)
+{
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * s, get(uv, h).y() * s));
+}
+
+// a refusal: the status, a message containing `words`, and the output mesh unchanged (one vertex added before)
+static SS::Quad_mesh_report check_refused(const Mesh& m, UV_map uv, double S, SS::Status expected, const char* words,
+                                          const std::string& what)
+{
+  Quad_result r;
+  r.q.add_vertex(Point_3(1, 2, 3));
+  extract(m, uv, S, r);
+  if(r.report.status != expected || r.report.message.find(words) == std::string::npos)
+    std::cerr << what << ": expected " << SS::status_name(expected) << " with '" << words << "', got "
+              << SS::status_name(r.report.status) << ": " << r.report.message << std::endl;
+  assert(r.report.status == expected && r.report.message.find(words) != std::string::npos);
+  assert(r.q.number_of_vertices() == 1 && r.q.number_of_faces() == 0 && r.q.point(vertex_descriptor(0)) == Point_3(1, 2, 3));
+  std::cout << "quad: " << what << ": " << SS::status_name(r.report.status) << ": " << r.report.message << "\n";
+  return r.report;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The surface of the cube [0, n]^3 as an exact integer-grid map: each side a grid of unit squares (two
+// triangles each) in its own chart, the coordinates of the side's plane in the order that makes it
+// counter-clockwise seen from outside. The transitions are quarter turns plus integer translations; the 8
+// corners are cones of 270 degrees (valence 3).
+static void make_cube_map(Mesh& m, UV_map& uv, int n)
+{
+  std::map<std::array<int, 3>, vertex_descriptor> vertex;
+  auto V = [&](const std::array<int, 3>& p) {
+    auto it = vertex.find(p);
+    if(it == vertex.end()) it = vertex.emplace(p, m.add_vertex(Point_3(p[0], p[1], p[2]))).first;
+    return it->second;
+  };
+  uv = uv_of(m);
+  // per side: the normal axis, its value, and the two chart axes (a, b) with e_a x e_b = outward normal
+  const int sides[6][4] = {{2, n, 0, 1}, {2, 0, 1, 0}, {0, n, 1, 2}, {0, 0, 2, 1}, {1, n, 2, 0}, {1, 0, 0, 2}};
+  for(const auto& s : sides)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) {
+        auto point = [&](int a, int b) { std::array<int, 3> p; p[std::size_t(s[0])] = s[1]; p[std::size_t(s[2])] = a; p[std::size_t(s[3])] = b; return p; };
+        const int A[4] = {i, i + 1, i + 1, i}, B[4] = {j, j, j + 1, j + 1};
+        for(const std::array<int, 3>& t : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
+          const face_descriptor f = m.add_face(V(point(A[t[0]], B[t[0]])), V(point(A[t[1]], B[t[1]])), V(point(A[t[2]], B[t[2]])));
+          assert(f != Mesh::null_face());
+          for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+            for(int c : t)
+              if(m.target(h) == V(point(A[c], B[c]))) put(uv, h, Point_2(A[c], B[c]));
+        }
+      }
+}
+
+static void test_cube()
+{
+  for(int n = 1; n <= 3; ++n) {
+    Mesh m; UV_map uv;
+    make_cube_map(m, uv, n);
+    assert(CGAL::is_closed(m) && SS::is_exact_integer_grid_map(m, uv));
+    for(double S : {1., 2.}) {
+      Quad_result r;
+      extract(m, uv, S, r);
+      check_quad_mesh(m, uv, S, r, "cube " + std::to_string(n) + ", grid scale " + std::to_string(int(S)));
+      assert(r.report.quads == std::size_t(6 * n * n * S * S) && r.report.euler_characteristic == 2);
+      assert(r.report.cones == 8 && r.report.valence_histogram[3] == 8);
+      // scale covariance: UVs times 2^-3 with grid_scale 8 S: the same mesh, bit for bit
+      Mesh small = m;
+      UV_map uvs = uv_of(small);
+      scale_uv(small, uvs, 0.125);
+      Quad_result rs;
+      extract(small, uvs, 8 * S, rs);
+      assert(rs.report.status == SS::SUCCESS && same_quad_mesh(r, rs));
+    }
+  }
+}
+
+static void test_torus()
+{
+  for(int n : {3, 5}) {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, n, n);
+    Quad_result r;
+    extract(m, uv, 1, r);
+    check_quad_mesh(m, uv, 1, r, "flat torus " + std::to_string(n));
+    assert(r.report.quads == std::size_t(n * n) && r.report.euler_characteristic == 0 && r.report.irregular_vertices == 0);
+  }
+  Mesh m; UV_map uv;
+  make_flat_torus(m, uv, 4, 4);
+  check_refused(m, uv, 0.25, SS::INVALID_INPUT, "a corner twice", "torus of 1 x 1 cells");
+  const SS::Quad_mesh_report r = check_refused(m, uv, 0.5, SS::INVALID_INPUT, "do not form a polygon mesh", "torus of 2 x 2 cells");
+  assert(r.non_manifold_edges > 0);
+  Mesh odd; UV_map uvo;
+  make_flat_torus(odd, uvo, 3, 3.5);
+  check_refused(odd, uvo, 1, SS::INVALID_INPUT, "translation is not an integer vector", "torus of period 3.5");
+}
+
+static void test_grid()
+{
+  const int n = 4;
+  for(double shift : {0., 0.5}) {
+    Mesh m;
+    triangulated_grid(m, n, true);
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x() + shift, m.point(m.target(h)).y() + shift / 2));
+    Quad_result r;
+    extract(m, uv, 1, r);
+    check_quad_mesh(m, uv, 1, r, shift == 0 ? "grid, border on isolines" : "grid, border off isolines");
+    assert(r.report.boundary_loops == 1 && r.report.euler_characteristic == 1);
+    if(shift == 0) {
+      assert(r.report.quads == 16 && r.report.covers_map());
+      assert(r.report.valence_histogram[2] == 4 && r.report.valence_histogram[3] == 12 && r.report.valence_histogram[4] == 9);
+    } else {
+      assert(r.report.quads == 9 && r.report.incomplete_cells == 16 && !r.report.covers_map());
+    }
+  }
+}
+
+// a fan of 3 triangles around an interior vertex c spanning 90 degrees in UV: a cone of valence 1 at (0, 0),
+// the cut edge c-w0 with k = 1 and translation 0
+static void make_quarter_turn_cone(Mesh& m, UV_map& uv)
+{
+  const vertex_descriptor c = m.add_vertex(Point_3(0, 0, 1));
+  std::vector<vertex_descriptor> w;
+  for(int i = 0; i < 3; ++i) w.push_back(m.add_vertex(Point_3(std::cos(2 * CGAL_PI * i / 3), std::sin(2 * CGAL_PI * i / 3), 0)));
+  uv = uv_of(m);
+  const Point_2 fan[4] = {Point_2(2, 0), Point_2(2, 1), Point_2(1, 2), Point_2(0, 2)};   // w0, w1, w2, w0 again
+  for(int i = 0; i < 3; ++i) {
+    const face_descriptor f = m.add_face(c, w[std::size_t(i)], w[std::size_t((i + 1) % 3)]);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      put(uv, h, m.target(h) == c ? Point_2(0, 0) : m.target(h) == w[std::size_t(i)] ? fan[i] : fan[i + 1]);
+  }
+}
+
+// A fan of 8 triangles around an interior vertex c whose UV angle sum is 8 quarter turns in one chart (no cut edge:
+// the map winds twice around c, a branch point), c at `center`, the other vertices at 2 units in the axis directions.
+static void make_double_fan(Mesh& m, UV_map& uv, const Point_2& center)
+{
+  const vertex_descriptor c = m.add_vertex(Point_3(0, 0, 1));
+  std::vector<vertex_descriptor> w;
+  for(int i = 0; i < 8; ++i) w.push_back(m.add_vertex(Point_3(std::cos(CGAL_PI * i / 4), std::sin(CGAL_PI * i / 4), 0)));
+  uv = uv_of(m);
+  const double d[4][2] = {{2, 0}, {0, 2}, {-2, 0}, {0, -2}};
+  for(int i = 0; i < 8; ++i) {
+    const face_descriptor f = m.add_face(c, w[std::size_t(i)], w[std::size_t((i + 1) % 8)]);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+      const int k = m.target(h) == c ? -1 : m.target(h) == w[std::size_t(i)] ? i % 4 : (i + 1) % 4;
+      put(uv, h, k < 0 ? center : Point_2(center.x() + d[k][0], center.y() + d[k][1]));
+    }
+  }
+}
+
+static void test_branch_points()
+{
+  // on an integer point: 8 quads around it, a vertex of valence 8 (the cells along the diagonal border are cut)
+  Mesh m; UV_map uv;
+  make_double_fan(m, uv, Point_2(0, 0));
+  assert(SS::is_exact_integer_grid_map(m, uv) && SS::quad_valences(m, uv).valence[0] == 8);
+  Quad_result r;
+  extract(m, uv, 1, r);
+  check_quad_mesh(m, uv, 1, r, "branch point of 8 quarter turns on (0, 0)");
+  assert(r.report.quads == 8 && r.report.valence_histogram[8] == 1 && r.report.incomplete_cells > 0);
+  // off the integer points: refused
+  Mesh b; UV_map uvb;
+  make_double_fan(b, uvb, Point_2(0.5, 0.25));
+  assert(SS::is_exact_integer_grid_map(b, uvb));
+  check_refused(b, uvb, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns off the grid");
+}
+
+static void test_refusals()
+{
+  // fold-overs and zero-area triangles: the grid with vertex (1, 1) moved to (3, 1) in UV, (1, 2) onto (1, 3);
+  // an IGM (no cut edge)
+  Mesh m;
+  const std::vector<vertex_descriptor> vs = triangulated_grid(m, 3, true);
+  UV_map uv = uv_of(m);
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h))
+      put(uv, h, m.target(h) == vs[5] ? Point_2(3, 1) : m.target(h) == vs[9] ? Point_2(1, 3)
+                                      : Point_2(m.point(m.target(h)).x(), m.point(m.target(h)).y()));
+  std::vector<std::size_t> negative, zero;
+  for(face_descriptor f : m.faces()) {
+    const halfedge_descriptor h = m.halfedge(f);
+    const int s = CGAL::sign(cross(exact_uv(uv, m.prev(h)), exact_uv(uv, h), exact_uv(uv, m.next(h))));
+    if(s < 0) negative.push_back(std::size_t(f));
+    if(s == 0) zero.push_back(std::size_t(f));
+  }
+  assert(!negative.empty() && !zero.empty() && SS::is_exact_integer_grid_map(m, uv));
+  const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "fold-over", "grid with fold-overs");
+  assert(r.fold_overs == negative && r.zero_area_faces == zero);
+  const SS::Quad_valences qv = SS::quad_valences(m, uv);
+  assert(qv.status == SS::FOLD_OVERS && qv.fold_overs == negative && qv.zero_area_faces == zero && qv.valence.empty());
+  // a grid scale that is not a power of two
+  check_refused(m, uv, 3, SS::INVALID_INPUT, "not a power of two", "grid scale 3");
+  // a cone of 90 degrees
+  Mesh c; UV_map uvc;
+  make_quarter_turn_cone(c, uvc);
+  assert(SS::is_exact_integer_grid_map(c, uvc) && SS::quad_valences(c, uvc).valence[0] == 1);
+  check_refused(c, uvc, 1, SS::INVALID_INPUT, "valence 1", "cone of 90 degrees");
+}
+
+// CGAL's bear with an Orbifold Tutte map of the given type (farthest-point cones); false without CGAL's data
+static bool bear_orbifold(Mesh& m, UV_map& uv, SMP::Orbifold_type type)
+{
+  const fs::path p = fs::path(SS_CGAL_DATA_DIR) / "bear.off";
+  if(std::string(SS_CGAL_DATA_DIR).empty() || !fs::exists(p) || !CGAL::IO::read_polygon_mesh(p.string(), m)) {
+    std::cout << "quad: bear orbifold: SKIPPED (no " << p.string() << ")\n";
+    return false;
+  }
+  uv = uv_of(m);
+  std::string msg;
+  const std::size_t cones = SS::internal::orbifold_cone_count(type);
+  assert(SS::internal::make_orbifold_tutte_uv(m, uv, SS::internal::farthest_point_cones(m, cones), type, msg) == SS::SUCCESS);
+  return true;
+}
+
+static void test_bear_orbifold()
+{
+  Mesh input; UV_map uv_in;
+  if(!bear_orbifold(input, uv_in, SMP::Parallelogram)) return;
+  for(double S : {2., 4., 8.}) {
+    Mesh m = input;
+    UV_map uv = uv_of(m);
+    const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(S));
+    assert(s.status == SS::SUCCESS && s.flips_after_repair == 0 && s.degenerate_after_repair == 0);
+    Quad_result r;
+    extract(m, uv, S, r);
+    check_quad_mesh(m, uv, S, r, "bear orbifold Parallelogram, scale " + std::to_string(int(S)));
+    assert(r.report.euler_characteristic == 2 && r.report.cones == 4 && r.report.valence_histogram[2] == 4);
+    if(S == 8) {                                    // the map scaled by 2^-5, grid_scale 2^8: the same mesh
+      Mesh small = m;
+      UV_map uvs = uv_of(small);
+      scale_uv(small, uvs, 1. / 32);
+      Quad_result rs;
+      extract(small, uvs, S * 32, rs);
+      assert(rs.report.status == SS::SUCCESS && same_quad_mesh(r, rs));
+    }
+  }
+  Mesh m; UV_map uv;
+  bear_orbifold(m, uv, SMP::Square);
+  assert(SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true)).status == SS::SUCCESS);
+  check_refused(m, uv, 1, SS::INVALID_INPUT, "valence 1", "bear orbifold Square");
+}
+
+static void test_shared_data()
+{
+  std::vector<fs::path> files;
+  if(!shared_obj_files_or_skip("quad: shared data", files)) return;
+  std::size_t extracted = 0, folded = 0;
+  for(const fs::path& p : files) {
+    if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_quad
+    Mesh m;
+    if(!load_obj(p, m)) continue;
+    UV_map uv = uv_of(m);
+    const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    const std::string name = p.filename().string();
+    if(s.status != SS::SUCCESS) {
+      std::cout << "quad: " << name << ": not snapped to an integer-grid map (" << SS::status_name(s.status) << ")\n";
+      continue;
+    }
+    if(s.flips_after_repair + s.degenerate_after_repair > 0) {
+      const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "untangle", name);
+      assert(r.fold_overs.size() == s.flips_after_repair && r.zero_area_faces.size() == s.degenerate_after_repair);
+      ++folded;
+      continue;
+    }
+    for(double S : {1., 2.}) {
+      if(S == 2 && name.find("horse") == std::string::npos) continue;
+      Quad_result r;                             // an IGM at grid scale 1 is one at 2 as well
+      extract(m, uv, S, r);
+      check_quad_mesh(m, uv, S, r, name + ", grid scale " + std::to_string(int(S)));
+      ++extracted;
+    }
+  }
+  std::cout << "quad: shared data: " << extracted << " quad meshes checked, " << folded << " maps with fold-overs refused\n";
+  assert(extracted >= 3);
+}
+
+// The exact tests on doubles that the extractor's input check uses (exact_uv_check.h, integer_grid_constraints.h):
+// same_difference (x - y == z - w, by TwoSum pairs) and is_integer_sum ((a + b) 2^s an integer) against Gmpq, on
+// random doubles of every magnitude, on near misses (one ulp off) and on exact hits.
+static void test_exact_double_tests()
+{
+  std::mt19937_64 rng(11);
+  auto any_double = [&]() {
+    const double m = std::uniform_real_distribution<double>(-1, 1)(rng);
+    return std::ldexp(m, int(rng() % 2090) - 1070);   // finite: below 2^1020
+  };
+  auto grid_double = [&]() { return double(std::int64_t(rng() % 2001) - 1000) * std::ldexp(1., -int(rng() % 60)); };
+  std::size_t equal = 0, integral = 0;
+  for(int i = 0; i < 200000; ++i) {
+    const bool grid = i % 2 == 0;
+    double x = grid ? grid_double() : any_double(), y = grid ? grid_double() : any_double();
+    double z = grid ? grid_double() : any_double(), w = grid ? grid_double() : any_double();
+    if(i % 4 == 1) { z = x + std::ldexp(1., int(rng() % 8)); w = y + std::ldexp(1., int(rng() % 8)); }   // often equal
+    if(i % 8 == 3) w = std::nextafter(w, 1e300);                                                   // a near miss
+    const bool same = Q(x) - Q(y) == Q(z) - Q(w);
+    assert(SS::internal::same_difference(x, y, z, w) == same);
+    equal += same ? 1 : 0;
+    const int e = int(rng() % 80) - 40;
+    const Q scaled = (Q(x) + Q(y)) * (e >= 0 ? Q(CGAL::Gmpz(1) << e) : Q(CGAL::Gmpz(1), CGAL::Gmpz(1) << -e));
+    assert(SS::internal::is_integer_sum(x, y, e) == SS::internal::is_integer(scaled));
+    integral += SS::internal::is_integer(scaled) ? 1 : 0;
+  }
+  std::cout << "quad: exact tests on doubles: 200000 cases agree with Gmpq (" << equal << " equal differences, " << integral
+            << " integer sums)\n";
+  assert(equal > 10000 && integral > 10000);
+}
+
+int main(int argc, char** argv)
+{
+  std::setvbuf(stdout, nullptr, _IONBF, 0);
+  parse_test_arguments(argc, argv);
+  test_exact_double_tests();
+  test_cube();
+  test_torus();
+  test_grid();
+  test_refusals();
+  test_branch_points();
+  if(!sanitizer_subset()) test_bear_orbifold();
+  test_shared_data();
+  std::cout << "test_quad: all passed\n";
+  return 0;
+}
