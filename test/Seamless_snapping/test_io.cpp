@@ -89,7 +89,6 @@ static bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a)
 template <class CornerCheck>
 static bool same_mesh(const Mesh& a, UV_map ua, const Mesh& b, UV_map ub, std::string& why, const CornerCheck& corner)
 {
-  max_uv_difference = 0;
   if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces()) { why = "counts"; return false; }
   for(vertex_descriptor v : a.vertices()) {
     const Point_3& p = a.point(v); const Point_3& q = b.point(vertex_descriptor(v.idx()));
