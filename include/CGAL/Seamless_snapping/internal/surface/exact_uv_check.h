@@ -16,6 +16,7 @@
 // exactly, with zero tolerance.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/dyadic_sum.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
@@ -43,38 +44,73 @@ inline CGAL::Mpzf exact_row_residual(const Constraint_rows& rows, std::size_t i,
   return r;
 }
 
+// the same residual in integers (dyadic_sum.h); it may not fit (then use exact_row_residual())
+inline Dyadic_sum dyadic_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+{
+  Dyadic_sum r;
+  r.add_integer(-rows.rhs[i]);
+  for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k) r.add(rows.coef[k], x[rows.col[k]]);
+  return r;
+}
+
+// true iff row i holds exactly for x: in integers, or with CGAL::Mpzf when the values span too much
+inline bool row_holds_exactly(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+{
+  const Dyadic_sum r = dyadic_row_residual(rows, i, x);
+  return r.fits() ? r.is_zero() : exact_row_residual(rows, i, x).is_zero();
+}
+
 // Index of the first row with a nonzero exact residual, or -1 when every row holds exactly.
 inline long first_violated_row(const Constraint_rows& rows, const std::vector<double>& x)
 {
   for(std::size_t i = 0; i < rows.size(); ++i)
-    if(!exact_row_residual(rows, i, x).is_zero()) return long(i);
+    if(!row_holds_exactly(rows, i, x)) return long(i);
   return -1;
 }
 
-// max_i |sum_j C_ij x_j - b_i|, computed exactly, then rounded to double.
+// max_i |sum_j C_ij x_j - b_i|, computed exactly, then rounded to double (CGAL::Mpzf::to_double() of the
+// first row with the largest residual; the rows are compared in integers where they fit).
 inline double max_abs_residual(const Constraint_rows& rows, const std::vector<double>& x)
 {
-  CGAL::Mpzf m(0);
+  long best = -1;                 // the first row with the largest |residual| so far
+  Dyadic_sum best_sum;            // its residual, when it fits
+  bool best_fits = true;
+  CGAL::Mpzf best_mpzf(0);        // its residual, when it or a later row does not fit
+  auto abs_mpzf = [&](std::size_t i) { CGAL::Mpzf r = exact_row_residual(rows, i, x); return r.sign() == CGAL::NEGATIVE ? -r : r; };
   for(std::size_t i = 0; i < rows.size(); ++i) {
-    CGAL::Mpzf r = exact_row_residual(rows, i, x);
-    if(r.sign() == CGAL::NEGATIVE) r = -r;
-    if(CGAL::compare(m, r) == CGAL::SMALLER) m = r;
+    const Dyadic_sum r = dyadic_row_residual(rows, i, x);
+    if(r.fits() && best_fits) {
+      if(r.compare_magnitude(best_sum) > 0) { best = long(i); best_sum = r; }
+      continue;
+    }
+    if(best_fits) { best_mpzf = best < 0 ? CGAL::Mpzf(0) : abs_mpzf(std::size_t(best)); best_fits = false; }
+    const CGAL::Mpzf a = abs_mpzf(i);
+    if(CGAL::compare(best_mpzf, a) == CGAL::SMALLER) { best = long(i); best_mpzf = a; }
   }
-  return m.to_double();
+  if(best < 0) return 0.;
+  return abs_mpzf(std::size_t(best)).to_double();
 }
 
-// true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).
+// true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h):
+// R^k d_i - d_j = 0 per component, in integers (Gmpq when the four values span too much)
 inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
 {
   const int o = cm.opp[h];
   const int ph = cm.prev[h], po = cm.prev[o];
   // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o)
-  const CGAL::Gmpq di[2] = { CGAL::Gmpq(cm.u[h]) - CGAL::Gmpq(cm.u[ph]), CGAL::Gmpq(cm.v[h]) - CGAL::Gmpq(cm.v[ph]) };
-  const CGAL::Gmpq dj[2] = { CGAL::Gmpq(cm.u[po]) - CGAL::Gmpq(cm.u[o]), CGAL::Gmpq(cm.v[po]) - CGAL::Gmpq(cm.v[o]) };
+  const double* uv[2] = {cm.u.data(), cm.v.data()};
   const Quarter_turn R(k);
   for(int c = 0; c < 2; ++c) {
-    const CGAL::Gmpq rc = R.sign[c] > 0 ? di[R.col[c]] : CGAL::Gmpq(-di[R.col[c]]);
-    if(rc != dj[c]) return false;
+    const double* a = uv[R.col[c]];
+    const double* b = uv[c];
+    Dyadic_sum r;    // R.sign[c] (a[h] - a[ph]) - (b[po] - b[o])
+    r.add(R.sign[c], a[h]); r.add(-R.sign[c], a[ph]); r.add(-1, b[po]); r.add(1, b[o]);
+    if(r.fits()) {
+      if(!r.is_zero()) return false;
+      continue;
+    }
+    const CGAL::Gmpq di = CGAL::Gmpq(a[h]) - CGAL::Gmpq(a[ph]), dj = CGAL::Gmpq(b[po]) - CGAL::Gmpq(b[o]);
+    if((R.sign[c] > 0 ? di : CGAL::Gmpq(-di)) != dj) return false;
   }
   return true;
 }
