@@ -317,35 +317,37 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
   return SUCCESS;
 }
 
-struct Bits3_hash
-{
-  std::size_t operator()(const std::array<std::uint64_t, 3>& a) const
-  {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for(std::uint64_t x : a) { h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2); }
-    return std::size_t(h ^ (h >> 29));
-  }
-};
-
 // rep[i]: the file vertex that vertex i of `points` becomes: itself, or with `weld` the first vertex of the
 // file with bit-identical coordinates (0.0 and -0.0 differ). Returns how many vertices were merged into an earlier one.
+// The first occurrences are found with an open-addressing hash table of vertex indices (linear probing,
+// at most half full), which compares the coordinates' bits: no node per vertex, as std::unordered_map has.
 inline std::size_t weld_representatives(const std::vector<std::array<double, 3> >& points, bool weld,
                                         std::vector<std::size_t>& rep)
 {
   const std::size_t nv = points.size();
   rep.resize(nv);
   std::size_t welded = 0;
-  if(weld) {
-    std::unordered_map<std::array<std::uint64_t, 3>, std::size_t, Bits3_hash> first;
-    first.reserve(nv);
-    for(std::size_t i = 0; i < nv; ++i) {
-      const std::array<double, 3>& x = points[i];
-      auto ins = first.emplace(std::array<std::uint64_t, 3>{double_bits(x[0]), double_bits(x[1]), double_bits(x[2])}, i);
-      rep[i] = ins.first->second;
-      if(!ins.second) ++welded;
-    }
-  } else {
+  if(!weld) {
     for(std::size_t i = 0; i < nv; ++i) rep[i] = i;
+    return 0;
+  }
+  std::size_t slots = 16;
+  while(slots < 2 * nv) slots *= 2;
+  const std::size_t empty = std::size_t(-1);
+  std::vector<std::size_t> table(slots, empty);
+  for(std::size_t i = 0; i < nv; ++i) {
+    const std::array<double, 3>& x = points[i];
+    const std::uint64_t b[3] = {double_bits(x[0]), double_bits(x[1]), double_bits(x[2])};
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for(std::uint64_t c : b) { h ^= c + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2); }
+    h ^= h >> 29;
+    std::size_t s = std::size_t(h) & (slots - 1);
+    for(;; s = (s + 1) & (slots - 1)) {
+      const std::size_t j = table[s];
+      if(j == empty) { table[s] = i; rep[i] = i; break; }
+      const std::array<double, 3>& y = points[j];
+      if(double_bits(y[0]) == b[0] && double_bits(y[1]) == b[1] && double_bits(y[2]) == b[2]) { rep[i] = j; ++welded; break; }
+    }
   }
   return welded;
 }
@@ -389,6 +391,8 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   std::size_t unreferenced = 0;
   for(std::size_t i = 0; i < nv; ++i)
     if(rep[i] == i && id[i] == none) ++unreferenced;
+  std::vector<int> mesh_vertex(nv, -1);   // id[rep[i]] in one lookup
+  for(std::size_t i = 0; i < nv; ++i) if(id[rep[i]] != none) mesh_vertex[i] = int(id[rep[i]]);
 
   auto fail = [&](std::size_t line, const std::string& why) {
     message = where + ":" + std::to_string(line) + ": " + why;
@@ -399,7 +403,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   Halfedge_arrays a(n_used, nf);
   std::array<int, 3> fv;
   for(std::size_t f = 0; f < nf; ++f) {
-    for(int k = 0; k < 3; ++k) fv[std::size_t(k)] = int(id[rep[soup.face_v[f][std::size_t(k)]]]);
+    for(int k = 0; k < 3; ++k) fv[std::size_t(k)] = mesh_vertex[soup.face_v[f][std::size_t(k)]];
     if(fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])
       return fail(soup.face_line[f], std::string("degenerate face: a vertex appears twice") +
                                      (weld ? " (after welding bit-identical vertices)" : ""));
@@ -420,7 +424,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   // two open fans, a "bowtie" (two border halfedges point to it).
   {
     std::vector<int> in_degree(n_used, 0);
-    for(int t : a.target) ++in_degree[std::size_t(t)];
+    for(std::size_t h = 0; h < a.number_of_halfedges(); ++h) ++in_degree[std::size_t(a.target(int(h)))];
     for(std::size_t i = 0; i < n_used; ++i) {
       const int hh = a.vertex_halfedge[i];
       int h = hh, around = 0, border_fans = 0;
@@ -441,6 +445,9 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
 
   // 4. the arrays onto tm: every element in the order Euler::add_face() creates it
   const std::size_t nh = a.number_of_halfedges();
+  reserve(tm, static_cast<typename GT::vertices_size_type>(vertices(tm).size() + n_used),
+          static_cast<typename GT::edges_size_type>(edges(tm).size() + nh / 2),
+          static_cast<typename GT::faces_size_type>(faces(tm).size() + nf));
   std::vector<vertex_descriptor> vs(n_used);
   for(std::size_t i = 0; i < nv; ++i)
     if(rep[i] == i && id[i] != none) {
@@ -458,9 +465,10 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
     set_halfedge(fs[f], hs[std::size_t(a.face_halfedge[f])], tm);
   }
   for(std::size_t h = 0; h < nh; ++h) {
-    set_target(hs[h], vs[std::size_t(a.target[h])], tm);
-    set_next(hs[h], hs[std::size_t(a.next[h])], tm);
-    set_face(hs[h], a.face[h] < 0 ? GT::null_face() : fs[std::size_t(a.face[h])], tm);
+    const int i = int(h);
+    set_target(hs[h], vs[std::size_t(a.target(i))], tm);
+    set_next(hs[h], hs[std::size_t(a.next(i))], tm);
+    set_face(hs[h], a.is_border(i) ? GT::null_face() : fs[std::size_t(a.face(i))], tm);
   }
   for(std::size_t i = 0; i < n_used; ++i) set_halfedge(vs[i], hs[std::size_t(a.vertex_halfedge[i])], tm);
   // corner convention: uv[h] = UV of target(h) in face(h); halfedge k of the triangle (a0, a1, a2)
@@ -468,7 +476,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   if(corners != nullptr) corners->assign(nf, {});
   for(std::size_t f = 0; f < nf; ++f) {
     int h = a.face_halfedge[f];                       // halfedge 2 of the face: its target is corner 0
-    for(int k = 0; k < 3; ++k, h = a.next[std::size_t(h)]) {
+    for(int k = 0; k < 3; ++k, h = a.next(h)) {
       const std::array<double, 2>& t = soup.uvs[soup.face_vt[f][std::size_t(k)]];
       put(uv, hs[std::size_t(h)], Point_2(t[0], t[1]));
       if(corners != nullptr) (*corners)[f][std::size_t(k)] = hs[std::size_t(h)];

@@ -40,8 +40,12 @@ namespace internal {
 
 class Halfedge_arrays
 {
+  // one record per halfedge (the walks around vertices read next, target and face of the same halfedge:
+  // one cache line instead of three arrays)
+  struct Record { int next, prev, target, face; };
+  std::vector<Record> h_;
+
 public:
-  std::vector<int> next, prev, target, face;   // per halfedge; face -1 = border
   std::vector<int> vertex_halfedge;             // per vertex: halfedge(v), an incoming halfedge, -1 = isolated
   std::vector<int> face_halfedge;               // per face: halfedge(f)
 
@@ -50,17 +54,20 @@ public:
   {
     face_halfedge.reserve(n_faces_hint);
     // a closed triangle mesh has 3 halfedges per face; a border adds a few
-    const std::size_t h = 3 * n_faces_hint + n_faces_hint / 8 + 16;
-    next.reserve(h); prev.reserve(h); target.reserve(h); face.reserve(h);
+    h_.reserve(3 * n_faces_hint + n_faces_hint / 8 + 16);
   }
 
-  std::size_t number_of_halfedges() const { return target.size(); }
+  std::size_t number_of_halfedges() const { return h_.size(); }
   std::size_t number_of_faces() const { return face_halfedge.size(); }
+  int next(int h) const { return h_[std::size_t(h)].next; }
+  int prev(int h) const { return h_[std::size_t(h)].prev; }
+  int target(int h) const { return h_[std::size_t(h)].target; }
+  int face(int h) const { return h_[std::size_t(h)].face; }           // -1 = border
   static int opposite(int h) { return h ^ 1; }
-  bool is_border(int h) const { return face[std::size_t(h)] < 0; }
-  int source(int h) const { return target[std::size_t(opposite(h))]; }
+  bool is_border(int h) const { return face(h) < 0; }
+  int source(int h) const { return target(opposite(h)); }
   // the next halfedge around target(h): opposite(next(h)) (Halfedge_around_target_iterator)
-  int next_around_target(int h) const { return opposite(next[std::size_t(h)]); }
+  int next_around_target(int h) const { return opposite(next(h)); }
 
   // halfedge(u, v, g) of Surface_mesh: the halfedge u -> v, found by walking around v from halfedge(v); -1 if none
   int halfedge(int u, int v) const
@@ -112,16 +119,16 @@ public:
     for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
       if(is_new[i] || is_new[ii]) continue;
       const int inner_prev = he[i], inner_next = he[ii];
-      if(next[std::size_t(inner_prev)] == inner_next) continue;
+      if(next(inner_prev) == inner_next) continue;
       // search a free gap between border_prev and border_next
       const int outer_prev = opposite(inner_next);
       int border_prev = outer_prev;
       do {
-        border_prev = opposite(next[std::size_t(border_prev)]);
+        border_prev = opposite(next(border_prev));
       } while(!is_border(border_prev) || border_prev == inner_prev);
-      const int border_next = next[std::size_t(border_prev)];
+      const int border_next = next(border_prev);
       if(border_next == inner_next) return false;
-      const int patch_start = next[std::size_t(inner_prev)], patch_end = prev[std::size_t(inner_next)];
+      const int patch_start = next(inner_prev), patch_end = prev(inner_next);
       set_next_later(border_prev, patch_start);
       set_next_later(patch_end, border_next);
       set_next_later(inner_prev, inner_next);
@@ -130,10 +137,9 @@ public:
     // create missing edges (u -> v is the even halfedge of the new edge)
     for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
       if(!is_new[i]) continue;
-      he[i] = int(target.size());
-      for(int t : {v[ii], v[i]}) {
-        next.push_back(-1); prev.push_back(-1); target.push_back(t); face.push_back(-1);
-      }
+      he[i] = int(h_.size());
+      h_.push_back(Record{-1, -1, v[ii], -1});
+      h_.push_back(Record{-1, -1, v[i], -1});
     }
     // create the face
     const int f = int(face_halfedge.size());
@@ -148,13 +154,13 @@ public:
         const int outer_prev = opposite(inner_next), outer_next = opposite(inner_prev);
         switch(id) {
           case 1: {   // prev is new, next is old
-            const int border_prev = prev[std::size_t(inner_next)];
+            const int border_prev = prev(inner_next);
             set_next_later(border_prev, outer_next);
             vertex_halfedge[std::size_t(w)] = border_prev;
             break;
           }
           case 2: {   // next is new, prev is old
-            const int border_next = next[std::size_t(inner_prev)];
+            const int border_next = next(inner_prev);
             set_next_later(outer_prev, border_next);
             vertex_halfedge[std::size_t(w)] = outer_prev;
             break;
@@ -169,7 +175,7 @@ public:
               vertex_halfedge[std::size_t(w)] = outer_prev;
               set_next_later(outer_prev, outer_next);
             } else {
-              const int border_prev = hv, border_next = next[std::size_t(border_prev)];
+              const int border_prev = hv, border_next = next(border_prev);
               set_next_later(border_prev, outer_next);
               set_next_later(outer_prev, border_next);
             }
@@ -178,12 +184,12 @@ public:
         }
         set_next_later(inner_prev, inner_next);   // inner link
       }
-      face[std::size_t(inner_prev)] = f;
+      h_[std::size_t(inner_prev)].face = f;
     }
 
     for(int c = 0; c < cached; ++c) {
-      next[std::size_t(cache[std::size_t(c)].first)] = cache[std::size_t(c)].second;
-      prev[std::size_t(cache[std::size_t(c)].second)] = cache[std::size_t(c)].first;
+      h_[std::size_t(cache[std::size_t(c)].first)].next = cache[std::size_t(c)].second;
+      h_[std::size_t(cache[std::size_t(c)].second)].prev = cache[std::size_t(c)].first;
     }
     for(int i = 0; i < n; ++i) adjust_incoming_halfedge(v[i]);
     return true;
@@ -195,7 +201,7 @@ private:
   {
     int h = vertex_halfedge[std::size_t(v)];
     if(h < 0) return;
-    if(target[std::size_t(h)] != v) {
+    if(target(h) != v) {
       h = opposite(h);
       vertex_halfedge[std::size_t(v)] = h;
     }
