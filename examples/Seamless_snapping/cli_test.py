@@ -1,6 +1,6 @@
 """CTest test of the seamless_snap command line: automatic welding of a cut mesh, --no-weld refusing an
-input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, and
---integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
+input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, --outdir with
+--summary (several inputs), and --integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
 closed genus-0 mesh, which is near an integer-grid map).
 usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)
 IN.obj is computed at test time (CGAL's solver: its last bits depend on the CPU), so nothing here is compared with stored
@@ -155,8 +155,27 @@ rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
 check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
 rc, text = run("--help")
 for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
-            "--pin", "--vval", "--report", "--quiet", "--help"]:
+            "--pin", "--vval", "--report", "--outdir", "--summary", "--quiet", "--help"]:
     check(opt in text, "--help lists " + opt)
+
+# 6. --outdir: several inputs (the map and the cut mesh), each as a single run would write it, a report per input
+#    and the summary table; a missing input makes the exit status 1 without stopping the others
+outdir, summary = os.path.join(work, "batch"), os.path.join(work, "batch_summary.md")
+missing = os.path.join(work, "missing.obj")
+rc, text = run("--quiet", "--outdir", outdir, src, cut, missing, "--summary", summary)
+check(rc == 1, "--outdir with a missing input: exit 1: %d %s" % (rc, text))
+name = os.path.splitext(os.path.basename(src))[0]
+single = os.path.join(work, "single.obj")
+run(src, single, "--quiet")
+with open(single, "rb") as a, open(os.path.join(outdir, name + ".obj"), "rb") as b:
+    check(a.read() == b.read(), "--outdir writes what a single run writes")
+check(json.load(open(os.path.join(outdir, name + ".json")))["status"] == "SUCCESS", "--outdir: a report per input")
+check(json.load(open(os.path.join(outdir, "cut.json")))["status"] == "SUCCESS", "--outdir: the cut mesh welded automatically")
+table = open(summary).read()
+check("2 of 3 inputs snapped exactly" in table and "| FAILED |" in table and "missing.obj" in table,
+      "--summary: the table names every input and status: %s" % table)
+rc, text = run(src, single, "extra.obj")
+check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 
 for f in failures:
     print("FAILED:", f)
