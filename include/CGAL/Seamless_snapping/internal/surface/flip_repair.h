@@ -264,28 +264,29 @@ public:
     for(const Cut_branch_plan& p : rs.cut_branches)
       for(const std::pair<int, int>& s : p.inner) {
         Group g; g.kind = 1; g.m = {Member{s.first, 0}, Member{s.second, p.k}};
-        candidates.push_back(g);
+        candidates.push_back(std::move(g));
       }
     for(const Align_branch_plan& p : rs.align_branches)
       for(int s : p.inner) {
         Group g; g.kind = 2; g.m = {Member{s, 0}}; g.axis = 1 - p.component;
-        candidates.push_back(g);
+        candidates.push_back(std::move(g));
       }
     std::vector<int> uses(ns, 0);
     for(const Group& g : candidates) for(const Member& mb : g.m) ++uses[mb.sector];
     group_of.assign(ns, -1);
-    for(const Group& g : candidates) {
+    groups.reserve(candidates.size() + std::size_t(ns));
+    for(Group& g : candidates) {
       bool unique = true;
       for(const Member& mb : g.m) unique = unique && uses[mb.sector] == 1;
       if(!unique) continue;
       for(const Member& mb : g.m) group_of[mb.sector] = int(groups.size());
-      groups.push_back(g);
+      groups.push_back(std::move(g));
     }
     for(int s = 0; s < ns; ++s) {
       if(uses[s] > 0 || vr_start[2 * s + 2] != vr_start[2 * s]) continue;   // on a branch, or in some row
       Group g; g.kind = 0; g.m = {Member{s, 0}};
       group_of[s] = int(groups.size());
-      groups.push_back(g);
+      groups.push_back(std::move(g));
     }
   }
 
