@@ -16,7 +16,7 @@
 //   bench_projection --matrix C.mtx [--rhs b.txt] --xbar x.txt [--out x.txt]
 //                                        one system from files (Matrix Market coordinate, 1-based,
 //                                        integer or real entries with integral values; one number per line)
-//   bench_projection --real PATH ...     per-corner seam systems of OBJ files (PATH: a file or a directory of .obj;
+//   bench_projection --real PATH ...     per-corner seam systems of OBJ files (PATH: a file or a directory, searched recursively for .obj;
 //                                        see real_seam_system()); x̄ = the file's UVs. Repeatable.
 //   --noise R                            relative noise of x̄ for generated systems (default 1e-9)
 //   --time-limit S                       skip the remaining sizes of a family once one took > S seconds (default 120)
@@ -252,7 +252,7 @@ int run_real(const Settings& set)
   for(const std::string& p : set.real) {
     if(std::filesystem::is_directory(p)) {
       std::vector<std::string> in_dir;
-      for(const auto& e : std::filesystem::directory_iterator(p))
+      for(const auto& e : std::filesystem::recursive_directory_iterator(p))
         if(e.path().extension() == ".obj") in_dir.push_back(e.path().string());
       std::sort(in_dir.begin(), in_dir.end());
       files.insert(files.end(), in_dir.begin(), in_dir.end());

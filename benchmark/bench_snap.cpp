@@ -2,13 +2,24 @@
 // Mandad & Campen 2019: sizes, phase times of the reduced pipeline (Sec. 5.3.1), the time ratio of
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
-// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] [--untangle]
-//                   <file.obj | directory>...
+// usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] [--untangle] [--large]
+//                   [--max-reference-faces F] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
 // Times are wall clock in ms, the minimum over N runs (default 3). Lengths are relative to the UV
 // bounding-box diagonal. Not part of the test run.
+//
+// Scale (issue 26): everything runs on ../shared/large (300K faces, 2530 cones) within a few minutes. The parts
+// that do not scale are bounded and say so in their output: the L2 reference of --change (a sparse QR of C^T,
+// test/Seamless_snapping/l2_optimum_reference.h; it did not finish in 15 minutes on the 300K-face bunny and grew
+// to 4.9 GB) is skipped above --max-reference-faces F faces (default 100000), with a line naming the model.
+//
+// --large: instead, the table of issue 26 per model: faces, cones, nodes, the OBJ read time, the snap's phases
+// (report times), the snap time per face, the OBJ write time, snap / read, and the peak RSS of the read, the snap
+// and the write (each phase's own peak: the kernel's high-water mark is reset before it through
+// /proc/self/clear_refs where Linux allows it, else the peak so far is printed with a '+'). Wall clock in ms, the
+// minimum over N runs (default 3); CPU columns: the process's CPU time of the same phase (the machine may be shared).
 //
 // After the timing table (or alone with --change): the size of the change against the smallest exact
 // change u* = argmin ||u - ubar||_2 s.t. C u = 0 over the same sector system (Eq. 4 per cut edge,
@@ -39,6 +50,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <ctime>
+#include <fstream>
+#include <functional>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -46,6 +60,8 @@
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
@@ -183,6 +199,8 @@ static int connection_study(const std::vector<fs::path>& files, int repeat)
 }
 
 // The change of both modes against the L2 optimum, per model (see the header).
+static std::size_t max_reference_faces = 100000;   // --max-reference-faces: the L2 reference does not scale beyond
+
 static int change_study(const std::vector<fs::path>& files)
 {
   namespace LR = l2_reference;
@@ -194,6 +212,12 @@ static int change_study(const std::vector<fs::path>& files)
     Mesh input;
     UV_map uv_in;
     if(!read_model(p, input, uv_in, failures)) continue;
+    if(std::size_t(input.number_of_faces()) > max_reference_faces) {
+      std::printf("%-36s skipped: %zu faces, more than --max-reference-faces %zu (the sparse QR of the L2 reference "
+                  "does not scale: it did not finish in 15 min on the 300K-face bunny)\n", p.filename().string().c_str(),
+                  std::size_t(input.number_of_faces()), max_reference_faces);
+      continue;
+    }
     const LR::Sector_system<Mesh> sys = LR::sector_system(input, uv_in);
     const LR::Optimum opt = sys.ok ? LR::l2_optimum(sys.rows, sys.ubar) : LR::Optimum();
     if(!opt.ok) { std::printf("%-36s no reference (sector system or QR failed)\n", p.filename().string().c_str()); ++failures; continue; }
@@ -336,10 +360,102 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// --large: the scale table of issue 26 (see the header)
+static double cpu_ms()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
+// the peak RSS of the process in MB (VmHWM); reset_peak_rss() lowers it to the current RSS, where Linux allows it
+static double peak_rss_mb()
+{
+  std::ifstream is("/proc/self/status");
+  for(std::string line; std::getline(is, line);)
+    if(line.compare(0, 6, "VmHWM:") == 0) return std::atof(line.c_str() + 6) / 1024.;
+  return 0;
+}
+static bool reset_peak_rss()
+{
+  std::ofstream os("/proc/self/clear_refs");
+  os << "5";
+  os.flush();
+  return bool(os);
+}
+
+static int large_study(const std::vector<fs::path>& files, int repeat)
+{
+  std::printf("%-34s %7s %6s %6s | %8s %8s | %8s %8s %8s %8s %8s %8s %8s %8s %8s | %6s %8s | %8s %8s | %6s | %7s %7s %7s\n",
+              "model", "#F", "#cones", "#nodes", "read", "cpu", "extract", "reduce", "LS", "IRREF", "evaluate", "repair",
+              "verify", "snap", "cpu", "us/F", "extr/F", "write", "cpu", "s/r", "MB read", "MB snap", "MB write");
+  int failures = 0;
+  bool peaks_reset = true;
+  const fs::path out = fs::temp_directory_path() / ("bench_snap_large_" + std::to_string(::getpid()) + ".obj");
+  for(const fs::path& p : files) {
+    double read = 0, read_cpu = 0, snap_cpu = 0, write = 0, write_cpu = 0, mb_read = 0, mb_snap = 0, mb_write = 0;
+    SS::Snap_report best;
+    bool ok = true;
+    for(int r = 0; r < repeat && ok; ++r) {
+      int fails = 0;
+      peaks_reset = reset_peak_rss() && peaks_reset;
+      double c0 = cpu_ms();
+      auto t0 = std::chrono::steady_clock::now();
+      Mesh m;
+      UV_map uv;
+      if(!read_model(p, m, uv, fails)) { ++failures; ok = false; break; }
+      const double t_read = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double c_read = cpu_ms() - c0;
+      const double m_read = peak_rss_mb();
+      peaks_reset = reset_peak_rss() && peaks_reset;
+      c0 = cpu_ms();
+      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv);
+      const double c_snap = cpu_ms() - c0;
+      const double m_snap = peak_rss_mb();
+      if(rep.status != SS::SUCCESS) {
+        std::printf("%-34s snap FAILED: %s: %s\n", p.filename().string().c_str(), SS::status_name(rep.status), rep.message.c_str());
+        ++failures; ok = false; break;
+      }
+      peaks_reset = reset_peak_rss() && peaks_reset;
+      c0 = cpu_ms();
+      t0 = std::chrono::steady_clock::now();
+      std::string msg;
+      if(SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, msg) != SS::SUCCESS) {
+        std::printf("%-34s write FAILED: %s\n", p.filename().string().c_str(), msg.c_str());
+        ++failures; ok = false; break;
+      }
+      const double t_write = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double c_write = cpu_ms() - c0;
+      const double m_write = peak_rss_mb();
+      fs::remove(out);
+      if(r == 0 || t_read < read) { read = t_read; read_cpu = c_read; }
+      if(r == 0 || rep.total_ms < best.total_ms) { best = rep; snap_cpu = c_snap; }
+      if(r == 0 || t_write < write) { write = t_write; write_cpu = c_write; }
+      mb_read = (std::max)(mb_read, m_read); mb_snap = (std::max)(mb_snap, m_snap); mb_write = (std::max)(mb_write, m_write);
+    }
+    if(!ok) continue;
+    const double per_face = 1000. * best.total_ms / double(best.faces);
+    const char* plus = peaks_reset ? " " : "+";
+    std::printf("%-34s %7zu %6zu %6zu | %8.1f %8.1f | %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f | %6.2f %8.3f | %8.1f %8.1f | %6.2f | %6.0f%s %6.0f%s %6.0f%s\n",
+                p.filename().string().c_str(), best.faces, best.cones, best.nodes, read, read_cpu, best.extract_ms,
+                best.reduce_ms, best.least_squares_ms, best.irref_ms, best.evaluate_ms, best.repair_ms, best.verify_ms,
+                best.total_ms, snap_cpu, per_face, 1000. * best.extract_ms / double(best.faces), write, write_cpu,
+                read > 0 ? best.total_ms / read : 0., mb_read, plus, mb_snap, plus, mb_write, plus);
+    std::fflush(stdout);
+  }
+  std::printf("\ncolumns: read / write = read_OBJ_with_corner_uvs (welding files under \"directional\") / write_OBJ_with_corner_uvs,\n"
+              "wall ms, minimum over the runs, with the process CPU ms of that run (cpu); extract .. snap = the Snap_report's\n"
+              "phase times of the fastest snap (snap = total_ms, which also holds the steps not listed: untangling checks,\n"
+              "fold explanations, the write into the map), cpu = its CPU ms; us/F = snap us per face, extr/F = extract us\n"
+              "per face; s/r = snap / read (wall); MB = peak RSS of the process during the read, the snap, the write\n"
+              "(each phase's own peak%s).\n", peaks_reset ? "" : "; '+': the peak could not be reset, so it is the peak so far");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   int repeat = 3;
-  bool connections = false, change_only = false, integer_grid = false, untangle = false;
+  bool connections = false, change_only = false, integer_grid = false, untangle = false, large = false;
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
@@ -349,30 +465,93 @@ int main(int argc, char** argv)
     if(std::strcmp(argv[i], "--integer-grid") == 0) { integer_grid = true; continue; }
     if(std::strcmp(argv[i], "--untangle") == 0) { untangle = true; continue; }
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
+    if(std::strcmp(argv[i], "--large") == 0) { large = true; continue; }
+    if(std::strcmp(argv[i], "--max-reference-faces") == 0 && i + 1 < argc) {
+      max_reference_faces = std::size_t(std::strtoull(argv[++i], nullptr, 10));
+      continue;
+    }
     inputs.emplace_back(argv[i]);
   }
   std::vector<fs::path> files;
-  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--large] [--connections | --change | --integer-grid | --untangle | --subdivide L] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
+  if(large) return large_study(files, repeat);
   if(connections) return connection_study(files, repeat);
   if(integer_grid) return integer_grid_study(files, repeat);
   if(untangle) return untangle_study(files, repeat);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
   if(change_only) return change_study(files);
 
-  std::printf("%-36s %7s %6s %6s %6s | %8s %8s %8s %8s %8s %8s | %9s %6s %9s %6s | %9s %9s %9s | %13s %13s | %9s %9s %8s | %9s\n",
-              "model", "#F", "#cut", "#nodes", "#branch", "extract", "reduce", "IRREF", "evaluate", "propag.", "total",
-              "unreduced", "ratio", "unr.proj", "ratio", "max Cx/d", "avg du/d", "max du/d", "neg in/sn/rep", "deg in/sn/rep",
-              "intro n+d", "left n+d", "repair", "read OBJ");
+  // The table: one column per entry (header, width, value of the row); a new column is one line here.
+  struct Row
+  {
+    std::string name;
+    double read_ms = 0;
+    SS::Snap_report best, best_full;
+  };
+  struct Column
+  {
+    const char* header;
+    int width;
+    std::function<std::string(const Row&)> value;
+    bool separator_before;
+  };
+  auto num = [](const char* f, double x) { char b[64]; std::snprintf(b, sizeof b, f, x); return std::string(b); };
+  auto count = [](std::size_t n) { return std::to_string(n); };
+  auto triple = [](std::size_t a, std::size_t b, std::size_t c) {
+    return std::to_string(a) + "/" + std::to_string(b) + "/" + std::to_string(c);
+  };
+  auto pair = [](std::size_t a, std::size_t b) { return std::to_string(a) + "+" + std::to_string(b); };
+  auto proj = [](const SS::Snap_report& r) { return r.reduce_ms + r.irref_ms + r.evaluate_ms + r.propagate_ms; };
+  const std::vector<Column> columns = {
+    {"#F", 7, [&](const Row& r) { return count(r.best.faces); }, false},
+    {"#cut", 6, [&](const Row& r) { return count(r.best.cut_edges); }, false},
+    {"#nodes", 6, [&](const Row& r) { return count(r.best.nodes); }, false},
+    {"#branch", 6, [&](const Row& r) { return count(r.best.cut_branches + r.best.align_branches); }, false},
+    {"extract", 8, [&](const Row& r) { return num("%.2f", r.best.extract_ms); }, true},
+    {"reduce", 8, [&](const Row& r) { return num("%.2f", r.best.reduce_ms); }, false},
+    {"IRREF", 8, [&](const Row& r) { return num("%.2f", r.best.irref_ms); }, false},
+    {"evaluate", 8, [&](const Row& r) { return num("%.2f", r.best.evaluate_ms); }, false},
+    {"propag.", 8, [&](const Row& r) { return num("%.2f", r.best.propagate_ms); }, false},
+    {"total", 8, [&](const Row& r) { return num("%.2f", r.best.total_ms); }, false},
+    {"unreduced", 9, [&](const Row& r) { return num("%.2f", r.best_full.total_ms); }, true},
+    {"ratio", 6, [&](const Row& r) { return num("%.2f", r.best.total_ms > 0 ? r.best_full.total_ms / r.best.total_ms : 0.); }, false},
+    {"unr.proj", 9, [&](const Row& r) { return num("%.2f", r.best_full.irref_ms + r.best_full.evaluate_ms); }, false},
+    {"ratio", 6, [&](const Row& r) {
+       return num("%.2f", proj(r.best) > 0 ? (r.best_full.irref_ms + r.best_full.evaluate_ms) / proj(r.best) : 0.); }, false},
+    {"max Cx/d", 9, [&](const Row& r) { return num("%9.2e", r.best.max_input_violation); }, true},
+    {"avg du/d", 9, [&](const Row& r) { return num("%9.2e", r.best.mean_change); }, false},
+    {"max du/d", 9, [&](const Row& r) { return num("%9.2e", r.best.max_change); }, false},
+    {"neg in/sn/rep", 13, [&](const Row& r) { return triple(r.best.flips_before, r.best.flips_after, r.best.flips_after_repair); }, true},
+    {"deg in/sn/rep", 13, [&](const Row& r) {
+       return triple(r.best.degenerate_before, r.best.degenerate_after, r.best.degenerate_after_repair); }, false},
+    {"intro n+d", 9, [&](const Row& r) { return pair(r.best.flips_introduced, r.best.degenerate_introduced); }, true},
+    {"left n+d", 9, [&](const Row& r) { return pair(r.best.flips_unrepaired, r.best.degenerate_unrepaired); }, false},
+    {"repair", 8, [&](const Row& r) { return num("%.2f", r.best.repair_ms); }, false},
+    {"read OBJ", 9, [&](const Row& r) { return num("%.1f", r.read_ms); }, true},
+  };
+  auto print_line = [&](const std::string& first, const std::function<std::string(const Column&)>& cell) {
+    std::string line = first;
+    line.resize((std::max)(line.size(), std::size_t(36)), ' ');
+    for(const Column& c : columns) {
+      line += c.separator_before ? " | " : " ";
+      std::string v = cell(c);
+      if(int(v.size()) < c.width) v.insert(0, std::size_t(c.width) - v.size(), ' ');
+      line += v;
+    }
+    std::printf("%s\n", line.c_str());
+  };
+  print_line("model", [](const Column& c) { return std::string(c.header); });
   int failures = 0;
   for(const fs::path& p : files) {
     Mesh input;
     UV_map uv_in;
     auto t0 = std::chrono::steady_clock::now();
     const bool read = read_model(p, input, uv_in, failures);
-    const double read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    Row row;
+    row.name = p.filename().string();
+    row.read_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if(!read) continue;
 
-    SS::Snap_report best, best_full;
     bool first = true;
     for(int r = 0; r < repeat; ++r) {
       Mesh m = input;
@@ -382,36 +561,20 @@ int main(int argc, char** argv)
       UV_map uvf = mf.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
       SS::Snap_report full = SS::snap_seamless_parameterization(mf, uvf, SS::parameters::use_reduced_system(false));
       if(rep.status != SS::SUCCESS || full.status != SS::SUCCESS) {
-        std::printf("%-36s FAILED: reduced %s (%s), unreduced %s (%s)\n", p.filename().string().c_str(),
+        std::printf("%-36s FAILED: reduced %s (%s), unreduced %s (%s)\n", row.name.c_str(),
                     SS::status_name(rep.status), rep.message.c_str(), SS::status_name(full.status), full.message.c_str());
         ++failures;
         first = true;
         break;
       }
-      if(first || rep.total_ms < best.total_ms) best = rep;
-      if(first || full.total_ms < best_full.total_ms) best_full = full;
+      if(first || rep.total_ms < row.best.total_ms) row.best = rep;
+      if(first || full.total_ms < row.best_full.total_ms) row.best_full = full;
       first = false;
     }
     if(first) continue;
-    const double proj = best.reduce_ms + best.irref_ms + best.evaluate_ms + best.propagate_ms;
-    auto triple = [](std::size_t a, std::size_t b, std::size_t c) {
-      return std::to_string(a) + "/" + std::to_string(b) + "/" + std::to_string(c);
-    };
-    auto pair = [](std::size_t a, std::size_t b) { return std::to_string(a) + "+" + std::to_string(b); };
-    const std::string neg = triple(best.flips_before, best.flips_after, best.flips_after_repair);
-    const std::string deg = triple(best.degenerate_before, best.degenerate_after, best.degenerate_after_repair);
-    const std::string intro = pair(best.flips_introduced, best.degenerate_introduced);
-    const std::string left = pair(best.flips_unrepaired, best.degenerate_unrepaired);
-    const double proj_full = best_full.irref_ms + best_full.evaluate_ms;
-    std::printf("%-36s %7zu %6zu %6zu %6zu | %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f | %9.2f %6.2f %9.2f %6.2f | %9.2e %9.2e %9.2e | %13s %13s | %9s %9s %8.2f | %9.1f\n",
-                p.filename().string().c_str(), best.faces, best.cut_edges, best.nodes, best.cut_branches + best.align_branches,
-                best.extract_ms, best.reduce_ms, best.irref_ms, best.evaluate_ms, best.propagate_ms, best.total_ms,
-                best_full.total_ms, best.total_ms > 0 ? best_full.total_ms / best.total_ms : 0.,
-                proj_full, proj > 0 ? proj_full / proj : 0.,
-                best.max_input_violation, best.mean_change, best.max_change, neg.c_str(), deg.c_str(), intro.c_str(), left.c_str(),
-                best.repair_ms, read_ms);
-    if(best.flips_unrepaired + best.degenerate_unrepaired > 0) {
-      std::printf("    %s\n", best.message.c_str());
+    print_line(row.name, [&](const Column& c) { return c.value(row); });
+    if(row.best.flips_unrepaired + row.best.degenerate_unrepaired > 0) {
+      std::printf("    %s\n", row.best.message.c_str());
       ++failures;
     }
   }

@@ -7,11 +7,15 @@
 // the layout is valid (every separatrix ended at a cone, the border or an earlier trace, and every patch is
 // a quad) and the time (graph and layout).
 //
-// usage: bench_trace [--svg DIR] <file.obj | directory>...   (directories searched recursively for *.obj;
+// usage: bench_trace [--svg DIR] [--max-faces N] <file.obj | directory>...   (directories searched recursively for *.obj;
 //        files under a "directional" folder are welded, as Directional writes cut meshes). Without
 //        arguments the directory in the environment variable SS_SHARED_DATA_DIR is used.
 // --svg DIR: also draws the layout of the input and of the output of each model (UV charts) into DIR.
 // Times are wall clock in ms (one run; tracer construction included). Not part of the test run.
+// Scale (issue 26): a trace may cross many faces on a large map (a spiralling isoline of the README's bear crosses
+// 553060 faces), so on maps with more than 100000 faces each trace is bounded to 20000 faces unless --max-faces
+// says otherwise (0: the library's default, 20 times the number of faces plus 100); the table names the bound.
+//        [--max-faces N]: the step limit per trace (build_motorcycle_graph()); traces cut there end as length-limit
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -43,7 +47,8 @@ static const SS::Trace_end kinds[] = {SS::Trace_end::OSCILLATION_AT_CUT, SS::Tra
                                       SS::Trace_end::FELL_OFF_BORDER, SS::Trace_end::FOLDED_FACE,
                                       SS::Trace_end::DEGENERATE_VERTEX, SS::Trace_end::LENGTH_LIMIT};
 
-static void row(const std::string& name, const char* which, const Mesh& m, UV_map uv, const std::string& svg)
+static void row(const std::string& name, const char* which, const Mesh& m, UV_map uv, const std::string& svg,
+                std::size_t max_faces)
 {
   const auto t0 = std::chrono::steady_clock::now();
   SS::Isoline_tracer<Mesh, UV_map> tracer(m, uv);
@@ -51,7 +56,7 @@ static void row(const std::string& name, const char* which, const Mesh& m, UV_ma
     std::printf("| %s | %s | cannot trace: %s |\n", name.c_str(), which, SS::status_name(tracer.status()));
     return;
   }
-  const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer, max_faces);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::size_t regular = g.ends[int(SS::Trace_end::CONE)] + g.ends[int(SS::Trace_end::BORDER)] +
                         g.ends[int(SS::Trace_end::EARLIER_TRACE)];
@@ -73,13 +78,15 @@ int main(int argc, char** argv)
 {
   std::vector<fs::path> inputs, files;
   std::string svg_dir;
+  long long max_faces_option = -1;   // -1: bounded on large maps only
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--svg") == 0 && i + 1 < argc) { svg_dir = argv[++i]; continue; }
+    if(std::strcmp(argv[i], "--max-faces") == 0 && i + 1 < argc) { max_faces_option = std::atoll(argv[++i]); continue; }
     inputs.emplace_back(argv[i]);
   }
   if(inputs.empty()) {
     const char* env = std::getenv("SS_SHARED_DATA_DIR");
-    if(!env) { std::fprintf(stderr, "usage: %s [--svg DIR] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)\n", argv[0]); return 2; }
+    if(!env) { std::fprintf(stderr, "usage: %s [--svg DIR] [--max-faces N] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)\n", argv[0]); return 2; }
     inputs.emplace_back(env);
   }
   for(const fs::path& p : inputs) {
@@ -104,7 +111,13 @@ int main(int argc, char** argv)
       std::printf("| %s | cannot read: %s |\n", name.c_str(), msg.c_str());
       continue;
     }
-    row(name, "input", m, uv, svg_dir.empty() ? "" : svg_dir + "/" + name + "_input.svg");
+    std::size_t max_faces = max_faces_option >= 0 ? std::size_t(max_faces_option) : 0;
+    if(max_faces_option < 0 && m.number_of_faces() > 100000) {
+      max_faces = 20000;
+      std::printf("| %s | (%zu faces: each trace bounded to %zu faces; --max-faces 0 for the library's bound) |\n",
+                  name.c_str(), std::size_t(m.number_of_faces()), max_faces);
+    }
+    row(name, "input", m, uv, svg_dir.empty() ? "" : svg_dir + "/" + name + "_input.svg", max_faces);
     const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
     if(r.status != SS::SUCCESS) {
       std::printf("| %s | snapped | snap failed: %s |\n", name.c_str(), SS::status_name(r.status));
@@ -112,7 +125,7 @@ int main(int argc, char** argv)
     }
     char which[64];
     std::snprintf(which, sizeof which, "snapped (%zu folds)", r.flips_before);
-    row(name, which, m, uv, svg_dir.empty() ? "" : svg_dir + "/" + name + "_snapped.svg");
+    row(name, which, m, uv, svg_dir.empty() ? "" : svg_dir + "/" + name + "_snapped.svg", max_faces);
   }
   return 0;
 }

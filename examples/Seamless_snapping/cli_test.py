@@ -1,19 +1,22 @@
 """CTest test of the seamless_snap command line: automatic welding of a cut mesh, --no-weld refusing an
-input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, and
---integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
+input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, --outdir with
+--summary (several inputs), and --integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
 closed genus-0 mesh, which is near an integer-grid map).
 usage: python3 cli_test.py SEAMLESS_SNAP IN.obj WORKDIR   (IN.obj: an approximately seamless map)
 IN.obj is computed at test time (CGAL's solver: its last bits depend on the CPU), so nothing here is compared with stored
 values; the bit-for-bit checks compare the program's output with its own input (kept positions, pinned UVs that are
 exact binary fractions), the same on every machine."""
 import json
+from fractions import Fraction
 import os
+import shutil
 import subprocess
 import sys
 
 from fold_over_grid import write_fold_over_grid
 
 exe, src, work = sys.argv[1:4]
+shutil.rmtree(work, ignore_errors=True)   # no file of an earlier run may pass a 'nothing written' check
 os.makedirs(work, exist_ok=True)
 
 
@@ -106,13 +109,35 @@ rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
 check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
       "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
 
-# --vval next to fold-overs: refused (FOLD_OVERS, the faces listed), neither OUT.obj nor the VVAL file written
+# --vval next to fold-overs (kept with --no-untangle): refused (FOLD_OVERS, the faces listed), neither OUT.obj nor
+# the VVAL file written
 folds = os.path.join(work, "folds.obj")
 write_fold_over_grid(folds)
 out9, vval9 = os.path.join(work, "folds_out.obj"), os.path.join(work, "folds.vval")
-rc, text = run(folds, out9, "--integer-grid", "--vval", vval9)
+rc, text = run(folds, out9, "--integer-grid", "--no-untangle", "--vval", vval9)
 check(rc == 1 and "FOLD_OVERS" in text and "fold-overs" in text and not os.path.exists(out9) and not os.path.exists(vval9),
       "--vval next to fold-overs: exit 1, nothing written: %d %s" % (rc, text))
+# the same map with --integer-grid's default untangling: the fold-overs are removed, OUT.obj has every UV triangle
+# positive (checked here on the written doubles, exactly: integer coordinates after the snap) and the VVAL file
+# gives every vertex a valence
+out9, vval9, report9 = os.path.join(work, "folds_untangled.obj"), os.path.join(work, "folds_untangled.vval"), os.path.join(work, "folds.json")
+for f in (out9, vval9, report9):
+    if os.path.exists(f): os.remove(f)
+rc, text = run(folds, out9, "--integer-grid", "--vval", vval9, "--report", report9)
+r9 = json.load(open(report9)) if os.path.exists(report9) else {}
+check(rc == 0 and r9.get("flips_before") == 2 and r9.get("flips_after_repair") == 0 and
+      r9.get("degenerate_after_repair") == 0 and os.path.exists(vval9),
+      "--integer-grid untangles the fold-over grid: %d %s" % (rc, text))
+if rc == 0:
+    vts, tris = [], []
+    for l in open(out9):
+        p = l.split()
+        if p and p[0] == "vt": vts.append((Fraction(p[1]), Fraction(p[2])))
+        if p and p[0] == "f": tris.append([int(c.split("/")[1]) - 1 for c in p[1:]])
+    def area2(t):
+        (a, b), (c, d), (e, f) = vts[t[0]], vts[t[1]], vts[t[2]]
+        return (c - a) * (f - b) - (d - b) * (e - a)
+    check(len(tris) == 18 and all(area2(t) > 0 for t in tris), "untangled fold-over grid: every UV triangle positive (exact)")
 
 # 6. --pin FILE: a seam vertex whose two sectors' UVs are rounded to multiples of 2^-20 (on the snap's grid) keeps
 # them bit for bit; a vertex with generic UVs (bits below the grid quantum) is refused, nothing written
@@ -165,8 +190,27 @@ rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
 check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
 rc, text = run("--help")
 for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
-            "--pin", "--vval", "--report", "--quiet", "--help"]:
+            "--pin", "--vval", "--report", "--outdir", "--summary", "--quiet", "--help"]:
     check(opt in text, "--help lists " + opt)
+
+# 6. --outdir: several inputs (the map and the cut mesh), each as a single run would write it, a report per input
+#    and the summary table; a missing input makes the exit status 1 without stopping the others
+outdir, summary = os.path.join(work, "batch"), os.path.join(work, "batch_summary.md")
+missing = os.path.join(work, "missing.obj")
+rc, text = run("--quiet", "--outdir", outdir, src, cut, missing, "--summary", summary)
+check(rc == 1, "--outdir with a missing input: exit 1: %d %s" % (rc, text))
+name = os.path.splitext(os.path.basename(src))[0]
+single = os.path.join(work, "single.obj")
+run(src, single, "--quiet")
+with open(single, "rb") as a, open(os.path.join(outdir, name + ".obj"), "rb") as b:
+    check(a.read() == b.read(), "--outdir writes what a single run writes")
+check(json.load(open(os.path.join(outdir, name + ".json")))["status"] == "SUCCESS", "--outdir: a report per input")
+check(json.load(open(os.path.join(outdir, "cut.json")))["status"] == "SUCCESS", "--outdir: the cut mesh welded automatically")
+table = open(summary).read()
+check("2 of 3 inputs snapped exactly" in table and "| FAILED |" in table and "missing.obj" in table,
+      "--summary: the table names every input and status: %s" % table)
+rc, text = run(src, single, "extra.obj")
+check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 
 for f in failures:
     print("FAILED:", f)

@@ -1,17 +1,20 @@
 """CTest test of the seamless_quad command line: the quad mesh of CGAL's bear with an Orbifold Tutte
 Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here from the files (every face a quad,
 every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area); refusals with
-exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs (FOLD_OVERS),
+exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
+--no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
 a grid scale that is not a power of two; command-line errors (exit 2).
 usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR"""
 import json
 import os
+import shutil
 import subprocess
 import sys
 
 from fold_over_grid import write_fold_over_grid
 
 exe, parallelogram, square, work = sys.argv[1:5]
+shutil.rmtree(work, ignore_errors=True)   # no file of an earlier run may pass a 'nothing written' check
 os.makedirs(work, exist_ok=True)
 checks, failures = [0], []
 
@@ -71,7 +74,7 @@ for ext in ["obj", "off", "ply"]:
 # 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
 folds = os.path.join(work, "folds.obj")
 write_fold_over_grid(folds)
-for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, [], "FOLD_OVERS", "quad_mesh"),
+for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, ["--no-untangle"], "FOLD_OVERS", "quad_mesh"),
                                  (parallelogram, ["--grid-scale", "3"], "power of two", "snap")]:
     out = os.path.join(work, "refused.obj")
     rc, text = run(src, out, "--report", report, *args)
@@ -81,13 +84,24 @@ for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, 
     if words == "FOLD_OVERS":
         check(len(r["quad_mesh"]["fold_overs"]) > 0, "FOLD_OVERS: the report lists the fold-overs")
 
+# the fold-over grid untangled (the default): a valid quad mesh of the 3 x 3 grid, 9 quads, 16 vertices
+out = os.path.join(work, "untangled.obj")
+rc, text = run(folds, out, "--report", report)
+r = json.load(open(report)) if os.path.exists(report) else {}
+check(rc == 0 and r.get("snap", {}).get("flips_before") == 2 and r.get("quad_mesh", {}).get("quads") == 9,
+      "the fold-over grid, untangled, gives its 9 quads: %d %s" % (rc, text))
+if rc == 0:
+    lines = [l.split() for l in open(out)]
+    check(sum(1 for p in lines if p and p[0] == "v") == 16 and sum(1 for p in lines if p and p[0] == "f") == 9,
+          "untangled fold-over grid: 16 quad vertices, 9 quads written")
+
 # 3. command-line errors and --help
 rc, text = run(parallelogram, os.path.join(work, "x.stl"))
 check(rc == 2 and ".obj, .off or .ply" in text, "unknown output format: %d %s" % (rc, text))
 rc, text = run(parallelogram)
 check(rc == 2, "missing OUT: %d" % rc)
 rc, text = run("--help")
-for opt in ["--weld", "--grid-scale", "--report", "--quiet", "--help"]:
+for opt in ["--weld", "--grid-scale", "--no-untangle", "--report", "--quiet", "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
 for f in failures:

@@ -1,6 +1,6 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
-//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--report FILE.json] [--quiet]
+//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--report FILE.json] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -40,27 +40,31 @@ namespace SS = CGAL::Seamless_snapping;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
-  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--report FILE.json] [--quiet]\n";
+  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
   "integer-grid map (every seam translation an integer vector, every cone on an integer point; the\n"
-  "package's snap with integer_grid_map(true)), then extracts its quad mesh: the vertices are the\n"
-  "integer points of the map, the edges the unit segments of its integer isolines, the faces its unit\n"
-  "cells, all decided exactly. The result is verified before it is written: every face a quad,\n"
-  "manifold, closed if the input is, Euler characteristic and number of quads (= the exact UV area)\n"
-  "those of the map, irregular vertices exactly the cones.\n"
+  "package's snap with integer_grid_map(true), which first removes the map's fold-overs inside the\n"
+  "space of maps with the same exact constraints: untangle(true)), then extracts its quad mesh: the\n"
+  "vertices are the integer points of the map, the edges the unit segments of its integer isolines,\n"
+  "the faces its unit cells, all decided exactly. The result is verified before it is written: every\n"
+  "face a quad, manifold, closed if the input is, Euler characteristic and number of quads (= the exact\n"
+  "UV area) those of the map, irregular vertices exactly the cones.\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
-  "(scale it with --grid-scale), a map with fold-overs or zero-area UV triangles (listed; make it\n"
-  "fold-free first), a cone of 90 degrees (valence 1: no quad mesh has it), a grid too coarse for the\n"
-  "surface (cells that wrap around or share more than a side: use a larger --grid-scale).\n"
+  "(scale it with --grid-scale), a map left with fold-overs or zero-area UV triangles (listed, with\n"
+  "the reason the constraints force them in the snap report's \"folds\"), a cone of 90 degrees\n"
+  "(valence 1: no quad mesh has it), a grid too coarse for the surface (cells that wrap around or share\n"
+  "more than a side: use a larger --grid-scale).\n"
   "\n"
   "Options:\n"
   "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
   "                       libigl/Directional output, whose seams are otherwise borders)\n"
   "  --grid-scale S       the integer grid is at multiples of 1/S in UV (S a power of two); larger S,\n"
   "                       finer quads (S^2 times as many)\n"
+  "  --no-untangle        snap the map as it is, without removing its fold-overs (then refused if it\n"
+  "                       has any)\n"
   "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
@@ -105,13 +109,14 @@ static std::string json_string(const std::string& v)
 int main(int argc, char** argv)
 {
   std::string in, out, report_file;
-  bool weld = false, quiet = false;
+  bool weld = false, quiet = false, untangle = true;
   double grid_scale = 1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
     else if(a == "--weld") weld = true;
     else if(a == "--quiet") quiet = true;
+    else if(a == "--no-untangle") untangle = false;
     else if(a == "--grid-scale") {
       char* end = nullptr;
       if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
@@ -143,7 +148,7 @@ int main(int argc, char** argv)
   if(!quiet) std::cout << message << "\n";
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)
-  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).grid_scale(grid_scale));
+  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle).grid_scale(grid_scale));
   if(!quiet)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
                 "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,

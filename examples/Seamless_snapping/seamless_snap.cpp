@@ -4,6 +4,7 @@
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
 //                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
 //                 [--untangle | --no-untangle] [--max-untangle-change C] [--quiet]
+//   seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
 // UVs to nearby doubles that are exactly seamless (Mandad & Campen 2019), checks the result in
@@ -27,8 +28,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <vector>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -49,7 +53,8 @@ static const char* usage_text =
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
   "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
-  "                     [--max-untangle-change C] [--quiet]\n";
+  "                     [--max-untangle-change C] [--quiet]\n"
+  "       seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]\n";
 
 static const char* help_text =
   "Makes an approximately seamless UV map exactly seamless (Mandad & Campen 2019, \"Exact\n"
@@ -118,6 +123,12 @@ static const char* help_text =
   "  --max-untangle-change C  do not use an untangled map that moves a UV by more than C grid cells\n"
   "                       (then the snapped input is written, with its fold-overs reported)\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
+  "  --outdir DIR         several inputs: each IN.obj is snapped (with the same options) into DIR/IN.obj, its\n"
+  "                       JSON report into DIR/IN.json (names by file stem: inputs must not share one), then a\n"
+  "                       summary table (Markdown: status, faces, cones, nodes, read/snap/write times) is printed;\n"
+  "                       exit status 0 only if every input was written and verified. One process, one input\n"
+  "                       after the other; for several cores run one process per file (README, 'Many maps')\n"
+  "  --summary FILE.md    with --outdir: also write the summary table to FILE.md\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
   "\n"
@@ -268,93 +279,61 @@ static std::string json_string(const std::string& v)
   return o + "\"";
 }
 
-int main(int argc, char** argv)
+// The options of a run (one input, or each input of --outdir).
+struct Options
 {
-  std::string in, out, report_file;
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
-  bool align_boundary = true, reduced = true, quiet = false, has_report = false;
+  bool align_boundary = true, reduced = true, quiet = false;
   bool integer_grid = false;
   int untangle = -1;                 // -1: the default (with --integer-grid)
   double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
   std::string features_file, vval_file, pin_file;
   double sharp_angle = -1;
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
-    else if(a == "--weld") weld = true;
-    else if(a == "--no-weld") no_weld = true;
-    else if(a == "--keep-layout") keep_layout = true;
-    else if(a == "--fail-on-new-flips") fail_on_new_flips = true;
-    else if(a == "--no-align-boundary") align_boundary = false;
-    else if(a == "--unreduced") reduced = false;
-    else if(a == "--quiet") quiet = true;
-    else if(a == "--integer-grid") integer_grid = true;
-    else if(a == "--untangle") untangle = untangle == 0 ? 2 : 1;
-    else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
-    else if(a == "--max-untangle-change") {
-      char* end = nullptr;
-      if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !(max_untangle_change >= 0)) {
-        std::cerr << "seamless_snap: --max-untangle-change needs a number of grid cells >= 0\n" << usage_text; return 2;
-      }
-      ++i;
-    }
-    else if(a == "--vt-per-corner") vt_per_corner = true;
-    else if(a == "--pin") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
-      pin_file = argv[++i];
-    }
-    else if(a == "--vval") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
-      vval_file = argv[++i];
-    }
-    else if(a == "--features") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
-      features_file = argv[++i];
-    }
-    else if(a == "--sharp-angle") {
-      char* end = nullptr;
-      if(i + 1 >= argc || (sharp_angle = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !(sharp_angle >= 0 && sharp_angle <= 180)) {
-        std::cerr << "seamless_snap: --sharp-angle needs an angle in degrees in [0, 180]\n" << usage_text; return 2;
-      }
-      ++i;
-    }
-    else if(a == "--grid-scale") {
-      char* end = nullptr;
-      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
-        std::cerr << "seamless_snap: --grid-scale needs a number\n" << usage_text; return 2;
-      }
-      ++i;
-    }
-    else if(a == "--report") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
-      report_file = argv[++i]; has_report = true;
-    }
-    else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_snap: unknown option '" << a << "'\n" << usage_text; return 2; }
-    else if(in.empty()) in = a;
-    else if(out.empty()) out = a;
-    else { std::cerr << "seamless_snap: unexpected argument '" << a << "'\n" << usage_text; return 2; }
-  }
-  if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
-  if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner ||
-                     !pin_file.empty())) {
-    std::cerr << "seamless_snap: --keep-layout does not combine with --integer-grid, --grid-scale, --features, "
-                 "--sharp-angle, --pin or --vt-per-corner (not supported yet)\n" << usage_text;
-    return 2;
-  }
-  if(!vval_file.empty() && !integer_grid) {
-    std::cerr << "seamless_snap: --vval needs --integer-grid (valences are those of an integer-grid map)\n" << usage_text;
-    return 2;
-  }
-  if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
-  if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
+};
+
+// One line of the --outdir summary.
+struct Summary_row
+{
+  std::string input, status = "not run", message;
+  std::size_t faces = 0, cones = 0, nodes = 0, flips = 0;
+  double read_ms = 0, snap_ms = 0, write_ms = 0, total_ms = 0;
+};
+
+typedef std::chrono::steady_clock Clock;
+static double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// Snaps `in` into `out` (and the JSON report into `report_file` if not empty): steps 1-4 of the header.
+// Returns the exit status; fills `row` when given.
+static int snap_file(const Options& options, const std::string& in, const std::string& out, const std::string& report_file,
+                     Summary_row* row)
+{
+  Options o = options;
+  bool& weld = o.weld;
+  const bool no_weld = o.no_weld, keep_layout = o.keep_layout, fail_on_new_flips = o.fail_on_new_flips;
+  const bool align_boundary = o.align_boundary, reduced = o.reduced, quiet = o.quiet, integer_grid = o.integer_grid;
+  const int untangle = o.untangle;
+  const double grid_scale = o.grid_scale, max_untangle_change = o.max_untangle_change, sharp_angle = o.sharp_angle;
+  const bool vt_per_corner = o.vt_per_corner, has_report = !report_file.empty();
+  const std::string& features_file = o.features_file;
+  const std::string& vval_file = o.vval_file;
+  const std::string& pin_file = o.pin_file;
+  Summary_row scratch_row;
+  Summary_row& R = row != nullptr ? *row : scratch_row;
+  R.input = in;
+  const Clock::time_point t_start = Clock::now();
+  auto fail = [&](const std::string& why) {
+    R.status = "FAILED";
+    R.message = one_line(why);
+    R.total_ms = ms_since(t_start);
+    return ::fail(why);
+  };
 
   // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
   Mesh mesh;
   UV_map uv;
   std::string message;
+  Clock::time_point t = Clock::now();
   if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
   std::size_t dup = 0, border = 0;
   const bool cut_mesh = !weld && looks_like_cut_mesh(mesh, dup, border);
@@ -365,6 +344,7 @@ int main(int argc, char** argv)
                          << "have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
   }
   if(!quiet) std::cout << message << "\n";
+  R.read_ms = ms_since(t);
 
   // feature edges (aligned like border edges; an empty map aligns nothing more)
   Edge_flags features = mesh.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
@@ -393,9 +373,12 @@ int main(int argc, char** argv)
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)
                      .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change);
+  t = Clock::now();
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
                                                                                                .pinned_corner_map(pinned));
+  R.snap_ms = ms_since(t);
+  R.faces = report.faces; R.cones = report.cones; R.nodes = report.nodes; R.flips = report.flips_after_repair;
   if(!quiet) {
     std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms,
                 report.message.empty() ? "" : ": ", one_line(report.message).c_str());
@@ -453,6 +436,7 @@ int main(int argc, char** argv)
                 "nothing was written");
 
   // 3. verify independently, in rational arithmetic; 4. write atomically
+  t = Clock::now();
   const bool exact = keep_layout ? SS::is_exactly_seamless(V, F, UV_out, FUV_out, params::weld_vertices(weld))
                                  : SS::is_exactly_seamless(mesh, uv, params::edge_is_constrained_map(features));
   if(!exact) return fail("verification failed: the snapped map is not exactly seamless (internal error; please report)");
@@ -486,5 +470,154 @@ int main(int argc, char** argv)
                 << " border vertices (valence: the grid directions in their fan; libQEx ignores them)\n";
     }
   }
+  R.write_ms = ms_since(t);
+  R.total_ms = ms_since(t_start);
+  R.status = "SUCCESS";
+  R.message.clear();
   return EXIT_SUCCESS;
+}
+
+// --outdir: the summary table (Markdown), to `os`
+static void write_summary(std::ostream& os, const std::vector<Summary_row>& rows)
+{
+  os << "| input | status | faces | cones | nodes | negative UV triangles | read ms | snap ms | verify+write ms | total ms | message |\n"
+     << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  char b[512];
+  std::size_t ok = 0;
+  double total = 0;
+  for(const Summary_row& r : rows) {
+    std::snprintf(b, sizeof b, "| %s | %s | %zu | %zu | %zu | %zu | %.1f | %.1f | %.1f | %.1f | ", r.input.c_str(), r.status.c_str(),
+                  r.faces, r.cones, r.nodes, r.flips, r.read_ms, r.snap_ms, r.write_ms, r.total_ms);
+    os << b << r.message.substr(0, 200) << " |\n";
+    ok += r.status == "SUCCESS" ? 1 : 0;
+    total += r.total_ms;
+  }
+  std::snprintf(b, sizeof b, "\n%zu of %zu inputs snapped exactly; %.1f s in all\n", ok, rows.size(), total / 1000);
+  os << b;
+}
+
+int main(int argc, char** argv)
+{
+  std::string in, out, report_file, outdir, summary_file;
+  std::vector<std::string> inputs;
+  Options o;
+  bool& weld = o.weld; bool& no_weld = o.no_weld; bool& keep_layout = o.keep_layout;
+  bool& fail_on_new_flips = o.fail_on_new_flips; bool& align_boundary = o.align_boundary; bool& reduced = o.reduced;
+  bool& quiet = o.quiet; bool& integer_grid = o.integer_grid; int& untangle = o.untangle; double& grid_scale = o.grid_scale;
+  double& max_untangle_change = o.max_untangle_change; bool& vt_per_corner = o.vt_per_corner;
+  std::string& features_file = o.features_file; std::string& vval_file = o.vval_file; std::string& pin_file = o.pin_file;
+  double& sharp_angle = o.sharp_angle;
+  bool has_report = false;
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
+    else if(a == "--weld") weld = true;
+    else if(a == "--no-weld") no_weld = true;
+    else if(a == "--keep-layout") keep_layout = true;
+    else if(a == "--fail-on-new-flips") fail_on_new_flips = true;
+    else if(a == "--no-align-boundary") align_boundary = false;
+    else if(a == "--unreduced") reduced = false;
+    else if(a == "--quiet") quiet = true;
+    else if(a == "--integer-grid") integer_grid = true;
+    else if(a == "--untangle") untangle = untangle == 0 ? 2 : 1;
+    else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
+    else if(a == "--max-untangle-change") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !(max_untangle_change >= 0)) {
+        std::cerr << "seamless_snap: --max-untangle-change needs a number of grid cells >= 0\n" << usage_text; return 2;
+      }
+      ++i;
+    }
+    else if(a == "--vt-per-corner") vt_per_corner = true;
+    else if(a == "--pin") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
+      pin_file = argv[++i];
+    }
+    else if(a == "--vval") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
+      vval_file = argv[++i];
+    }
+    else if(a == "--features") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
+      features_file = argv[++i];
+    }
+    else if(a == "--sharp-angle") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (sharp_angle = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !(sharp_angle >= 0 && sharp_angle <= 180)) {
+        std::cerr << "seamless_snap: --sharp-angle needs an angle in degrees in [0, 180]\n" << usage_text; return 2;
+      }
+      ++i;
+    }
+    else if(a == "--grid-scale") {
+      char* end = nullptr;
+      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
+        std::cerr << "seamless_snap: --grid-scale needs a number\n" << usage_text; return 2;
+      }
+      ++i;
+    }
+    else if(a == "--outdir") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --outdir needs a directory\n" << usage_text; return 2; }
+      outdir = argv[++i];
+    }
+    else if(a == "--summary") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --summary needs a file name\n" << usage_text; return 2; }
+      summary_file = argv[++i];
+    }
+    else if(a == "--report") {
+      if(i + 1 >= argc) { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
+      report_file = argv[++i]; has_report = true;
+    }
+    else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_snap: unknown option '" << a << "'\n" << usage_text; return 2; }
+    else inputs.push_back(a);
+  }
+  if(!outdir.empty()) {   // several inputs, one summary
+    if(inputs.empty()) { std::cerr << "seamless_snap: --outdir needs at least one input\n" << usage_text; return 2; }
+    if(has_report || !vval_file.empty()) {
+      std::cerr << "seamless_snap: with --outdir every input gets OUTDIR/NAME.json; --report and --vval name one file\n" << usage_text;
+      return 2;
+    }
+  } else {
+    if(!summary_file.empty()) { std::cerr << "seamless_snap: --summary needs --outdir\n" << usage_text; return 2; }
+    if(inputs.size() > 2) { std::cerr << "seamless_snap: unexpected argument '" << inputs[2] << "' (several inputs: --outdir)\n" << usage_text; return 2; }
+    if(inputs.size() == 2) { in = inputs[0]; out = inputs[1]; }
+  }
+  if(outdir.empty() && (in.empty() || out.empty())) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
+  if(keep_layout && (integer_grid || grid_scale != 1 || !features_file.empty() || sharp_angle >= 0 || vt_per_corner ||
+                     !pin_file.empty())) {
+    std::cerr << "seamless_snap: --keep-layout does not combine with --integer-grid, --grid-scale, --features, "
+                 "--sharp-angle, --pin or --vt-per-corner (not supported yet)\n" << usage_text;
+    return 2;
+  }
+  if(!vval_file.empty() && !integer_grid) {
+    std::cerr << "seamless_snap: --vval needs --integer-grid (valences are those of an integer-grid map)\n" << usage_text;
+    return 2;
+  }
+  if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
+  if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
+
+  if(outdir.empty()) return snap_file(o, in, out, has_report ? report_file : std::string(), nullptr);
+  // --outdir: each input to OUTDIR/NAME.obj with its report OUTDIR/NAME.json, then the summary table
+  std::error_code ec;
+  std::filesystem::create_directories(outdir, ec);
+  if(!std::filesystem::is_directory(outdir)) return fail("cannot create the output directory '" + outdir + "'");
+  std::vector<Summary_row> rows(inputs.size());
+  int status = EXIT_SUCCESS;
+  for(std::size_t i = 0; i < inputs.size(); ++i) {
+    const std::filesystem::path name = std::filesystem::path(inputs[i]).stem();
+    const std::string obj = (std::filesystem::path(outdir) / name).string() + ".obj";
+    const std::string json = (std::filesystem::path(outdir) / name).string() + ".json";
+    if(!quiet) std::cout << "== " << inputs[i] << " -> " << obj << "\n";
+    if(snap_file(o, inputs[i], obj, json, &rows[i]) != EXIT_SUCCESS) status = EXIT_FAILURE;
+  }
+  std::cout << "\n";
+  write_summary(std::cout, rows);
+  if(!summary_file.empty()) {
+    std::ostringstream table;
+    write_summary(table, rows);
+    std::string message;
+    if(SS::IO::internal::write_text_atomically(summary_file, table.str(), message) != SS::SUCCESS) return fail(message);
+  }
+  return status;
 }

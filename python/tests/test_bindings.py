@@ -626,7 +626,7 @@ def test_extract_quad_mesh_shared_data(name, weld):
     path = os.path.join(SHARED, name)
     if not SHARED or not os.path.exists(path):
         pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = read_obj(path)
+    V, F, UV, FUV = ss.read_obj(path)
     UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld, integer_grid_map=True)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
     # welded: the rows of V with one position are one vertex; compare positions, not rows

@@ -3,6 +3,7 @@
 //   io: every shared UV file reads, counts match SOURCES.md, write -> read is bit-exact, also with
 //       vt_per_corner(true) (then the file has exactly 3 #f vt lines, libQEx's layout)
 //   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
+//   io: the reader builds the halfedges Euler::add_face() builds (random soups, the shared maps), refuses the same soups
 //   io: an invalid mesh or an unwritable place writes no file (atomic write)
 //   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not; the map has the
 //             seams, rotations and cones of shared/data's bear_orbifold_square_mvc.obj and its UVs within 1e-11 of
@@ -343,6 +344,138 @@ static void test_malformed()
   expect_invalid("degenerate after weld", tri + "v 0 0 0\nf 1/1 5/2 3/3\n", "after welding", true);
   expect_invalid("empty", "", "empty mesh");
   expect_invalid("no faces", tri + "# only vertices\n", "empty mesh");
+}
+
+// ------------------------------------------------------------------------------------------
+// The reader's connectivity (Halfedge_arrays, internal/io/halfedge_arrays.h) against CGAL::Euler::add_face(), face by
+// face on a Surface_mesh, as the reader built it before issue 26, followed by the same fan test: the same faces refused
+// or the same halfedge structure, element by element (target, next, prev, face of every halfedge; halfedge of every
+// vertex and face).
+typedef std::vector<std::array<int, 3> > Triangles;
+
+// Euler::add_face() on `faces` over vertices 0..nv-1 (all used), then the fan test of build_mesh(); true if accepted.
+static bool euler_reference(const Triangles& faces, int nv, Mesh& m)
+{
+  m.clear();
+  for(int i = 0; i < nv; ++i) m.add_vertex(Point_3(i, 0, 0));
+  for(const std::array<int, 3>& f : faces) {
+    const std::array<vertex_descriptor, 3> fv = {vertex_descriptor(f[0]), vertex_descriptor(f[1]), vertex_descriptor(f[2])};
+    if(fv[0] == fv[1] || fv[1] == fv[2] || fv[0] == fv[2]) return false;
+    if(CGAL::Euler::add_face(fv, m) == Mesh::null_face()) return false;
+  }
+  std::vector<std::size_t> in_degree(m.number_of_vertices(), 0);
+  for(halfedge_descriptor h : m.halfedges()) ++in_degree[m.target(h)];
+  for(vertex_descriptor v : m.vertices()) {
+    std::size_t around = 0, border = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(m.halfedge(v), m)) { ++around; border += m.is_border(h) ? 1 : 0; }
+    if(around != in_degree[v] || border > 1) return false;
+  }
+  return true;
+}
+
+static bool same_halfedge_structure(const Mesh& a, const Mesh& b, std::string& why)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_halfedges() != b.number_of_halfedges() ||
+     a.number_of_faces() != b.number_of_faces()) { why = "element counts"; return false; }
+  for(halfedge_descriptor h : a.halfedges())
+    if(a.target(h) != b.target(h) || a.next(h) != b.next(h) || a.prev(h) != b.prev(h) || a.face(h) != b.face(h)) {
+      why = "halfedge " + std::to_string(h.idx()); return false;
+    }
+  for(vertex_descriptor v : a.vertices()) if(a.halfedge(v) != b.halfedge(v)) { why = "halfedge of vertex " + std::to_string(v.idx()); return false; }
+  for(face_descriptor f : a.faces()) if(a.halfedge(f) != b.halfedge(f)) { why = "halfedge of face " + std::to_string(f.idx()); return false; }
+  return true;
+}
+
+// `faces` (every vertex 0..nv-1 used) through the reader; `accepted`: its status was SUCCESS.
+static void read_triangles(const Triangles& faces, int nv, Mesh& m, bool& accepted)
+{
+  std::string text;
+  for(int i = 0; i < nv; ++i) text += "v " + std::to_string(i) + " 0 0\n";
+  text += "vt 0 0\n";
+  for(const std::array<int, 3>& f : faces)
+    text += "f " + std::to_string(f[0] + 1) + "/1 " + std::to_string(f[1] + 1) + "/1 " + std::to_string(f[2] + 1) + "/1\n";
+  m.clear();
+  UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  std::istringstream is(text);
+  std::string msg;
+  accepted = SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::SUCCESS;
+}
+
+static void test_euler_equivalence()
+{
+  std::cout << "io: the reader builds the halfedges that Euler::add_face() builds, and refuses the same soups\n";
+  // random soups: triangles of an n x n grid (each square split either way), a random subset in random order, some
+  // reversed, some repeated, some joining random vertices; the vertices renumbered to those used, in order of use
+  std::mt19937 rng(26);
+  std::size_t accepted = 0, refused = 0;
+  const int rounds = sanitizer_subset() ? 300 : 3000;
+  for(int round = 0; round < rounds; ++round) {
+    const int n = 2 + int(rng() % 6);
+    Triangles all;
+    for(int i = 0; i + 1 < n; ++i)
+      for(int j = 0; j + 1 < n; ++j) {
+        const int a = i * n + j, b = a + 1, c = a + n, d = c + 1;
+        if(rng() % 2) { all.push_back({a, b, d}); all.push_back({a, d, c}); }
+        else          { all.push_back({a, b, c}); all.push_back({b, d, c}); }
+      }
+    std::shuffle(all.begin(), all.end(), rng);
+    Triangles faces;
+    const std::size_t keep = 1 + rng() % all.size();
+    for(std::size_t i = 0; i < keep; ++i) {
+      std::array<int, 3> f = all[i];
+      const unsigned r = rng() % 64;
+      if(r == 0) std::swap(f[1], f[2]);                              // reversed
+      if(r == 1 && !faces.empty()) f = faces[rng() % faces.size()];  // repeated
+      if(r == 2) f = {int(rng() % (n * n)), int(rng() % (n * n)), int(rng() % (n * n))};   // anywhere (maybe degenerate)
+      faces.push_back(f);
+    }
+    // renumber: the vertices used, in order of first use in the vertex list (the reader drops unused ones)
+    std::vector<int> id(std::size_t(n * n), -1);
+    for(const std::array<int, 3>& f : faces) for(int v : f) id[std::size_t(v)] = 0;
+    int nv = 0;
+    for(int& i : id) if(i == 0) i = nv++;
+    for(std::array<int, 3>& f : faces) for(int& v : f) v = id[std::size_t(v)];
+    Mesh ref, got;
+    bool read_ok = false;
+    const bool ref_ok = euler_reference(faces, nv, ref);
+    read_triangles(faces, nv, got, read_ok);
+    CHECK(ref_ok == read_ok, "soup " << round << ": Euler::add_face " << (ref_ok ? "accepts" : "refuses") << ", the reader "
+                                     << (read_ok ? "accepts" : "refuses"));
+    std::string why;
+    if(ref_ok && read_ok) CHECK(same_halfedge_structure(ref, got, why), "soup " << round << ": " << why);
+    (ref_ok ? accepted : refused) += 1;
+  }
+  std::cout << "  " << rounds << " random soups: " << accepted << " accepted, " << refused << " refused, the same as Euler::add_face()\n";
+
+  // the shared maps (welded as bench_snap reads them)
+  const fs::path root(SS_SHARED_DATA_DIR);
+  if(root.empty() || !fs::is_directory(root)) return;
+  std::size_t files = 0;
+  for(const auto& e : fs::recursive_directory_iterator(root)) {
+    if(!e.is_regular_file() || e.path().extension() != ".obj" || !shared_data_file_in_subset(e.file_size())) continue;
+    const bool weld = e.path().parent_path().filename() == "directional";
+    Eigen::MatrixXd V, UV;
+    Eigen::MatrixXi F, FUV;
+    std::string msg;
+    if(SS::IO::read_OBJ_matrices(e.path().string(), V, F, UV, FUV, msg, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+      CHECK(false, "read_OBJ_matrices " << e.path() << ": " << msg);
+      continue;
+    }
+    std::vector<int> id(std::size_t(V.rows()), -1);
+    for(Eigen::Index f = 0; f < F.rows(); ++f) for(int k = 0; k < 3; ++k) id[std::size_t(F(f, k))] = 0;
+    int nv = 0;
+    for(int& i : id) if(i == 0) i = nv++;
+    Triangles faces(std::size_t(F.rows()));
+    for(Eigen::Index f = 0; f < F.rows(); ++f) for(int k = 0; k < 3; ++k) faces[std::size_t(f)][std::size_t(k)] = id[std::size_t(F(f, k))];
+    Mesh ref, got;
+    UV_map uv = got.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+    const bool ref_ok = euler_reference(faces, nv, ref);
+    const bool read_ok = SS::IO::read_OBJ_with_corner_uvs(e.path().string(), got, uv, msg, SS::parameters::weld_vertices(weld)) == SS::SUCCESS;
+    std::string why;
+    CHECK(ref_ok && read_ok && same_halfedge_structure(ref, got, why), e.path().filename() << ": " << why);
+    ++files;
+  }
+  std::cout << "  " << files << " shared maps: the same halfedge structure\n";
 }
 
 static void test_valid_variants()
@@ -879,6 +1012,7 @@ int main(int argc, char** argv)
   const auto t0 = std::chrono::steady_clock::now();
   const fs::path tmp = scratch_dir();
   test_malformed();
+  test_euler_equivalence();
   test_valid_variants();
   test_write_failures(tmp);
   test_shared_data(tmp);

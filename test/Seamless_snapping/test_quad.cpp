@@ -8,7 +8,7 @@
 // Author(s)     : The Seamless Snapping authors
 
 // Tests of the quad layer: extract_quad_mesh() on exact integer-grid maps, and quad_valences() against it.
-//   quad: exact tests on doubles  same_difference() and is_integer_sum() (TwoSum, used by the exact integer-grid
+//   quad: exact tests on doubles  same_difference() and is_integer_sum() (Dyadic_sum, used by the exact integer-grid
 //                               check) agree with Gmpq on 200000 random, near-miss and exact cases
 // Every extracted mesh is checked here, independently of the extractor (check_quad_mesh()): a valid
 // manifold polygon mesh of quads; closed when the map is; V - E + F and the number of quads equal to the
@@ -501,7 +501,7 @@ static void test_shared_data()
 }
 
 // The exact tests on doubles that the extractor's input check uses (exact_uv_check.h, integer_grid_constraints.h):
-// same_difference (x - y == z - w, by TwoSum pairs) and is_integer_sum ((a + b) 2^s an integer) against Gmpq, on
+// same_difference (x - y == z - w, by Dyadic_sum) and is_integer_sum ((a + b) 2^s an integer) against Gmpq, on
 // random doubles of every magnitude, on near misses (one ulp off) and on exact hits.
 static void test_exact_double_tests()
 {

@@ -4,6 +4,8 @@
 //                                          SUCCESS, exact after (Gmpq), change bounded by the input violation,
 //                                          sectors outside constraints untouched, deterministic
 //   snap: already exact input unchanged    libigl cube.obj stays bit-identical
+//   snap: exact helpers                    scale_by_power_of_two / binary_exponent = std::ldexp / std::frexp bit for bit,
+//                                          Dyadic_sum = Gmpq, atan2_within_3e_9 within 3e-9 of std::atan2 (issue 26)
 //   snap: scale covariance                 bear orbifold and MIQ map, UVs scaled by 2^j (j = -1100 ... 1100):
 //                                          the scaled result of j = 0 bit for bit, or a clear refusal
 //   snap: reproducers                      seams of UV size 1e-300 ... 1e300 snap with the right k; a far-away
@@ -46,6 +48,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -53,6 +56,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -947,11 +951,78 @@ static void test_flip_repair_data()
               "%zu of them forced by the constraints)\n", introduced, unrepaired, forced);
 }
 
+// The helpers that replaced libm and multiprecision calls on the hot path (issue 26), against what they replace:
+// scale_by_power_of_two / binary_exponent = std::ldexp / std::frexp bit for bit (also subnormal and overflowing
+// results), Dyadic_sum = CGAL::Gmpq (zero, integer, comparison of magnitudes; or "does not fit"), atan2_within_3e_9
+// within 3e-9 of std::atan2. Random doubles over the whole exponent range plus edge cases; all exact relations, no
+// stored bits.
+static void test_exact_helpers()
+{
+  namespace SI = SS::internal;
+  std::mt19937_64 rng(26);
+  auto any_double = [&]() {   // random sign, mantissa and exponent over the whole range (also subnormal)
+    std::uint64_t b = rng();
+    if((b & 0xFF) == 0) b &= 0x800FFFFFFFFFFFFFull;            // subnormal
+    double x; std::memcpy(&x, &b, sizeof x);
+    return std::isfinite(x) ? x : 1.5;
+  };
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const double edge[] = {0., -0., 1., -1., 0.5, 0x1p-1022, 0x1p-1074, -0x1p-1074, 0x1.fffffffffffffp1023, 0x1p-1023, 3.0e-310};
+  for(int i = 0; i < 400000; ++i) {
+    const double x = i < 11 ? edge[i] : any_double();
+    const int e = int(rng() % 2300) - 1150;
+    assert(same(SI::scale_by_power_of_two(x, e), std::ldexp(x, e)));
+    int fe = 0;
+    std::frexp(x, &fe);
+    assert(SI::binary_exponent(x) == fe);
+  }
+  // Dyadic_sum: a x + b y + c z + k against Gmpq, for values of nearby and of far-apart exponents
+  std::size_t fits = 0, checked = 0;
+  for(int i = 0; i < 200000; ++i) {
+    const int spread = i % 3 == 0 ? 4 : i % 3 == 1 ? 60 : 400;
+    double v[3];
+    for(double& t : v) {
+      t = std::ldexp(double(std::int64_t(rng() >> 11) - (std::int64_t(1) << 52)), int(rng() % spread) - spread / 2 - 52);
+      if(rng() % 8 == 0) t = std::trunc(t);
+    }
+    if(i % 5 == 0) v[2] = v[0] - v[1];                          // often exactly zero or integer
+    const long c[3] = {long(rng() % 5) - 2, long(rng() % 5) - 2, long(rng() % 3) - 1};
+    const long k = i % 7 == 0 ? long(rng() % 1000) - 500 : 0;
+    SI::Dyadic_sum d;
+    CGAL::Gmpq q(k);
+    d.add_integer(k);
+    for(int j = 0; j < 3; ++j) { d.add(c[j], v[j]); q += CGAL::Gmpq(double(c[j])) * CGAL::Gmpq(v[j]); }
+    ++checked;
+    if(!d.fits()) continue;
+    ++fits;
+    assert(d.is_zero() == (q == 0));
+    assert(d.is_integer() == (q.denominator() == 1));
+    SI::Dyadic_sum e;
+    e.add(1, v[0]);
+    const CGAL::Gmpq a = CGAL::abs(q), b = CGAL::abs(CGAL::Gmpq(v[0]));
+    if(e.fits()) assert(d.compare_magnitude(e) == (a < b ? -1 : a == b ? 0 : 1));
+  }
+  // atan2_within_3e_9: within 3e-9 of std::atan2 in all four quadrants, near the octant and reduction boundaries
+  double worst = 0;
+  for(int i = 0; i < 400000; ++i) {
+    double y = std::ldexp(double(std::int64_t(rng() >> 11) - (std::int64_t(1) << 52)), -52);
+    double x = std::ldexp(double(std::int64_t(rng() >> 11) - (std::int64_t(1) << 52)), -52);
+    if(i % 4 == 1) y = x * std::tan(0.2617993877991494 * (1 + 1e-9 * double(int(rng() % 3) - 1)));   // pi/12
+    if(i % 4 == 2) y = x * (1 + 1e-12 * double(int(rng() % 3) - 1));                                // pi/4
+    if(y == 0 || x == 0) continue;
+    worst = (std::max)(worst, std::fabs(SI::atan2_within_3e_9(y, x) - std::atan2(y, x)));
+  }
+  assert(worst < 3e-9);
+  std::printf("snap: exact helpers: ldexp/frexp bit for bit, Dyadic_sum = Gmpq on %zu of %zu sums (the rest do not fit), "
+              "atan2 within %.2g\n", fits, checked, worst);
+}
+
 int main(int argc, char** argv)
 {
   parse_test_arguments(argc, argv);
   auto t0 = std::chrono::steady_clock::now();
   std::vector<File_result> results;
+  test_exact_helpers();
   test_data_meshes(results);
   test_scale_covariance();
   test_reproducers();

@@ -12,6 +12,8 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
+#include <CGAL/Seamless_snapping/internal/io/halfedge_arrays.h>
+#include <CGAL/Seamless_snapping/internal/io/line_reader.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -92,17 +94,28 @@ inline bool parse_index(const char*& p, const char* end, long long& i)
   return true;
 }
 
+// Writes x with 17 significant digits (enough for any double to read back bit-identically) at p, which
+// must have room for 32 characters; returns the end.
+inline char* write_double(char* p, double x)
+{
+#if defined(__cpp_lib_to_chars)
+  return std::to_chars(p, p + 32, x, std::chars_format::general, 17).ptr;
+#else
+  return p + std::snprintf(p, 32, "%.17g", x);
+#endif
+}
+
+// Writes the decimal digits of i at p (room for 20 characters); returns the end.
+inline char* write_index(char* p, std::uint64_t i)
+{
+  return std::to_chars(p, p + 20, i).ptr;
+}
+
 // Appends x with 17 significant digits (enough for any double to read back bit-identically).
 inline void append_double(std::string& out, double x)
 {
-  char buf[64];
-#if defined(__cpp_lib_to_chars)
-  std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), x, std::chars_format::general, 17);
-  out.append(buf, r.ptr);
-#else
-  int n = std::snprintf(buf, sizeof(buf), "%.17g", x);
-  out.append(buf, buf + n);
-#endif
+  char buf[32];
+  out.append(buf, write_double(buf, x));
 }
 
 inline std::uint64_t double_bits(double x)
@@ -154,11 +167,15 @@ struct Obj_soup
 };
 
 // Reads the whole stream into `soup`. Returns SUCCESS or INVALID_INPUT with "<where>:<line>: reason".
+// Lines come from for_each_line() (std::getline's lines, without a std::string each); messages are only
+// formatted on failure.
 inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& where, std::string& message)
 {
+  Status status = SUCCESS;
   auto fail = [&](std::size_t line, const std::string& why) {
     message = where + ":" + std::to_string(line) + ": " + why;
-    return INVALID_INPUT;
+    status = INVALID_INPUT;
+    return false;
   };
 
   // Largest positive index seen per kind, with its line (range check once the counts are known:
@@ -166,132 +183,132 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
   long long max_v = 0, max_vt = 0;
   std::size_t max_v_line = 0, max_vt_line = 0;
 
-  std::string line;
-  std::size_t lineno = 0;
-  while(std::getline(is, line))
-  {
-    ++lineno;
-    const char* p = line.data();
-    const char* end = p + line.size();
+  // Reads `required` doubles; extra numbers (v: w or r g b; vt: w) are ignored. False after fail().
+  auto read_numbers = [&](const char*& p, const char* end, std::size_t lineno, double* out, int required,
+                          const char* what) -> bool {
+    for(int k = 0; k < required; ++k) {
+      skip_spaces(p, end);
+      bool oor = false;
+      const char* start = p;
+      if(p == end)
+        return fail(lineno, std::string("'") + what + "' record needs " + std::to_string(required) + " coordinates, got " + std::to_string(k));
+      if(!parse_double(p, end, out[k], oor) || (p != end && !is_space(*p))) {
+        const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
+        const std::string tok = quote_token(start, tok_end);
+        if(oor) return fail(lineno, "coordinate " + tok + " is outside the range of double (Inf)");
+        return fail(lineno, "cannot parse coordinate " + tok + " of a '" + what + "' record");
+      }
+      if(!std::isfinite(out[k]))
+        return fail(lineno, std::string("non-finite coordinate (NaN or Inf) in a '") + what + "' record");
+    }
+    return true;
+  };
+
+  // One face record after its tag: the corners "v/vt", "v/vt/vn"; only triangles.
+  auto read_face = [&](const char*& p, const char* end, std::size_t lineno) -> bool {
+    std::array<long long, 3> vi{}, ti{};
+    int n = 0;
+    for(;;)
+    {
+      skip_spaces(p, end);
+      if(p == end) break;
+      const char* tok = p;
+      while(p != end && !is_space(*p)) ++p;
+      const char* tok_end = p;
+      auto token = [&]() { return quote_token(tok, tok_end); };
+      if(n == 3) {   // count the rest for the message
+        int extra = 1;
+        for(;;) { skip_spaces(p, end); if(p == end) break; while(p != end && !is_space(*p)) ++p; ++extra; }
+        return fail(lineno, "face with " + std::to_string(3 + extra) +
+                            " vertices; only triangles are supported (this reader does not triangulate)");
+      }
+      const char* q = tok;
+      long long a = 0, b = 0;
+      if(!parse_index(q, tok_end, a))
+        return fail(lineno, "cannot parse vertex index in face corner " + token());
+      if(q == tok_end || *q != '/')
+        return fail(lineno, "face corner " + token() + " has no texture coordinate (expected v/vt or v/vt/vn)");
+      ++q;
+      if(q == tok_end || *q == '/')
+        return fail(lineno, "face corner " + token() + " has no texture coordinate" + (q != tok_end ? " (v//vn)" : "") +
+                            "; per-corner UVs are required");
+      if(!parse_index(q, tok_end, b))
+        return fail(lineno, "cannot parse texture index in face corner " + token());
+      if(q != tok_end) {
+        if(*q != '/') return fail(lineno, "malformed face corner " + token());
+        ++q;
+        long long c = 0;   // normal index: syntax checked, value ignored
+        if(q != tok_end && (!parse_index(q, tok_end, c) || q != tok_end))
+          return fail(lineno, "malformed normal index in face corner " + token());
+      }
+      if(a == 0 || b == 0)
+        return fail(lineno, "index 0 in face corner " + token() + " (OBJ indices start at 1)");
+      // Negative = relative to the elements read so far (-1 = the last one).
+      const long long a_in = a, b_in = b;
+      if(!resolve_index(a_in, soup.points.size(), a))
+        return fail(lineno, "relative vertex index " + std::to_string(a_in) + " out of range: it refers before the first vertex (" +
+                            std::to_string(soup.points.size()) + " read so far)");
+      if(!resolve_index(b_in, soup.uvs.size(), b))
+        return fail(lineno, "relative texture index " + std::to_string(b_in) + " out of range: it refers before the first texture coordinate (" +
+                            std::to_string(soup.uvs.size()) + " read so far)");
+      if(a_in > max_v) { max_v = a_in; max_v_line = lineno; }
+      if(b_in > max_vt) { max_vt = b_in; max_vt_line = lineno; }
+      vi[std::size_t(n)] = a; ti[std::size_t(n)] = b;
+      ++n;
+    }
+    if(n < 3)
+      return fail(lineno, "face with " + std::to_string(n) + " vertices (at least 3 needed, and only triangles are supported)");
+    soup.face_v.push_back({std::size_t(vi[0]), std::size_t(vi[1]), std::size_t(vi[2])});
+    soup.face_vt.push_back({std::size_t(ti[0]), std::size_t(ti[1]), std::size_t(ti[2])});
+    soup.face_line.push_back(lineno);
+    return true;
+  };
+
+  bool read_error = false;
+  const std::size_t lines = for_each_line(is, [&](const char* p, const char* end, std::size_t lineno) -> bool {
     // a UTF-8 byte-order mark at the start of the file is not part of the first record
-    if(lineno == 1 && line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) p += 3;
+    if(lineno == 1 && end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
     // A '#' starts a comment anywhere on the line (also covers "#scale_uv" and friends).
     if(const void* hash = std::memchr(p, '#', std::size_t(end - p)))   // from p: after a byte-order mark too
       end = static_cast<const char*>(hash);
     skip_spaces(p, end);
-    if(p == end) continue;
+    if(p == end) return true;
     const char* tag_begin = p;
     while(p != end && !is_space(*p)) ++p;
     const std::size_t tag_len = std::size_t(p - tag_begin);
-
-    auto is_tag = [&](const char* t) { return tag_len == std::strlen(t) && std::strncmp(tag_begin, t, tag_len) == 0; };
-
-    // Reads `n` doubles (at least `required` of them); extra numbers (v: w or r g b; vt: w) are ignored.
-    auto read_numbers = [&](double* out, int required, const char* what) -> Status {
-      for(int k = 0; k < required; ++k) {
-        skip_spaces(p, end);
-        bool oor = false;
-        const char* start = p;
-        if(p == end)
-          return fail(lineno, std::string("'") + what + "' record needs " + std::to_string(required) + " coordinates, got " + std::to_string(k));
-        if(!parse_double(p, end, out[k], oor) || (p != end && !is_space(*p))) {
-          const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
-          const std::string tok = quote_token(start, tok_end);
-          if(oor) return fail(lineno, "coordinate " + tok + " is outside the range of double (Inf)");
-          return fail(lineno, "cannot parse coordinate " + tok + " of a '" + what + "' record");
-        }
-        if(!std::isfinite(out[k]))
-          return fail(lineno, std::string("non-finite coordinate (NaN or Inf) in a '") + what + "' record");
-      }
-      return SUCCESS;
-    };
-
-    if(is_tag("v"))
-    {
+    if(tag_len == 1 && tag_begin[0] == 'f') return read_face(p, end, lineno);
+    if(tag_len == 1 && tag_begin[0] == 'v') {
       std::array<double, 3> x;
-      if(read_numbers(x.data(), 3, "v") != SUCCESS) return INVALID_INPUT;
+      if(!read_numbers(p, end, lineno, x.data(), 3, "v")) return false;
       soup.points.push_back(x);
+      return true;
     }
-    else if(is_tag("vt"))
-    {
+    if(tag_len == 2 && tag_begin[0] == 'v' && tag_begin[1] == 't') {
       std::array<double, 2> x;
-      if(read_numbers(x.data(), 2, "vt") != SUCCESS) return INVALID_INPUT;
+      if(!read_numbers(p, end, lineno, x.data(), 2, "vt")) return false;
       soup.uvs.push_back(x);
+      return true;
     }
-    else if(is_tag("f"))
-    {
-      std::array<long long, 3> vi{}, ti{};
-      int n = 0;
-      for(;;)
-      {
-        skip_spaces(p, end);
-        if(p == end) break;
-        const char* tok = p;
-        while(p != end && !is_space(*p)) ++p;
-        const char* tok_end = p;
-        const std::string tok_str = quote_token(tok, tok_end);
-        if(n == 3) {   // count the rest for the message
-          int extra = 1;
-          for(;;) { skip_spaces(p, end); if(p == end) break; while(p != end && !is_space(*p)) ++p; ++extra; }
-          return fail(lineno, "face with " + std::to_string(3 + extra) +
-                              " vertices; only triangles are supported (this reader does not triangulate)");
-        }
-        const char* q = tok;
-        long long a = 0, b = 0;
-        if(!parse_index(q, tok_end, a))
-          return fail(lineno, "cannot parse vertex index in face corner " + tok_str);
-        if(q == tok_end || *q != '/')
-          return fail(lineno, "face corner " + tok_str + " has no texture coordinate (expected v/vt or v/vt/vn)");
-        ++q;
-        if(q == tok_end || *q == '/')
-          return fail(lineno, "face corner " + tok_str + " has no texture coordinate" + (q != tok_end ? " (v//vn)" : "") +
-                              "; per-corner UVs are required");
-        if(!parse_index(q, tok_end, b))
-          return fail(lineno, "cannot parse texture index in face corner " + tok_str);
-        if(q != tok_end) {
-          if(*q != '/') return fail(lineno, "malformed face corner " + tok_str);
-          ++q;
-          long long c = 0;   // normal index: syntax checked, value ignored
-          if(q != tok_end && (!parse_index(q, tok_end, c) || q != tok_end))
-            return fail(lineno, "malformed normal index in face corner " + tok_str);
-        }
-        if(a == 0 || b == 0)
-          return fail(lineno, "index 0 in face corner " + tok_str + " (OBJ indices start at 1)");
-        // Negative = relative to the elements read so far (-1 = the last one).
-        const long long a_in = a, b_in = b;
-        if(!resolve_index(a_in, soup.points.size(), a))
-          return fail(lineno, "relative vertex index " + std::to_string(a_in) + " out of range: it refers before the first vertex (" +
-                              std::to_string(soup.points.size()) + " read so far)");
-        if(!resolve_index(b_in, soup.uvs.size(), b))
-          return fail(lineno, "relative texture index " + std::to_string(b_in) + " out of range: it refers before the first texture coordinate (" +
-                              std::to_string(soup.uvs.size()) + " read so far)");
-        if(a_in > max_v) { max_v = a_in; max_v_line = lineno; }
-        if(b_in > max_vt) { max_vt = b_in; max_vt_line = lineno; }
-        vi[n] = a; ti[n] = b;
-        ++n;
-      }
-      if(n < 3)
-        return fail(lineno, "face with " + std::to_string(n) + " vertices (at least 3 needed, and only triangles are supported)");
-      soup.face_v.push_back({std::size_t(vi[0]), std::size_t(vi[1]), std::size_t(vi[2])});
-      soup.face_vt.push_back({std::size_t(ti[0]), std::size_t(ti[1]), std::size_t(ti[2])});
-      soup.face_line.push_back(lineno);
-    }
-    else
-    {
-      // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
-      ++soup.skipped_records;
-    }
-  }
-  if(is.bad()) {
-    message = where + ": read error after line " + std::to_string(lineno);
+    // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
+    ++soup.skipped_records;
+    return true;
+  }, read_error);
+  if(status != SUCCESS) return status;
+  if(read_error) {
+    message = where + ": read error after line " + std::to_string(lines);
     return INVALID_INPUT;
   }
-  if(max_v > static_cast<long long>(soup.points.size()))
-    return fail(max_v_line, "vertex index " + std::to_string(max_v) + " out of range (the file has " +
-                            std::to_string(soup.points.size()) + " vertices)");
-  if(max_vt > static_cast<long long>(soup.uvs.size()))
-    return fail(max_vt_line, "texture index " + std::to_string(max_vt) + " out of range (the file has " +
-                             std::to_string(soup.uvs.size()) + " texture coordinates)");
+  const std::size_t lineno = lines;
+  if(max_v > static_cast<long long>(soup.points.size())) {
+    fail(max_v_line, "vertex index " + std::to_string(max_v) + " out of range (the file has " +
+                     std::to_string(soup.points.size()) + " vertices)");
+    return status;
+  }
+  if(max_vt > static_cast<long long>(soup.uvs.size())) {
+    fail(max_vt_line, "texture index " + std::to_string(max_vt) + " out of range (the file has " +
+                      std::to_string(soup.uvs.size()) + " texture coordinates)");
+    return status;
+  }
   if(soup.face_v.empty()) {
     message = where + ": empty mesh: no face in " + std::to_string(lineno) + " lines (" +
               std::to_string(soup.points.size()) + " vertices)";
@@ -300,41 +317,46 @@ inline Status parse_obj(std::istream& is, Obj_soup& soup, const std::string& whe
   return SUCCESS;
 }
 
-struct Bits3_hash
-{
-  std::size_t operator()(const std::array<std::uint64_t, 3>& a) const
-  {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for(std::uint64_t x : a) { h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2); }
-    return std::size_t(h ^ (h >> 29));
-  }
-};
-
 // rep[i]: the file vertex that vertex i of `points` becomes: itself, or with `weld` the first vertex of the
 // file with bit-identical coordinates (0.0 and -0.0 differ). Returns how many vertices were merged into an earlier one.
+// The first occurrences are found with an open-addressing hash table of vertex indices (linear probing,
+// at most half full), which compares the coordinates' bits: no node per vertex, as std::unordered_map has.
 inline std::size_t weld_representatives(const std::vector<std::array<double, 3> >& points, bool weld,
                                         std::vector<std::size_t>& rep)
 {
   const std::size_t nv = points.size();
   rep.resize(nv);
   std::size_t welded = 0;
-  if(weld) {
-    std::unordered_map<std::array<std::uint64_t, 3>, std::size_t, Bits3_hash> first;
-    first.reserve(nv);
-    for(std::size_t i = 0; i < nv; ++i) {
-      const std::array<double, 3>& x = points[i];
-      auto ins = first.emplace(std::array<std::uint64_t, 3>{double_bits(x[0]), double_bits(x[1]), double_bits(x[2])}, i);
-      rep[i] = ins.first->second;
-      if(!ins.second) ++welded;
-    }
-  } else {
+  if(!weld) {
     for(std::size_t i = 0; i < nv; ++i) rep[i] = i;
+    return 0;
+  }
+  std::size_t slots = 16;
+  while(slots < 2 * nv) slots *= 2;
+  const std::size_t empty = std::size_t(-1);
+  std::vector<std::size_t> table(slots, empty);
+  for(std::size_t i = 0; i < nv; ++i) {
+    const std::array<double, 3>& x = points[i];
+    const std::uint64_t b[3] = {double_bits(x[0]), double_bits(x[1]), double_bits(x[2])};
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for(std::uint64_t c : b) { h ^= c + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2); }
+    h ^= h >> 29;
+    std::size_t s = std::size_t(h) & (slots - 1);
+    for(;; s = (s + 1) & (slots - 1)) {
+      const std::size_t j = table[s];
+      if(j == empty) { table[s] = i; rep[i] = i; break; }
+      const std::array<double, 3>& y = points[j];
+      if(double_bits(y[0]) == b[0] && double_bits(y[1]) == b[1] && double_bits(y[2]) == b[2]) { rep[i] = j; ++welded; break; }
+    }
   }
   return welded;
 }
 
-// Soup -> mesh. Validates the connectivity on a scratch mesh first, then replays the same
-// operations on `tm` (which cannot fail then), so that a failure leaves `tm` and `uv` untouched.
+// Soup -> mesh. The faces are first added to Halfedge_arrays (Euler::add_face() step for step, on index
+// arrays: halfedge_arrays.h), which is also the connectivity check; only when every face was accepted and
+// every vertex is manifold is `tm` touched, in one pass (add_vertex, add_edge, add_face and the set_*
+// functions of MutableFaceGraph), so that a failure leaves `tm` and `uv` untouched, and `tm` gets the
+// halfedges, edges and faces, in the same order, that Euler::add_face() face by face would give it.
 // With `corners`, (*corners)[f][k] is the halfedge whose target is corner k of soup face f.
 template <class TriangleMesh, class VPM, class HalfedgeUVMap>
 Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv,
@@ -348,7 +370,12 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   typedef typename boost::property_traits<VPM>::value_type   Point_3;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
 
-  const std::size_t nv = soup.points.size();
+  const std::size_t nv = soup.points.size(), nf = soup.face_v.size();
+  // the arrays hold halfedge indices in int (as Surface_mesh does in 32 bits)
+  if(nf > std::size_t(300000000)) {
+    message = where + ": " + std::to_string(nf) + " faces: more than this reader's limit of 300 million";
+    return INVALID_INPUT;
+  }
   // 1. representative of each file vertex (itself, or the first bit-identical one when welding)
   std::vector<std::size_t> rep;
   const std::size_t welded = weld_representatives(soup.points, weld, rep);
@@ -364,48 +391,49 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   std::size_t unreferenced = 0;
   for(std::size_t i = 0; i < nv; ++i)
     if(rep[i] == i && id[i] == none) ++unreferenced;
+  std::vector<int> mesh_vertex(nv, -1);   // id[rep[i]] in one lookup
+  for(std::size_t i = 0; i < nv; ++i) if(id[rep[i]] != none) mesh_vertex[i] = int(id[rep[i]]);
 
   auto fail = [&](std::size_t line, const std::string& why) {
     message = where + ":" + std::to_string(line) + ": " + why;
     return INVALID_INPUT;
   };
 
-  // 3. connectivity check on a scratch mesh
-  {
-    TriangleMesh scratch;
-    std::vector<vertex_descriptor> vs(n_used);
-    for(std::size_t i = 0; i < n_used; ++i) vs[i] = add_vertex(scratch);
-    std::array<vertex_descriptor, 3> fv;
-    for(std::size_t f = 0; f < soup.face_v.size(); ++f) {
-      for(int k = 0; k < 3; ++k) fv[k] = vs[id[rep[soup.face_v[f][k]]]];
-      if(fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])
-        return fail(soup.face_line[f], std::string("degenerate face: a vertex appears twice") +
-                                       (weld ? " (after welding bit-identical vertices)" : ""));
-      if(CGAL::Euler::add_face(fv, scratch) == GT::null_face()) {
-        for(int k = 0; k < 3; ++k) {
-          std::pair<halfedge_descriptor, bool> he = halfedge(fv[k], fv[(k + 1) % 3], scratch);
-          if(he.second && !is_border(he.first, scratch))
-            return fail(soup.face_line[f], "edge (" + std::to_string(soup.face_v[f][k] + 1) + ", " +
-                        std::to_string(soup.face_v[f][(k + 1) % 3] + 1) + ") is already used in the same direction by another "
-                        "face: non-manifold edge or inconsistent (non-orientable) orientation");
-        }
-        return fail(soup.face_line[f], "face cannot be added: non-manifold vertex (a vertex of the face is already "
-                                       "surrounded by faces) or non-manifold edge");
+  // 3. the connectivity, on index arrays
+  Halfedge_arrays a(n_used, nf);
+  std::array<int, 3> fv;
+  for(std::size_t f = 0; f < nf; ++f) {
+    for(int k = 0; k < 3; ++k) fv[std::size_t(k)] = mesh_vertex[soup.face_v[f][std::size_t(k)]];
+    if(fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])
+      return fail(soup.face_line[f], std::string("degenerate face: a vertex appears twice") +
+                                     (weld ? " (after welding bit-identical vertices)" : ""));
+    if(!a.add_triangle(fv)) {
+      for(int k = 0; k < 3; ++k) {
+        const int h = a.halfedge(fv[std::size_t(k)], fv[std::size_t((k + 1) % 3)]);
+        if(h >= 0 && !a.is_border(h))
+          return fail(soup.face_line[f], "edge (" + std::to_string(soup.face_v[f][std::size_t(k)] + 1) + ", " +
+                      std::to_string(soup.face_v[f][std::size_t((k + 1) % 3)] + 1) + ") is already used in the same direction by another "
+                      "face: non-manifold edge or inconsistent (non-orientable) orientation");
       }
+      return fail(soup.face_line[f], "face cannot be added: non-manifold vertex (a vertex of the face is already "
+                                     "surrounded by faces) or non-manifold edge");
     }
-    // A vertex where two fans meet is accepted by add_face in two cases; reject both here:
-    // two closed fans (the cycle around the vertex misses some halfedges pointing to it), and
-    // two open fans, a "bowtie" (two border halfedges point to it).
-    auto in_degree = get(CGAL::dynamic_vertex_property_t<std::size_t>(), scratch);
-    for(std::size_t i = 0; i < n_used; ++i) put(in_degree, vs[i], std::size_t(0));
-    for(halfedge_descriptor h : halfedges(scratch)) put(in_degree, target(h, scratch), get(in_degree, target(h, scratch)) + 1);
+  }
+  // A vertex where two fans meet is accepted by add_face in two cases; reject both here:
+  // two closed fans (the cycle around the vertex misses some halfedges pointing to it), and
+  // two open fans, a "bowtie" (two border halfedges point to it).
+  {
+    std::vector<int> in_degree(n_used, 0);
+    for(std::size_t h = 0; h < a.number_of_halfedges(); ++h) ++in_degree[std::size_t(a.target(int(h)))];
     for(std::size_t i = 0; i < n_used; ++i) {
-      std::size_t around = 0, border_fans = 0;
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vs[i], scratch), scratch)) {
+      const int hh = a.vertex_halfedge[i];
+      int h = hh, around = 0, border_fans = 0;
+      do {
         ++around;
-        if(is_border(h, scratch)) ++border_fans;
-      }
-      if(around != get(in_degree, vs[i]) || border_fans > 1) {
+        if(a.is_border(h)) ++border_fans;
+        h = a.next_around_target(h);
+      } while(h != hh);
+      if(around != in_degree[i] || border_fans > 1) {
         std::size_t file_index = 0;
         for(std::size_t j = 0; j < nv; ++j) if(rep[j] == j && id[j] == i) { file_index = j; break; }
         message = where + ": non-manifold vertex " + std::to_string(file_index + 1) +
@@ -415,27 +443,44 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
     }
   }
 
-  // 4. replay on tm; every operation succeeded on the scratch mesh, so it succeeds here too
-  if(corners != nullptr) corners->assign(soup.face_v.size(), {});
+  // 4. the arrays onto tm: every element in the order Euler::add_face() creates it
+  const std::size_t nh = a.number_of_halfedges();
+  reserve(tm, static_cast<typename GT::vertices_size_type>(vertices(tm).size() + n_used),
+          static_cast<typename GT::edges_size_type>(edges(tm).size() + nh / 2),
+          static_cast<typename GT::faces_size_type>(faces(tm).size() + nf));
   std::vector<vertex_descriptor> vs(n_used);
   for(std::size_t i = 0; i < nv; ++i)
     if(rep[i] == i && id[i] != none) {
       vs[id[i]] = add_vertex(tm);
       put(vpm, vs[id[i]], Point_3(soup.points[i][0], soup.points[i][1], soup.points[i][2]));
     }
-  std::array<vertex_descriptor, 3> fv;
-  for(std::size_t f = 0; f < soup.face_v.size(); ++f) {
-    for(int k = 0; k < 3; ++k) fv[k] = vs[id[rep[soup.face_v[f][k]]]];
-    face_descriptor fd = CGAL::Euler::add_face(fv, tm);
-    CGAL_assertion(fd != GT::null_face());
-    // corner convention: uv[h] = UV of target(h) in face(h)
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(fd, tm), tm))
-      for(int k = 0; k < 3; ++k)
-        if(fv[k] == target(h, tm)) {
-          const std::array<double, 2>& t = soup.uvs[soup.face_vt[f][k]];
-          put(uv, h, Point_2(t[0], t[1]));
-          if(corners != nullptr) (*corners)[f][std::size_t(k)] = h;
-        }
+  std::vector<halfedge_descriptor> hs(nh);
+  for(std::size_t h = 0; h < nh; h += 2) {
+    hs[h] = halfedge(add_edge(tm), tm);
+    hs[h + 1] = opposite(hs[h], tm);
+  }
+  std::vector<face_descriptor> fs(nf);
+  for(std::size_t f = 0; f < nf; ++f) {
+    fs[f] = add_face(tm);
+    set_halfedge(fs[f], hs[std::size_t(a.face_halfedge[f])], tm);
+  }
+  for(std::size_t h = 0; h < nh; ++h) {
+    const int i = int(h);
+    set_target(hs[h], vs[std::size_t(a.target(i))], tm);
+    set_next(hs[h], hs[std::size_t(a.next(i))], tm);
+    set_face(hs[h], a.is_border(i) ? GT::null_face() : fs[std::size_t(a.face(i))], tm);
+  }
+  for(std::size_t i = 0; i < n_used; ++i) set_halfedge(vs[i], hs[std::size_t(a.vertex_halfedge[i])], tm);
+  // corner convention: uv[h] = UV of target(h) in face(h); halfedge k of the triangle (a0, a1, a2)
+  // points to a_{k+1}, so corner k is the target of halfedge k + 2 (mod 3), face_halfedge = halfedge 2
+  if(corners != nullptr) corners->assign(nf, {});
+  for(std::size_t f = 0; f < nf; ++f) {
+    int h = a.face_halfedge[f];                       // halfedge 2 of the face: its target is corner 0
+    for(int k = 0; k < 3; ++k, h = a.next(h)) {
+      const std::array<double, 2>& t = soup.uvs[soup.face_vt[f][std::size_t(k)]];
+      put(uv, hs[std::size_t(h)], Point_2(t[0], t[1]));
+      if(corners != nullptr) (*corners)[f][std::size_t(k)] = hs[std::size_t(h)];
+    }
   }
 
   message = "read " + std::to_string(soup.face_v.size()) + " faces, " + std::to_string(n_used) + " vertices, " +
@@ -450,105 +495,140 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
 // Writing
 // ---------------------------------------------------------------------------------------------
 
-// Validates and formats the whole file in memory (a few tens of MB at most for real meshes),
-// so that no byte is written for an invalid mesh.
-template <class TriangleMesh, class VPM, class HalfedgeUVMap>
-Status format_obj(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, bool vt_per_corner, std::string& out,
-                  std::string& message)
+// The OBJ text of a mesh with corner UVs, in two steps: prepare() checks the mesh and collects the
+// records (nothing is written for an invalid mesh), write() emits the text in blocks of about 1 MiB, so
+// that the whole file is never held in memory (for 300K faces it is 30 MB, as much as the mesh).
+// Layout: one `v` per vertex (order of vertices(tm)); one `vt` per vertex and bit-identical UV among
+// its corners, in the order the faces first use them (with vt_per_corner: one per face corner); one
+// `f v/vt v/vt v/vt` per face, corners in the order of halfedges_around_face(halfedge(f)).
+class Obj_text
 {
-  typedef boost::graph_traits<TriangleMesh>            GT;
-  typedef typename GT::vertex_descriptor               vertex_descriptor;
-  typedef typename GT::halfedge_descriptor             halfedge_descriptor;
-  typedef typename GT::face_descriptor                 face_descriptor;
+  std::vector<std::array<double, 3> > points_;
+  std::vector<std::array<double, 2> > vts_;
+  std::vector<std::array<std::uint32_t, 6> > faces_;   // v0 vt0 v1 vt1 v2 vt2 (0-based)
 
-  if(faces(tm).first == faces(tm).second) { message = "empty mesh: no face to write"; return INVALID_INPUT; }
+public:
+  template <class TriangleMesh, class VPM, class HalfedgeUVMap>
+  Status prepare(const TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv, bool vt_per_corner, std::string& message)
+  {
+    typedef boost::graph_traits<TriangleMesh>            GT;
+    typedef typename GT::vertex_descriptor               vertex_descriptor;
+    typedef typename GT::halfedge_descriptor             halfedge_descriptor;
+    typedef typename GT::face_descriptor                 face_descriptor;
 
-  auto vid = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  std::size_t nv = 0;
-  for(vertex_descriptor v : vertices(tm)) put(vid, v, nv++);
-
-  std::vector<std::array<double, 3> > pts;
-  pts.reserve(nv);
-  for(vertex_descriptor v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    std::array<double, 3> x = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
-      message = "vertex " + std::to_string(get(vid, v) + 1) + " has a non-finite coordinate (NaN or Inf)";
+    if(faces(tm).first == faces(tm).second) { message = "empty mesh: no face to write"; return INVALID_INPUT; }
+    if(num_vertices(tm) >= std::size_t(0xFFFFFFFFu) || 3 * std::size_t(num_faces(tm)) >= std::size_t(0xFFFFFFFFu)) {
+      message = "more vertices or face corners than this writer's 32-bit indices hold";
       return INVALID_INPUT;
     }
-    pts.push_back(x);
-  }
 
-  // One vt per (vertex, bit-identical UV): corners of one vertex with the same UV share it, as
-  // inside a chart; a seam (different UV) or another vertex gets its own. With `vt_per_corner`, one
-  // vt per face corner (libQEx's layout).
-  std::vector<std::vector<std::pair<std::array<std::uint64_t, 2>, std::size_t> > > vt_of_vertex(nv);
-  std::vector<std::array<double, 2> > vts;
-  std::vector<std::array<std::size_t, 6> > fs;   // v0 vt0 v1 vt1 v2 vt2 (0-based)
-  std::size_t fi = 0;
-  for(face_descriptor f : faces(tm)) {
-    std::array<std::size_t, 6> row;
-    int k = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      if(k == 3) {
+    auto vid = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
+    std::uint32_t nv = 0;
+    for(vertex_descriptor v : vertices(tm)) put(vid, v, nv++);
+
+    points_.clear();
+    points_.reserve(nv);
+    for(vertex_descriptor v : vertices(tm)) {
+      const auto& p = get(vpm, v);
+      std::array<double, 3> x = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
+        message = "vertex " + std::to_string(get(vid, v) + 1) + " has a non-finite coordinate (NaN or Inf)";
+        return INVALID_INPUT;
+      }
+      points_.push_back(x);
+    }
+
+    // One vt per (vertex, bit-identical UV): corners of one vertex with the same UV share it, as
+    // inside a chart; a seam (different UV) or another vertex gets its own. With `vt_per_corner`, one
+    // vt per face corner (libQEx's layout). The vt of a vertex form a list: first_vt[v], then next_vt[t].
+    const std::uint32_t none = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> first_vt(vt_per_corner ? 0 : nv, none), next_vt;
+    vts_.clear();
+    faces_.clear();
+    faces_.reserve(num_faces(tm));
+    std::size_t fi = 0;
+    for(face_descriptor f : faces(tm)) {
+      std::array<std::uint32_t, 6> row;
+      int k = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        if(k == 3) {
+          message = "face " + std::to_string(fi + 1) + " is not a triangle; only triangle meshes are written";
+          return INVALID_INPUT;
+        }
+        const auto& t = get(uv, h);
+        const double u = CGAL::to_double(t.x()), w = CGAL::to_double(t.y());
+        if(!std::isfinite(u) || !std::isfinite(w)) {
+          message = "non-finite UV (NaN or Inf) at a corner of face " + std::to_string(fi + 1);
+          return INVALID_INPUT;
+        }
+        const std::uint32_t v = get(vid, target(h, tm));
+        std::uint32_t t_id = none;
+        if(!vt_per_corner)
+          for(std::uint32_t c = first_vt[v]; c != none; c = next_vt[c])
+            if(double_bits(vts_[c][0]) == double_bits(u) && double_bits(vts_[c][1]) == double_bits(w)) { t_id = c; break; }
+        if(t_id == none) {
+          t_id = std::uint32_t(vts_.size());
+          vts_.push_back({u, w});
+          if(!vt_per_corner) { next_vt.push_back(first_vt[v]); first_vt[v] = t_id; }
+        }
+        row[std::size_t(2 * k)] = v; row[std::size_t(2 * k + 1)] = t_id;
+        ++k;
+      }
+      if(k != 3) {
         message = "face " + std::to_string(fi + 1) + " is not a triangle; only triangle meshes are written";
         return INVALID_INPUT;
       }
-      const auto& t = get(uv, h);
-      const double u = CGAL::to_double(t.x()), w = CGAL::to_double(t.y());
-      if(!std::isfinite(u) || !std::isfinite(w)) {
-        message = "non-finite UV (NaN or Inf) at a corner of face " + std::to_string(fi + 1);
-        return INVALID_INPUT;
-      }
-      const std::size_t v = get(vid, target(h, tm));
-      const std::array<std::uint64_t, 2> key = {double_bits(u), double_bits(w)};
-      std::size_t t_id = std::size_t(-1);
-      if(!vt_per_corner)
-        for(const auto& e : vt_of_vertex[v]) if(e.first == key) { t_id = e.second; break; }
-      if(t_id == std::size_t(-1)) {
-        t_id = vts.size();
-        vts.push_back({u, w});
-        if(!vt_per_corner) vt_of_vertex[v].emplace_back(key, t_id);
-      }
-      row[2 * k] = v; row[2 * k + 1] = t_id;
-      ++k;
+      faces_.push_back(row);
+      ++fi;
     }
-    if(k != 3) {
-      message = "face " + std::to_string(fi + 1) + " is not a triangle; only triangle meshes are written";
-      return INVALID_INPUT;
-    }
-    fs.push_back(row);
-    ++fi;
+    message = "wrote " + std::to_string(faces_.size()) + " faces, " + std::to_string(points_.size()) + " vertices, " +
+              std::to_string(vts_.size()) + " texture coordinates";
+    return SUCCESS;
   }
 
-  out.clear();
-  out.reserve(nv * 64 + vts.size() * 44 + fs.size() * 40 + 256);
-  out += "# OBJ with per-corner texture coordinates (CGAL Seamless_snapping): f v/vt, vt = UV of the corner,\n";
-  out += "# 17 significant digits (bit-exact doubles). " + std::to_string(nv) + " vertices, " +
-         std::to_string(vts.size()) + " texture coordinates, " + std::to_string(fs.size()) + " faces\n";
-  for(const std::array<double, 3>& p : pts) {
-    out += "v ";  append_double(out, p[0]);
-    out += ' ';   append_double(out, p[1]);
-    out += ' ';   append_double(out, p[2]);
-    out += '\n';
-  }
-  for(const std::array<double, 2>& t : vts) {
-    out += "vt "; append_double(out, t[0]);
-    out += ' ';   append_double(out, t[1]);
-    out += '\n';
-  }
-  for(const std::array<std::size_t, 6>& r : fs) {
-    out += 'f';
-    for(int k = 0; k < 3; ++k) {
-      out += ' '; out += std::to_string(r[2 * k] + 1);
-      out += '/'; out += std::to_string(r[2 * k + 1] + 1);
+  // Emits the text of the prepared mesh: flush(data, size) per block; false as soon as flush() fails.
+  template <class Flush>
+  bool write(const Flush& flush) const
+  {
+    const std::size_t block = std::size_t(1) << 20, longest_line = 256;
+    std::vector<char> buffer(block + longest_line);
+    char* const begin = buffer.data();
+    char* p = begin;
+    auto line_done = [&]() {
+      if(std::size_t(p - begin) < block) return true;
+      const bool ok = flush(begin, std::size_t(p - begin));
+      p = begin;
+      return ok;
+    };
+    const std::string header =
+      "# OBJ with per-corner texture coordinates (CGAL Seamless_snapping): f v/vt, vt = UV of the corner,\n"
+      "# 17 significant digits (bit-exact doubles). " + std::to_string(points_.size()) + " vertices, " +
+      std::to_string(vts_.size()) + " texture coordinates, " + std::to_string(faces_.size()) + " faces\n";
+    if(!flush(header.data(), header.size())) return false;
+    for(const std::array<double, 3>& x : points_) {
+      *p++ = 'v';
+      for(double c : x) { *p++ = ' '; p = write_double(p, c); }
+      *p++ = '\n';
+      if(!line_done()) return false;
     }
-    out += '\n';
+    for(const std::array<double, 2>& t : vts_) {
+      *p++ = 'v'; *p++ = 't';
+      for(double c : t) { *p++ = ' '; p = write_double(p, c); }
+      *p++ = '\n';
+      if(!line_done()) return false;
+    }
+    for(const std::array<std::uint32_t, 6>& r : faces_) {
+      *p++ = 'f';
+      for(int k = 0; k < 3; ++k) {
+        *p++ = ' '; p = write_index(p, std::uint64_t(r[std::size_t(2 * k)]) + 1);
+        *p++ = '/'; p = write_index(p, std::uint64_t(r[std::size_t(2 * k + 1)]) + 1);
+      }
+      *p++ = '\n';
+      if(!line_done()) return false;
+    }
+    return p == begin || flush(begin, std::size_t(p - begin));
   }
-  message = "wrote " + std::to_string(fs.size()) + " faces, " + std::to_string(nv) + " vertices, " +
-            std::to_string(vts.size()) + " texture coordinates";
-  return SUCCESS;
-}
+};
 
 // A name for a temporary file next to `filename` (same directory, so std::rename is atomic).
 inline std::string temporary_name_next_to(const std::string& filename)
@@ -562,9 +642,11 @@ inline std::string temporary_name_next_to(const std::string& filename)
   return filename + ".tmp-" + buf;
 }
 
-// Writes `text` to `filename` through a temporary file next to it and std::rename (atomic on POSIX):
-// on failure nothing is left behind and `filename` is untouched.
-inline Status write_text_atomically(const std::string& filename, const std::string& text, std::string& message)
+// Writes a file through a temporary file next to it and std::rename (atomic on POSIX): `write(os)`
+// writes the content to the stream and returns false if it could not; on failure nothing is left
+// behind and `filename` is untouched.
+template <class Write>
+Status write_atomically(const std::string& filename, const Write& write, std::string& message)
 {
   const std::string tmp = temporary_name_next_to(filename);
   {
@@ -574,9 +656,9 @@ inline Status write_text_atomically(const std::string& filename, const std::stri
                 std::strerror(errno) + ")";
       return INVALID_INPUT;
     }
-    os.write(text.data(), static_cast<std::streamsize>(text.size()));
+    bool ok = write(os);
     os.flush();
-    const bool ok = static_cast<bool>(os);
+    ok = ok && static_cast<bool>(os);
     os.close();
     if(!ok || os.fail()) {
       std::remove(tmp.c_str());
@@ -592,6 +674,26 @@ inline Status write_text_atomically(const std::string& filename, const std::stri
   }
   return SUCCESS;
 }
+
+// Writes `text` to `filename` atomically (write_atomically()).
+inline Status write_text_atomically(const std::string& filename, const std::string& text, std::string& message)
+{
+  return write_atomically(filename, [&](std::ostream& os) {
+    os.write(text.data(), static_cast<std::streamsize>(text.size()));
+    return static_cast<bool>(os);
+  }, message);
+}
+
+// the blocks of Obj_text::write() into a stream
+struct Stream_flush
+{
+  std::ostream& os;
+  bool operator()(const char* data, std::size_t size) const
+  {
+    os.write(data, static_cast<std::streamsize>(size));
+    return static_cast<bool>(os);
+  }
+};
 
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
 Status read_obj_impl(std::istream& is, const std::string& where, TriangleMesh& tm, HalfedgeUVMap uv,
@@ -611,8 +713,8 @@ Status read_obj_impl(std::istream& is, const std::string& where, TriangleMesh& t
 }
 
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
-Status format_obj_np(const TriangleMesh& tm, HalfedgeUVMap uv, std::string& out, std::string& message,
-                     const NamedParameters& np)
+Status prepare_obj_text(const TriangleMesh& tm, HalfedgeUVMap uv, Obj_text& text, std::string& message,
+                        const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -620,7 +722,7 @@ Status format_obj_np(const TriangleMesh& tm, HalfedgeUVMap uv, std::string& out,
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
-  return format_obj(tm, vpm, uv, choose_parameter(get_parameter(np, snap_np::vt_per_corner), false), out, message);
+  return text.prepare(tm, vpm, uv, choose_parameter(get_parameter(np, snap_np::vt_per_corner), false), message);
 }
 
 } // namespace internal
@@ -772,22 +874,24 @@ Status write_OBJ_with_corner_uvs(const std::string& filename, const TriangleMesh
                                  std::string& message,
                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::string text;
-  if(internal::format_obj_np(tm, uv, text, message, np) != SUCCESS) {
+  internal::Obj_text text;
+  if(internal::prepare_obj_text(tm, uv, text, message, np) != SUCCESS) {
     message = "not writing '" + filename + "': " + message;
     return INVALID_INPUT;
   }
   const std::string summary = message;
-  if(internal::write_text_atomically(filename, text, message) != SUCCESS) return INVALID_INPUT;
+  if(internal::write_atomically(filename, [&](std::ostream& os) { return text.write(internal::Stream_flush{os}); },
+                                message) != SUCCESS)
+    return INVALID_INPUT;
   message = summary + " to " + filename;
   return SUCCESS;
 }
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
- * same as the file overload, writing to the stream `os`. The mesh is checked and the whole text
- * formatted before the first byte is written, so an invalid mesh writes nothing; a stream error
- * in the middle (returned as `INVALID_INPUT`) may leave a partial text in `os`.
+ * same as the file overload, writing to the stream `os`. The mesh is checked before the first byte is
+ * written, so an invalid mesh writes nothing; a stream error in the middle (returned as `INVALID_INPUT`)
+ * may leave a partial text in `os`.
  */
 template <class TriangleMesh, class HalfedgeUVMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -795,11 +899,11 @@ Status write_OBJ_with_corner_uvs(std::ostream& os, const TriangleMesh& tm, Halfe
                                  std::string& message,
                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
-  std::string text;
-  if(internal::format_obj_np(tm, uv, text, message, np) != SUCCESS) return INVALID_INPUT;
-  os.write(text.data(), static_cast<std::streamsize>(text.size()));
+  internal::Obj_text text;
+  if(internal::prepare_obj_text(tm, uv, text, message, np) != SUCCESS) return INVALID_INPUT;
+  const bool ok = text.write(internal::Stream_flush{os});
   os.flush();
-  if(!os) {
+  if(!ok || !os) {
     message = "stream: write failed";
     return INVALID_INPUT;
   }

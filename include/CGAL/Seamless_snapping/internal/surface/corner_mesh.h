@@ -33,6 +33,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -40,6 +42,29 @@
 namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
+
+// x 2^e, bit for bit std::ldexp(x, e) (std::ldexp is a call through libm's error handling, about 60
+// instructions, and the corner angles and the scale normalization make millions of them): a product
+// with the power of two when that is a normal double, where the product is exact or rounded once like
+// std::ldexp (a subnormal result); std::ldexp itself otherwise.
+inline double scale_by_power_of_two(double x, int e)
+{
+  if(e < -1022 || e > 1023) return std::ldexp(x, e);
+  const std::uint64_t bits = std::uint64_t(e + 1023) << 52;
+  double p;
+  std::memcpy(&p, &bits, sizeof p);
+  return x * p;
+}
+
+// the exponent e of std::frexp(x, &e) (x = f 2^e, 1/2 <= |f| < 1; 0 for 0), read from the bits of a normal x
+inline int binary_exponent(double x)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = int((bits >> 52) & 0x7FF);
+  if(biased == 0 || biased == 0x7FF) { int e = 0; std::frexp(x, &e); return e; }   // 0, subnormal, Inf, NaN
+  return biased - 1022;
+}
 
 struct Corner_mesh
 {
@@ -51,7 +76,7 @@ struct Corner_mesh
   int uv_exponent = 0;   // u, v are the caller's UVs times 2^-uv_exponent (normalize_uv_scale())
 
   // a value of the (normalized) corner UVs in the caller's UV units
-  double to_uv(double x) const { return std::ldexp(x, uv_exponent); }
+  double to_uv(double x) const { return scale_by_power_of_two(x, uv_exponent); }
 
   int source(int h) const { return target[opp[h]]; }
   bool is_border_halfedge(int h) const { return face[h] < 0; }
@@ -98,24 +123,40 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
   auto vim = CGAL::get_initialized_vertex_index_map(tm);
   auto him = CGAL::get_initialized_halfedge_index_map(tm);
   auto fim = CGAL::get_initialized_face_index_map(tm);
+  d.vertices.reserve(num_vertices(tm));
+  d.halfedges.reserve(num_halfedges(tm));
+  d.edges.reserve(num_edges(tm));
   std::size_t max_v = 0, max_h = 0, max_f = 0;
-  for(vertex_descriptor v : vertices(tm)) max_v = (std::max)(max_v, std::size_t(get(vim, v)) + 1);
-  for(halfedge_descriptor h : halfedges(tm)) max_h = (std::max)(max_h, std::size_t(get(him, h)) + 1);
+  for(vertex_descriptor v : vertices(tm)) { max_v = (std::max)(max_v, std::size_t(get(vim, v)) + 1); d.vertices.push_back(v); }
+  for(halfedge_descriptor h : halfedges(tm)) { max_h = (std::max)(max_h, std::size_t(get(him, h)) + 1); d.halfedges.push_back(h); }
   for(face_descriptor f : faces(tm)) max_f = (std::max)(max_f, std::size_t(get(fim, f)) + 1);
-  std::vector<int> vpos(max_v, -1), hpos(max_h, -1), fpos(max_f, -1);
-  for(vertex_descriptor v : vertices(tm)) { vpos[get(vim, v)] = int(d.vertices.size()); d.vertices.push_back(v); }
-  for(halfedge_descriptor h : halfedges(tm)) { hpos[get(him, h)] = int(d.halfedges.size()); d.halfedges.push_back(h); }
-  int nf = 0;
-  for(face_descriptor f : faces(tm)) {
-    fpos[get(fim, f)] = nf++;
-    std::size_t degree = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { (void)h; ++degree; }
-    if(degree != 3) {
-      message = "face " + std::to_string(nf - 1) + " is not a triangle";
-      return INVALID_INPUT;
-    }
+  // position of an element from its index; when the indices are the positions (a mesh without removed
+  // elements, e.g. a Surface_mesh after reading) the lookup tables are skipped: they are random accesses
+  std::vector<int> vpos, hpos, fpos;
+  bool v_identity = max_v == d.vertices.size(), h_identity = max_h == d.halfedges.size();
+  for(std::size_t i = 0; v_identity && i < d.vertices.size(); ++i) v_identity = std::size_t(get(vim, d.vertices[i])) == i;
+  for(std::size_t i = 0; h_identity && i < d.halfedges.size(); ++i) h_identity = std::size_t(get(him, d.halfedges[i])) == i;
+  if(!v_identity) {
+    vpos.assign(max_v, -1);
+    for(std::size_t i = 0; i < d.vertices.size(); ++i) vpos[get(vim, d.vertices[i])] = int(i);
   }
+  if(!h_identity) {
+    hpos.assign(max_h, -1);
+    for(std::size_t i = 0; i < d.halfedges.size(); ++i) hpos[get(him, d.halfedges[i])] = int(i);
+  }
+  int nf = 0;
+  bool f_identity = true;
+  for(face_descriptor f : faces(tm)) { f_identity = f_identity && std::size_t(get(fim, f)) == std::size_t(nf); ++nf; }
+  if(!f_identity) {
+    fpos.assign(max_f, -1);
+    nf = 0;
+    for(face_descriptor f : faces(tm)) fpos[get(fim, f)] = nf++;
+  }
+  auto vertex_position = [&](vertex_descriptor v) { return v_identity ? int(get(vim, v)) : vpos[get(vim, v)]; };
+  auto halfedge_position = [&](halfedge_descriptor h) { return h_identity ? int(get(him, h)) : hpos[get(him, h)]; };
+  auto face_position = [&](face_descriptor f) { return f_identity ? int(get(fim, f)) : fpos[get(fim, f)]; };
 
+  // one pass over the halfedges: connectivity, corner UVs; then whether every face is a triangle
   const int nh = int(d.halfedges.size());
   cm.n_vertices = int(d.vertices.size());
   cm.n_faces = nf;
@@ -124,29 +165,48 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
   cm.face.resize(nh); cm.edge.assign(nh, -1);
   cm.u.assign(nh, 0.); cm.v.assign(nh, 0.);
   cm.vertex_on_border.assign(cm.n_vertices, 0);
+  std::vector<unsigned char> degree(std::size_t(nf), 0);   // halfedges per face, counted up to 255
+  int first_bad_uv = -1;
   for(int i = 0; i < nh; ++i) {
     const halfedge_descriptor h = d.halfedges[i];
-    cm.next[i] = hpos[get(him, next(h, tm))];
-    cm.prev[i] = hpos[get(him, prev(h, tm))];
-    cm.opp[i] = hpos[get(him, opposite(h, tm))];
-    cm.target[i] = vpos[get(vim, target(h, tm))];
+    cm.next[i] = halfedge_position(next(h, tm));
+    cm.prev[i] = halfedge_position(prev(h, tm));
+    cm.opp[i] = halfedge_position(opposite(h, tm));
+    cm.target[i] = vertex_position(target(h, tm));
     const face_descriptor f = face(h, tm);
-    cm.face[i] = (f == GT::null_face()) ? -1 : fpos[get(fim, f)];
+    cm.face[i] = (f == GT::null_face()) ? -1 : face_position(f);
     if(cm.face[i] < 0) {
       cm.vertex_on_border[cm.target[i]] = 1;
       continue;
     }
+    unsigned char& dg = degree[std::size_t(cm.face[i])];
+    if(dg < 255) ++dg;
     const auto p = get(uvmap, h);
     const double pu = CGAL::to_double(p.x()), pv = CGAL::to_double(p.y());
-    if(!std::isfinite(pu) || !std::isfinite(pv)) {
-      message = "the UV of corner (vertex " + std::to_string(cm.target[i]) + ", face " + std::to_string(cm.face[i]) +
-                ") is not finite (NaN or infinity)";
-      return INVALID_INPUT;
-    }
+    if(!std::isfinite(pu) || !std::isfinite(pv)) { if(first_bad_uv < 0) first_bad_uv = i; continue; }
     cm.u[i] = pu; cm.v[i] = pv;
   }
+  bool triangles = true;
+  for(unsigned char dg : degree) triangles = triangles && dg == 3;
+  if(!triangles) {   // the first face of faces(tm) that is not a triangle
+    nf = 0;
+    for(face_descriptor f : faces(tm)) {
+      ++nf;
+      std::size_t n = 0;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) { (void)h; ++n; }
+      if(n != 3) {
+        message = "face " + std::to_string(nf - 1) + " is not a triangle";
+        return INVALID_INPUT;
+      }
+    }
+  }
+  if(first_bad_uv >= 0) {
+    message = "the UV of corner (vertex " + std::to_string(cm.target[first_bad_uv]) + ", face " + std::to_string(cm.face[first_bad_uv]) +
+              ") is not finite (NaN or infinity)";
+    return INVALID_INPUT;
+  }
   for(edge_descriptor e : edges(tm)) {
-    const int h = hpos[get(him, halfedge(e, tm))];
+    const int h = halfedge_position(halfedge(e, tm));
     const int id = int(d.edges.size());
     d.edges.push_back(e);
     cm.edge_halfedge.push_back(h);
@@ -176,7 +236,7 @@ inline int natural_uv_exponent(const Corner_mesh& cm)
   double max_abs = 0;
   for(int h = 0; h < cm.n_halfedges; ++h)
     if(!cm.is_border_halfedge(h)) max_abs = (std::max)({max_abs, std::fabs(cm.u[h]), std::fabs(cm.v[h])});
-  if(max_abs > 0) std::frexp(max_abs, &e);
+  if(max_abs > 0) e = binary_exponent(max_abs);
   return e;
 }
 
@@ -199,8 +259,8 @@ inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const in
   }
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
-    const double n[2] = {std::ldexp(cm.u[h], -e), std::ldexp(cm.v[h], -e)};
-    if(std::ldexp(n[0], e) != cm.u[h] || std::ldexp(n[1], e) != cm.v[h]) {
+    const double n[2] = {scale_by_power_of_two(cm.u[h], -e), scale_by_power_of_two(cm.v[h], -e)};
+    if(scale_by_power_of_two(n[0], e) != cm.u[h] || scale_by_power_of_two(n[1], e) != cm.v[h]) {
       if(forced_exponent != nullptr) {
         message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
                   ") scaled by 2^" + std::to_string(-e) + " (the unit set by the grid scale and the pinned corners) " +

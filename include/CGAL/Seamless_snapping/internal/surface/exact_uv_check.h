@@ -16,6 +16,7 @@
 // exactly, with zero tolerance.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/dyadic_sum.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
@@ -43,47 +44,61 @@ inline CGAL::Mpzf exact_row_residual(const Constraint_rows& rows, std::size_t i,
   return r;
 }
 
+// the same residual in integers (dyadic_sum.h); it may not fit (then use exact_row_residual())
+inline Dyadic_sum dyadic_row_residual(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+{
+  Dyadic_sum r;
+  r.add_integer(-rows.rhs[i]);
+  for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k) r.add(rows.coef[k], x[rows.col[k]]);
+  return r;
+}
+
+// true iff row i holds exactly for x: in integers, or with CGAL::Mpzf when the values span too much
+inline bool row_holds_exactly(const Constraint_rows& rows, std::size_t i, const std::vector<double>& x)
+{
+  const Dyadic_sum r = dyadic_row_residual(rows, i, x);
+  return r.fits() ? r.is_zero() : exact_row_residual(rows, i, x).is_zero();
+}
+
 // Index of the first row with a nonzero exact residual, or -1 when every row holds exactly.
 inline long first_violated_row(const Constraint_rows& rows, const std::vector<double>& x)
 {
   for(std::size_t i = 0; i < rows.size(); ++i)
-    if(!exact_row_residual(rows, i, x).is_zero()) return long(i);
+    if(!row_holds_exactly(rows, i, x)) return long(i);
   return -1;
 }
 
-// max_i |sum_j C_ij x_j - b_i|, computed exactly, then rounded to double.
+// max_i |sum_j C_ij x_j - b_i|, computed exactly, then rounded to double (CGAL::Mpzf::to_double() of the
+// first row with the largest residual; the rows are compared in integers where they fit).
 inline double max_abs_residual(const Constraint_rows& rows, const std::vector<double>& x)
 {
-  CGAL::Mpzf m(0);
+  long best = -1;                 // the first row with the largest |residual| so far
+  Dyadic_sum best_sum;            // its residual, when it fits
+  bool best_fits = true;
+  CGAL::Mpzf best_mpzf(0);        // its residual, when it or a later row does not fit
+  auto abs_mpzf = [&](std::size_t i) { CGAL::Mpzf r = exact_row_residual(rows, i, x); return r.sign() == CGAL::NEGATIVE ? -r : r; };
   for(std::size_t i = 0; i < rows.size(); ++i) {
-    CGAL::Mpzf r = exact_row_residual(rows, i, x);
-    if(r.sign() == CGAL::NEGATIVE) r = -r;
-    if(CGAL::compare(m, r) == CGAL::SMALLER) m = r;
+    const Dyadic_sum r = dyadic_row_residual(rows, i, x);
+    if(r.fits() && best_fits) {
+      if(r.compare_magnitude(best_sum) > 0) { best = long(i); best_sum = r; }
+      continue;
+    }
+    if(best_fits) { best_mpzf = best < 0 ? CGAL::Mpzf(0) : abs_mpzf(std::size_t(best)); best_fits = false; }
+    const CGAL::Mpzf a = abs_mpzf(i);
+    if(CGAL::compare(best_mpzf, a) == CGAL::SMALLER) { best = long(i); best_mpzf = a; }
   }
-  return m.to_double();
+  if(best < 0) return 0.;
+  return abs_mpzf(std::size_t(best)).to_double();
 }
 
-// The exact sum a + b of two doubles as the pair (s, e), s = fl(a + b), e = a + b - s (Knuth's TwoSum: an
-// error-free transformation in round-to-nearest without overflow). The pair is a function of the exact sum,
-// and determines it: two exact sums are equal iff their pairs are.
-inline void two_sum(double a, double b, double& s, double& e)
-{
-  s = a + b;
-  const double bb = s - a;
-  e = (a - (s - bb)) + (b - bb);
-}
-
-// true iff x - y == z - w exactly (the differences of doubles need not be doubles): x + w == z + y, compared as
-// TwoSum pairs; with a value beyond 2^1000 (where a sum might overflow) in rational arithmetic instead.
+// true iff x - y == z - w exactly (the differences of doubles need not be doubles): x - y - z + w == 0 in
+// integers (dyadic_sum.h), in rational arithmetic when the four values span too much
 inline bool same_difference(double x, double y, double z, double w)
 {
-  const double big = 0x1p1000;
-  if(!(std::fabs(x) < big && std::fabs(y) < big && std::fabs(z) < big && std::fabs(w) < big))
-    return CGAL::Gmpq(x) - CGAL::Gmpq(y) == CGAL::Gmpq(z) - CGAL::Gmpq(w);
-  double s1, e1, s2, e2;
-  two_sum(x, w, s1, e1);
-  two_sum(z, y, s2, e2);
-  return s1 == s2 && e1 == e2;
+  Dyadic_sum r;
+  r.add(1, x); r.add(-1, y); r.add(-1, z); r.add(1, w);
+  if(r.fits()) return r.is_zero();
+  return CGAL::Gmpq(x) - CGAL::Gmpq(y) == CGAL::Gmpq(z) - CGAL::Gmpq(w);
 }
 
 // true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).

@@ -264,28 +264,29 @@ public:
     for(const Cut_branch_plan& p : rs.cut_branches)
       for(const std::pair<int, int>& s : p.inner) {
         Group g; g.kind = 1; g.m = {Member{s.first, 0}, Member{s.second, p.k}};
-        candidates.push_back(g);
+        candidates.push_back(std::move(g));
       }
     for(const Align_branch_plan& p : rs.align_branches)
       for(int s : p.inner) {
         Group g; g.kind = 2; g.m = {Member{s, 0}}; g.axis = 1 - p.component;
-        candidates.push_back(g);
+        candidates.push_back(std::move(g));
       }
     std::vector<int> uses(ns, 0);
     for(const Group& g : candidates) for(const Member& mb : g.m) ++uses[mb.sector];
     group_of.assign(ns, -1);
-    for(const Group& g : candidates) {
+    groups.reserve(candidates.size() + std::size_t(ns));
+    for(Group& g : candidates) {
       bool unique = true;
       for(const Member& mb : g.m) unique = unique && uses[mb.sector] == 1;
       if(!unique) continue;
       for(const Member& mb : g.m) group_of[mb.sector] = int(groups.size());
-      groups.push_back(g);
+      groups.push_back(std::move(g));
     }
     for(int s = 0; s < ns; ++s) {
       if(uses[s] > 0 || vr_start[2 * s + 2] != vr_start[2 * s]) continue;   // on a branch, or in some row
       Group g; g.kind = 0; g.m = {Member{s, 0}};
       group_of[s] = int(groups.size());
-      groups.push_back(g);
+      groups.push_back(std::move(g));
     }
   }
 
@@ -314,13 +315,15 @@ public:
     return CGAL::orientation(P(y[2 * s0], y[2 * s0 + 1]), P(y[2 * s1], y[2 * s1 + 1]), P(y[2 * s2], y[2 * s2 + 1]));
   }
 
-  // Runs the repair on x. `ubar`: the input (for the input flips and the move bound).
-  Flip_repair_result run(const std::vector<double>& ubar)
+  // Runs the repair on x. `ubar`: the input (for the input flips and the move bound); `input` and
+  // `current`: face_orientations() of ubar and x when the caller has them (else computed here).
+  Flip_repair_result run(const std::vector<double>& ubar, const std::vector<signed char>* input_orientations = nullptr,
+                         const std::vector<signed char>* current_orientations = nullptr)
   {
     Flip_repair_result r;
-    input_ = face_orientations(cm, st, ubar);
+    input_ = input_orientations != nullptr ? *input_orientations : face_orientations(cm, st, ubar);
     const std::vector<signed char>& input = input_;
-    orient_ = face_orientations(cm, st, x);
+    orient_ = current_orientations != nullptr ? *current_orientations : face_orientations(cm, st, x);
     joint_tries_.assign(orient_.size(), 0);
     r.input = count_orientations(input);
     r.before = count_orientations(orient_);
@@ -764,7 +767,7 @@ private:
       if(!std::isfinite(x[v.first]) || !(std::fabs(x[v.first] - (*ubar_)[v.first]) <= max_move)) return false;
     for(const std::pair<int, double>& v : ch.old)
       for(std::size_t k = vr_start[v.first]; k < vr_start[v.first + 1]; ++k)
-        if(!exact_row_residual(rows, std::size_t(vr_row[k]), x).is_zero()) return false;
+        if(!row_holds_exactly(rows, std::size_t(vr_row[k]), x)) return false;
     return true;
   }
 
@@ -1002,13 +1005,16 @@ private:
   }
 };
 
-// Repairs flips of `x` (2 values per sector) in place; see the header comment.
+// Repairs flips of `x` (2 values per sector) in place; see the header comment. `input_orientations`,
+// `current_orientations`: face_orientations() of ubar and x, if the caller has them.
 inline Flip_repair_result repair_flips(const Corner_mesh& cm, const Seam_topology& st, const Reduced_system& rs,
                                        const Constraint_rows& full, const Fixed_point_grid& grid,
-                                       const std::vector<double>& ubar, std::vector<double>& x)
+                                       const std::vector<double>& ubar, std::vector<double>& x,
+                                       const std::vector<signed char>* input_orientations = nullptr,
+                                       const std::vector<signed char>* current_orientations = nullptr)
 {
   Flip_repair fr(cm, st, rs, full, grid, x);
-  return fr.run(ubar);
+  return fr.run(ubar, input_orientations, current_orientations);
 }
 
 } // namespace internal

@@ -83,24 +83,22 @@ inline void translation(const Corner_mesh& cm, const Seam_topology& st, const Cu
 
 inline bool is_integer(const CGAL::Gmpq& q) { return q.denominator() == 1; }
 
-// true iff (a + b) 2^s is an integer, exactly: the TwoSum pair (S, E) of a + b scaled by 2^s (exact when it
-// neither overflows nor loses bits to underflow) is the exact value S' + E'; with |S'| < 2^52 it is an integer
-// iff E' = 0 and S' is one (an integer of at most 2^53 is a double, which fl() returns as it is). Otherwise in
-// rational arithmetic.
+// a finite double is an integer iff it equals its integer part
+inline bool is_integer(double x) { return std::trunc(x) == x; }
+
+// true iff (a + b) 2^s is an integer, exactly: in integers (dyadic_sum.h), in rational arithmetic when a and b
+// span too much
 inline bool is_integer_sum(double a, double b, int s)
 {
-  if(std::fabs(a) < 0x1p1000 && std::fabs(b) < 0x1p1000) {
-    double S, E;
-    two_sum(a, b, S, E);
-    const double Ss = std::ldexp(S, s), Es = std::ldexp(E, s);
-    if(std::fabs(Ss) < 0x1p52 && std::ldexp(Ss, -s) == S && std::ldexp(Es, -s) == E)
-      return Es == 0 && Ss == std::floor(Ss);
-  }
+  Dyadic_sum t;
+  t.add(1, a); t.add(1, b);
+  if(t.fits()) return t.is_integer(s);
   const CGAL::Gmpq scale = s >= 0 ? CGAL::Gmpq(CGAL::Gmpz(1) << s) : CGAL::Gmpq(CGAL::Gmpz(1), CGAL::Gmpz(1) << -s);
   return is_integer((CGAL::Gmpq(a) + CGAL::Gmpq(b)) * scale);
 }
 
-// true iff t of h at the given end is an integer vector, exactly
+// x_j - R^k x_i (the translation of h at one end) is an integer vector, exactly: in integers (dyadic_sum.h),
+// with Gmpq when the two values span too much
 inline bool exact_integer_translation(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, int h,
                                       bool front, const std::vector<double>& x)
 {
@@ -108,14 +106,19 @@ inline bool exact_integer_translation(const Corner_mesh& cm, const Seam_topology
   translation_corners(cm, st, h, front, si, sj);
   const Quarter_turn R(rot.k[h]);
   for(int c = 0; c < 2; ++c) {
-    const CGAL::Gmpq t = CGAL::Gmpq(x[2 * sj + c]) - CGAL::Gmpq(double(R.sign[c])) * CGAL::Gmpq(x[2 * si + R.col[c]]);
-    if(!is_integer(t)) return false;
+    Dyadic_sum t;
+    t.add(1, x[2 * sj + c]);
+    t.add(-R.sign[c], x[2 * si + R.col[c]]);
+    if(t.fits()) {
+      if(!t.is_integer()) return false;
+      continue;
+    }
+    const CGAL::Gmpq q = CGAL::Gmpq(x[2 * sj + c]) - CGAL::Gmpq(double(R.sign[c])) * CGAL::Gmpq(x[2 * si + R.col[c]]);
+    if(!is_integer(q)) return false;
   }
   return true;
 }
 
-// Integer structure of sector values x: cut edges whose translation is an integer vector at both
-// ends, and cones of the field (rotation sum K != 0 mod 4) whose every sector is an integer point.
 struct Integer_grid_counts
 {
   std::size_t integer_translations = 0;
@@ -148,7 +151,7 @@ inline Integer_grid_counts count_integer_structure(const Corner_mesh& cm, const 
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h) || K[cm.target[h]] <= 0) continue;
     const int s = st.sector_of[h];
-    if(!is_integer(CGAL::Gmpq(x[2 * s])) || !is_integer(CGAL::Gmpq(x[2 * s + 1]))) on_integer[cm.target[h]] = 0;
+    if(!is_integer(x[2 * s]) || !is_integer(x[2 * s + 1])) on_integer[cm.target[h]] = 0;
   }
   for(int v = 0; v < cm.n_vertices; ++v)
     if(K[v] > 0) { ++n.field_cones; if(on_integer[v]) ++n.cones_on_integer_points; }

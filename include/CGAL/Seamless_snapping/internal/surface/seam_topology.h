@@ -76,9 +76,8 @@ inline std::string vertex_pair_name(const Corner_mesh& cm, int h)
   return "(" + std::to_string(cm.source(h)) + ", " + std::to_string(cm.target[h]) + ")";
 }
 
-// Signed UV angle (radians) at the corner h of its triangle: from the edge to the next vertex to
-// the edge to the previous vertex, positive for a counter-clockwise (non-flipped) UV triangle.
-inline double corner_angle(const Corner_mesh& cm, int h)
+// The arguments (y, x) of atan2 for the signed UV angle at the corner h of its triangle (corner_angle()).
+inline void corner_angle_arguments(const Corner_mesh& cm, int h, double& y, double& x)
 {
   const int hn = cm.next[h], hp = cm.prev[h];
   double ax = cm.u[hn] - cm.u[h], ay = cm.v[hn] - cm.v[h];
@@ -86,11 +85,42 @@ inline double corner_angle(const Corner_mesh& cm, int h)
   // the angle does not depend on the scale: bring the edge vectors to magnitude ~1 by a power of 2
   // (exact) so that the products below neither underflow nor overflow, also for tiny triangles
   const double m = (std::max)({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by)});
-  if(m > 0) {
-    int e; std::frexp(m, &e);
-    ax = std::ldexp(ax, -e); ay = std::ldexp(ay, -e); bx = std::ldexp(bx, -e); by = std::ldexp(by, -e);
+  if(m > 0) {   // (std::frexp and std::ldexp, bit for bit: corner_mesh.h)
+    const int e = binary_exponent(m);
+    ax = scale_by_power_of_two(ax, -e); ay = scale_by_power_of_two(ay, -e);
+    bx = scale_by_power_of_two(bx, -e); by = scale_by_power_of_two(by, -e);
   }
-  return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  y = ax * by - ay * bx;
+  x = ax * bx + ay * by;
+}
+
+// Signed UV angle (radians) at the corner h of its triangle: from the edge to the next vertex to
+// the edge to the previous vertex, positive for a counter-clockwise (non-flipped) UV triangle.
+inline double corner_angle(const Corner_mesh& cm, int h)
+{
+  double y, x;
+  corner_angle_arguments(cm, h, y, x);
+  return std::atan2(y, x);
+}
+
+// atan2(y, x) for x != 0 and y != 0 within 3e-9: octant reduction to atan(t), t in (0, 1], then
+// atan(t) = pi/6 + atan(s), s = (sqrt(3) t - 1) / (sqrt(3) + t), for t > tan(pi/12), so that |s| <= 0.268,
+// and atan(s) by its Taylor series up to s^11: an alternating series whose terms decrease, so the error is
+// below the first omitted term, 0.268^13 / 13 < 2.9e-9 (the rounding of the few operations adds < 1e-14).
+// Only used to certify rounded angle sums (compute_seam_topology()), never as a result.
+inline double atan2_within_3e_9(double y, double x)
+{
+  const double pi = 3.141592653589793, half_pi = 1.5707963267948966, sixth_pi = 0.5235987755982988;
+  const double sqrt3 = 1.7320508075688772, tan_twelfth_pi = 0.2679491924311227;
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  const bool steep = ay > ax;
+  double t = steep ? ax / ay : ay / ax, base = 0;
+  if(t > tan_twelfth_pi) { t = (sqrt3 * t - 1) / (sqrt3 + t); base = sixth_pi; }
+  const double t2 = t * t;
+  double r = base + t * (1 + t2 * (-1. / 3 + t2 * (1. / 5 + t2 * (-1. / 7 + t2 * (1. / 9 + t2 * (-1. / 11))))));
+  if(steep) r = half_pi - r;
+  if(x < 0) r = pi - r;
+  return y < 0 ? -r : r;
 }
 
 // `seam_override[e]`: -1 = decide from the UVs, 0 = not a seam, 1 = seam (the caller's seam_edge_map).
@@ -130,47 +160,91 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
     ++st.cut_degree[cm.target[o]];
   }
 
-  // sectors: corners joined across non-cut interior edges
-  Union_find uf(nh);
-  for(int e = 0; e < cm.n_edges; ++e) {
-    if(st.is_cut[e] || cm.is_border_edge(e)) continue;
-    const int h = cm.edge_halfedge[e], o = cm.opp[h];
-    uf.unite(h, cm.prev[o]);      // corners of target(h)
-    uf.unite(cm.prev[h], o);      // corners of source(h)
-  }
+  // sectors: corners joined across non-cut interior edges. Around a vertex the corners form a fan (a
+  // path or a cycle: corner c meets prev(opp(c)) across edge(c) and opp(next(c)) across edge(next(c))),
+  // so each sector is walked once from its smallest halfedge, in both directions; the sectors are numbered
+  // in the order of their smallest halfedges (as a union-find with the smallest representative did).
+  // A corner whose UV differs from its sector's first corner is an error; the smallest such halfedge is named.
   st.sector_of.assign(nh, -1);
-  std::vector<int> sector_of_root(nh, -1);
+  auto joins = [&](int e) { return !st.is_cut[e] && !cm.is_border_edge(e); };
+  int mismatch = nh;
+  auto assign = [&](int c, int s, int first) {
+    st.sector_of[c] = s;
+    if(c < mismatch && !same_uv(cm, c, first)) mismatch = c;
+  };
   for(int h = 0; h < nh; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    const int r = uf.find(h);
-    if(sector_of_root[r] < 0) {
-      sector_of_root[r] = st.n_sectors++;
-      st.sector_corner.push_back(h);
-      st.ubar.push_back(cm.u[h]);
-      st.ubar.push_back(cm.v[h]);
-    }
-    const int s = sector_of_root[r];
+    if(cm.is_border_halfedge(h) || st.sector_of[h] >= 0) continue;
+    const int s = st.n_sectors++;
+    st.sector_corner.push_back(h);
+    st.ubar.push_back(cm.u[h]);
+    st.ubar.push_back(cm.v[h]);
     st.sector_of[h] = s;
-    if(!same_uv(cm, h, st.sector_corner[s])) {
-      message = "the corners of vertex " + std::to_string(cm.target[h]) + " in faces " +
-                std::to_string(cm.face[h]) + " and " + std::to_string(cm.face[st.sector_corner[s]]) +
-                " have different UVs but are joined by edges that are not seams (check the seam_edge_map)";
-      return INVALID_INPUT;
+    bool closed = false;
+    for(int c = h; joins(cm.edge[c]);) {          // across edge(c)
+      c = cm.prev[cm.opp[c]];
+      if(c == h) { closed = true; break; }
+      assign(c, s, h);
     }
+    if(!closed)
+      for(int c = h; joins(cm.edge[cm.next[c]]);) {   // across edge(next(c))
+        c = cm.opp[cm.next[c]];
+        assign(c, s, h);
+      }
+  }
+  if(mismatch < nh) {
+    const int h = mismatch, s = st.sector_of[h];
+    message = "the corners of vertex " + std::to_string(cm.target[h]) + " in faces " +
+              std::to_string(cm.face[h]) + " and " + std::to_string(cm.face[st.sector_corner[s]]) +
+              " have different UVs but are joined by edges that are not seams (check the seam_edge_map)";
+    return INVALID_INPUT;
   }
 
-  // cones
-  std::vector<double> angle_sum(cm.n_vertices, 0.);
-  std::vector<char> has_corner(cm.n_vertices, 0);
-  for(int h = 0; h < nh; ++h)
-    if(!cm.is_border_halfedge(h)) { angle_sum[cm.target[h]] += corner_angle(cm, h); has_corner[cm.target[h]] = 1; }
+  // cones: quarter_turns[v] = lround(angle sum / (pi / 2)), the angle sum being the sum of the corners'
+  // std::atan2 angles in halfedge order. The sums are first taken of atan2_within_3e_9(), which is several
+  // times cheaper than std::atan2; a vertex whose approximate sum is provably rounded to the same number of
+  // quarter turns as the std::atan2 sum keeps it, the others (a corner angle of 0 or pi, or a sum within
+  // about 1e-8 of an odd multiple of 45 degrees) are summed with std::atan2 as before. The bound: per corner,
+  // 3e-9 for the approximation and 2 ulp(pi) for std::atan2 (glibc's atan2 is within 1 ulp); per sum of n
+  // terms of magnitude at most pi, a rounding error of at most n^2 u pi for each of the two sums.
+  const double quarter = std::acos(-1.) / 2;
+  std::vector<double> approximate_sum(cm.n_vertices, 0.);
+  std::vector<int> corners(cm.n_vertices, 0);
+  std::vector<char> exact_sum(cm.n_vertices, 0);   // the std::atan2 sum is needed
+  for(int h = 0; h < nh; ++h) {
+    if(cm.is_border_halfedge(h)) continue;
+    const int v = cm.target[h];
+    double y, x;
+    corner_angle_arguments(cm, h, y, x);
+    ++corners[v];
+    if(y == 0 || x == 0) { exact_sum[v] = 1; continue; }    // signed zeros and angles of exactly 0, +-pi/2, pi
+    approximate_sum[v] += atan2_within_3e_9(y, x);
+  }
   st.quarter_turns.assign(cm.n_vertices, 4);
   st.is_cone.assign(cm.n_vertices, 0);
-  const double quarter = std::acos(-1.) / 2;
+  bool any_exact = false;
   for(int v = 0; v < cm.n_vertices; ++v) {
-    if(cm.vertex_on_border[v] || !has_corner[v]) continue;   // border or isolated vertex
-    st.quarter_turns[v] = int(std::lround(angle_sum[v] / quarter));
-    st.is_cone[v] = st.quarter_turns[v] != 4;
+    if(cm.vertex_on_border[v] || corners[v] == 0 || exact_sum[v]) { any_exact = any_exact || exact_sum[v]; continue; }
+    const double n = double(corners[v]);
+    const double bound = (n * (3e-9 + 1e-14 + 1e-15) + 2 * n * n * 3.5e-16) / quarter + 1e-12;
+    const double turns = approximate_sum[v] / quarter;
+    const double k = std::nearbyint(turns);
+    if(std::fabs(turns - k) <= 0.5 - bound && std::fabs(k) < 1e9) {
+      st.quarter_turns[v] = int(k);
+      st.is_cone[v] = st.quarter_turns[v] != 4;
+    } else {
+      exact_sum[v] = 1;
+      any_exact = true;
+    }
+  }
+  if(any_exact) {
+    std::vector<double> angle_sum(cm.n_vertices, 0.);
+    for(int h = 0; h < nh; ++h)
+      if(!cm.is_border_halfedge(h) && exact_sum[cm.target[h]]) angle_sum[cm.target[h]] += corner_angle(cm, h);
+    for(int v = 0; v < cm.n_vertices; ++v) {
+      if(cm.vertex_on_border[v] || corners[v] == 0 || !exact_sum[v]) continue;   // border or isolated vertex
+      st.quarter_turns[v] = int(std::lround(angle_sum[v] / quarter));
+      st.is_cone[v] = st.quarter_turns[v] != 4;
+    }
   }
   return SUCCESS;
 }

@@ -195,6 +195,7 @@ struct Snap_state
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   std::vector<double> points;            // per vertex its 3D position (x, y, z), for step 4b (empty without untangling)
+  std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for step 5
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
                                          // less with pinned corners)
@@ -220,7 +221,7 @@ std::vector<double> in_grid_units(const Snap_state<TriangleMesh>& S, const std::
   const int e = S.cm.uv_exponent + S.grid_exponent;
   if(e == 0) return x;
   std::vector<double> g(x.size());
-  for(std::size_t i = 0; i < x.size(); ++i) g[i] = std::ldexp(x[i], e);
+  for(std::size_t i = 0; i < x.size(); ++i) g[i] = scale_by_power_of_two(x[i], e);
   return g;
 }
 
@@ -336,7 +337,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   S.grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (project_stage)
   s = check_pins_on_grid(S.cm, S.pins, S.grid, message);
   if(s != SUCCESS) return s;
-  const Orientation_counts input = count_orientations(face_orientations(S.cm, S.st, ubar));
+  S.input_orientations = face_orientations(S.cm, S.st, ubar);
+  const Orientation_counts input = count_orientations(S.input_orientations);
   report.flips_before = input.negative;
   report.degenerate_before = input.degenerate;
   S.collapsed_in_input = count_collapsed_cut_edges(S.cm, S.st, ubar);
@@ -643,7 +645,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
 template <class TriangleMesh>
 void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
-  const std::vector<signed char> input = face_orientations(S.cm, S.st, S.st.ubar);
+  const std::vector<signed char>& input = S.input_orientations;
   const std::vector<signed char> snapped = face_orientations(S.cm, S.st, S.x);
   const Orientation_counts after = count_orientations(snapped), introduced = count_orientations(snapped, &input);
   report.flips_after = report.flips_after_repair = after.negative;
@@ -652,7 +654,7 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
   report.degenerate_introduced = report.degenerate_unrepaired = introduced.degenerate;
   if(!opt.repair_flips || S.already_exact) return;
   const Snap_clock::time_point t = Snap_clock::now();
-  const Flip_repair_result fr = repair_flips(S.cm, S.st, S.rs, S.full, S.grid, S.st.ubar, S.x);
+  const Flip_repair_result fr = repair_flips(S.cm, S.st, S.rs, S.full, S.grid, S.st.ubar, S.x, &input, &snapped);
   report.repair_ms = ms_since(t);
   report.flips_after_repair = fr.after.negative;
   report.degenerate_after_repair = fr.after.degenerate;
@@ -723,7 +725,7 @@ Status verify_stage(const Snap_state<TriangleMesh>& S, Snap_report& report, std:
   }
   const std::vector<double>& ubar = S.st.ubar;
   for(std::size_t i = 0; i < S.x.size(); ++i) {   // the written values are exact at the caller's scale
-    if(S.x[i] == ubar[i] || std::ldexp(S.cm.to_uv(S.x[i]), -S.cm.uv_exponent) == S.x[i]) continue;
+    if(S.x[i] == ubar[i] || scale_by_power_of_two(S.cm.to_uv(S.x[i]), -S.cm.uv_exponent) == S.x[i]) continue;
     message = "the snapped UV " + format_double(S.x[i], 17) + " * 2^" + std::to_string(S.cm.uv_exponent) + " of sector " +
               std::to_string(i / 2) + " is not a double (below the smallest subnormal 2^-1074 or above the largest double): " +
               "the UV map is too close to the limits of double for exact snapping at its scale; nothing was written";

@@ -1,0 +1,221 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
+
+// The halfedge structure that a sequence of CGAL::Euler::add_face() calls builds from a triangle soup,
+// built on plain index arrays, then replayed onto a mesh in one pass (OBJ reader, IO/OBJ.h).
+//
+// add_triangle() is CGAL::Euler::add_face() (CGAL 5.5, boost/graph/Euler_operations.h) step for step:
+// the same tests in the same order (isolated/border vertices, halfedge(u, v) found by walking around v
+// from halfedge(v), the "patch re-linking" of existing border halfedges, the cached set_next() calls,
+// adjust_incoming_halfedge()), on arrays instead of a generic FaceGraph. So it accepts and refuses the
+// same faces, and the replayed mesh has the same halfedges, edges, faces and vertex/face halfedges, in
+// the same order, as a mesh built face by face with Euler::add_face() (and the corner UVs, sectors and
+// results of the snap do not change). Why: Euler::add_face() on a Surface_mesh costs about 1800
+// instructions per triangle (generic descriptors, three std::vector per call), and the reader used to
+// run it twice (on a scratch mesh to validate, then on the caller's mesh); on the arrays it is a few
+// hundred, and the caller's mesh is written once, with add_vertex/add_edge/add_face and the set_*
+// functions of MutableFaceGraph.
+//
+// Numbering (as in Surface_mesh): edge e has the halfedges 2e and 2e + 1 = opposite; halfedge 2e points
+// from the first to the second vertex of the face side that created the edge. -1 = null.
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace IO {
+namespace internal {
+
+class Halfedge_arrays
+{
+  // one record per halfedge (the walks around vertices read next, target and face of the same halfedge:
+  // one cache line instead of three arrays)
+  struct Record { int next, prev, target, face; };
+  std::vector<Record> h_;
+
+public:
+  std::vector<int> vertex_halfedge;             // per vertex: halfedge(v), an incoming halfedge, -1 = isolated
+  std::vector<int> face_halfedge;               // per face: halfedge(f)
+
+  explicit Halfedge_arrays(std::size_t n_vertices, std::size_t n_faces_hint = 0)
+    : vertex_halfedge(n_vertices, -1)
+  {
+    face_halfedge.reserve(n_faces_hint);
+    // a closed triangle mesh has 3 halfedges per face; a border adds a few
+    h_.reserve(3 * n_faces_hint + n_faces_hint / 8 + 16);
+  }
+
+  std::size_t number_of_halfedges() const { return h_.size(); }
+  std::size_t number_of_faces() const { return face_halfedge.size(); }
+  int next(int h) const { return h_[std::size_t(h)].next; }
+  int prev(int h) const { return h_[std::size_t(h)].prev; }
+  int target(int h) const { return h_[std::size_t(h)].target; }
+  int face(int h) const { return h_[std::size_t(h)].face; }           // -1 = border
+  static int opposite(int h) { return h ^ 1; }
+  bool is_border(int h) const { return face(h) < 0; }
+  int source(int h) const { return target(opposite(h)); }
+  // the next halfedge around target(h): opposite(next(h)) (Halfedge_around_target_iterator)
+  int next_around_target(int h) const { return opposite(next(h)); }
+
+  // halfedge(u, v, g) of Surface_mesh: the halfedge u -> v, found by walking around v from halfedge(v); -1 if none
+  int halfedge(int u, int v) const
+  {
+    const int hh = vertex_halfedge[std::size_t(v)];
+    if(hh < 0) return -1;
+    int h = hh;
+    do {
+      if(source(h) == u) return h;
+      h = next_around_target(h);
+    } while(h != hh);
+    return -1;
+  }
+
+  // is_border(v, g): the first border halfedge around v from halfedge(v), -1 if none (or v isolated)
+  int border_halfedge_of(int v) const
+  {
+    const int hh = vertex_halfedge[std::size_t(v)];
+    if(hh < 0) return -1;
+    int h = hh;
+    do {
+      if(is_border(h)) return h;
+      h = next_around_target(h);
+    } while(h != hh);
+    return -1;
+  }
+
+  // CGAL::Euler::add_face({a, b, c}, g): false (and nothing changed) where add_face() returns null_face()
+  bool add_triangle(const std::array<int, 3>& vertices)
+  {
+    const int n = 3;
+    const int* v = vertices.data();
+    if(v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) return false;   // "check that every vertex is unique"
+    int he[3];
+    bool is_new[3];
+    for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
+      if(vertex_halfedge[std::size_t(v[i])] >= 0 && border_halfedge_of(v[i]) < 0) return false;
+      he[i] = halfedge(v[i], v[ii]);
+      is_new[i] = he[i] < 0;
+      if(!is_new[i] && !is_border(he[i])) return false;
+    }
+
+    // the cache of set_next() calls (applied at the end, in order)
+    std::array<std::pair<int, int>, 24> cache;
+    int cached = 0;
+    auto set_next_later = [&](int h, int nh) { cache[std::size_t(cached++)] = std::make_pair(h, nh); };
+
+    // re-link patches if necessary
+    for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
+      if(is_new[i] || is_new[ii]) continue;
+      const int inner_prev = he[i], inner_next = he[ii];
+      if(next(inner_prev) == inner_next) continue;
+      // search a free gap between border_prev and border_next
+      const int outer_prev = opposite(inner_next);
+      int border_prev = outer_prev;
+      do {
+        border_prev = opposite(next(border_prev));
+      } while(!is_border(border_prev) || border_prev == inner_prev);
+      const int border_next = next(border_prev);
+      if(border_next == inner_next) return false;
+      const int patch_start = next(inner_prev), patch_end = prev(inner_next);
+      set_next_later(border_prev, patch_start);
+      set_next_later(patch_end, border_next);
+      set_next_later(inner_prev, inner_next);
+    }
+
+    // create missing edges (u -> v is the even halfedge of the new edge)
+    for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
+      if(!is_new[i]) continue;
+      he[i] = int(h_.size());
+      h_.push_back(Record{-1, -1, v[ii], -1});
+      h_.push_back(Record{-1, -1, v[i], -1});
+    }
+    // create the face
+    const int f = int(face_halfedge.size());
+    face_halfedge.push_back(he[n - 1]);
+
+    // setup halfedges
+    for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
+      const int w = v[ii];
+      const int inner_prev = he[i], inner_next = he[ii];
+      const int id = (is_new[i] ? 1 : 0) | (is_new[ii] ? 2 : 0);
+      if(id != 0) {
+        const int outer_prev = opposite(inner_next), outer_next = opposite(inner_prev);
+        switch(id) {
+          case 1: {   // prev is new, next is old
+            const int border_prev = prev(inner_next);
+            set_next_later(border_prev, outer_next);
+            vertex_halfedge[std::size_t(w)] = border_prev;
+            break;
+          }
+          case 2: {   // next is new, prev is old
+            const int border_next = next(inner_prev);
+            set_next_later(outer_prev, border_next);
+            vertex_halfedge[std::size_t(w)] = outer_prev;
+            break;
+          }
+          default: {  // both are new: try to pick a border halfedge with w as target
+            int hv = vertex_halfedge[std::size_t(w)];
+            if(hv >= 0 && !is_border(hv)) {
+              const int border = border_halfedge_of(w);   // walks from halfedge(w) = hv
+              hv = border >= 0 ? border : -1;
+            }
+            if(hv < 0) {
+              vertex_halfedge[std::size_t(w)] = outer_prev;
+              set_next_later(outer_prev, outer_next);
+            } else {
+              const int border_prev = hv, border_next = next(border_prev);
+              set_next_later(border_prev, outer_next);
+              set_next_later(outer_prev, border_next);
+            }
+            break;
+          }
+        }
+        set_next_later(inner_prev, inner_next);   // inner link
+      }
+      h_[std::size_t(inner_prev)].face = f;
+    }
+
+    for(int c = 0; c < cached; ++c) {
+      h_[std::size_t(cache[std::size_t(c)].first)].next = cache[std::size_t(c)].second;
+      h_[std::size_t(cache[std::size_t(c)].second)].prev = cache[std::size_t(c)].first;
+    }
+    for(int i = 0; i < n; ++i) adjust_incoming_halfedge(v[i]);
+    return true;
+  }
+
+private:
+  // CGAL::internal::adjust_incoming_halfedge(): halfedge(v) becomes a border halfedge into v if there is one
+  void adjust_incoming_halfedge(int v)
+  {
+    int h = vertex_halfedge[std::size_t(v)];
+    if(h < 0) return;
+    if(target(h) != v) {
+      h = opposite(h);
+      vertex_halfedge[std::size_t(v)] = h;
+    }
+    const int hh = h;
+    do {
+      if(is_border(h)) { vertex_halfedge[std::size_t(v)] = h; return; }
+      h = next_around_target(h);
+    } while(h != hh);
+  }
+};
+
+} // namespace internal
+} // namespace IO
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
