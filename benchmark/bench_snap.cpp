@@ -386,9 +386,9 @@ static bool reset_peak_rss()
 
 static int large_study(const std::vector<fs::path>& files, int repeat)
 {
-  std::printf("%-34s %7s %6s %6s | %8s %8s | %8s %8s %8s %8s %8s %8s %8s %8s %8s | %6s %8s | %8s %8s | %6s | %7s %7s %7s\n",
+  std::printf("%-34s %7s %6s %6s | %8s %8s | %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s | %6s %8s | %8s %8s | %6s | %7s %7s %7s\n",
               "model", "#F", "#cones", "#nodes", "read", "cpu", "extract", "reduce", "LS", "IRREF", "evaluate", "repair",
-              "verify", "snap", "cpu", "us/F", "extr/F", "write", "cpu", "s/r", "MB read", "MB snap", "MB write");
+              "explain", "verify", "snap", "cpu", "us/F", "extr/F", "write", "cpu", "s/r", "MB read", "MB snap", "MB write");
   int failures = 0;
   bool peaks_reset = true;
   const fs::path out = fs::temp_directory_path() / ("bench_snap_large_" + std::to_string(::getpid()) + ".obj");
@@ -436,17 +436,18 @@ static int large_study(const std::vector<fs::path>& files, int repeat)
     if(!ok) continue;
     const double per_face = 1000. * best.total_ms / double(best.faces);
     const char* plus = peaks_reset ? " " : "+";
-    std::printf("%-34s %7zu %6zu %6zu | %8.1f %8.1f | %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f | %6.2f %8.3f | %8.1f %8.1f | %6.2f | %6.0f%s %6.0f%s %6.0f%s\n",
+    std::printf("%-34s %7zu %6zu %6zu | %8.1f %8.1f | %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f %8.1f | %6.2f %8.3f | %8.1f %8.1f | %6.2f | %6.0f%s %6.0f%s %6.0f%s\n",
                 p.filename().string().c_str(), best.faces, best.cones, best.nodes, read, read_cpu, best.extract_ms,
-                best.reduce_ms, best.least_squares_ms, best.irref_ms, best.evaluate_ms, best.repair_ms, best.verify_ms,
+                best.reduce_ms, best.least_squares_ms, best.irref_ms, best.evaluate_ms, best.repair_ms, best.explain_ms, best.verify_ms,
                 best.total_ms, snap_cpu, per_face, 1000. * best.extract_ms / double(best.faces), write, write_cpu,
                 read > 0 ? best.total_ms / read : 0., mb_read, plus, mb_snap, plus, mb_write, plus);
     std::fflush(stdout);
   }
   std::printf("\ncolumns: read / write = read_OBJ_with_corner_uvs (welding files under \"directional\") / write_OBJ_with_corner_uvs,\n"
               "wall ms, minimum over the runs, with the process CPU ms of that run (cpu); extract .. snap = the Snap_report's\n"
-              "phase times of the fastest snap (snap = total_ms, which also holds the steps not listed: untangling checks,\n"
-              "fold explanations, the write into the map), cpu = its CPU ms; us/F = snap us per face, extr/F = extract us\n"
+              "phase times of the fastest snap (explain = the faces left not positive with their proofs and the vertex\n"
+              "windings; snap = total_ms, which also holds the steps not listed: propagation, untangling, the write into\n"
+              "the map), cpu = its CPU ms; us/F = snap us per face, extr/F = extract us\n"
               "per face; s/r = snap / read (wall); MB = peak RSS of the process during the read, the snap, the write\n"
               "(each phase's own peak%s).\n", peaks_reset ? "" : "; '+': the peak could not be reset, so it is the peak so far");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

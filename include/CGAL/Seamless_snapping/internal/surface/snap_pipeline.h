@@ -195,7 +195,7 @@ struct Snap_state
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   std::vector<double> points;            // per vertex its 3D position (x, y, z), for step 4b (empty without untangling)
-  std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for step 5
+  std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for steps 4b, 5 and 5b
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
                                          // less with pinned corners)
@@ -536,11 +536,11 @@ Uv_change measure_uv_change(const Snap_state<TriangleMesh>& S, const std::vector
   return c;
 }
 
-// per face: positively oriented in the input (exact test)
+// per face: positively oriented in the input (exact test, step 2)
 template <class TriangleMesh>
 std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
 {
-  const std::vector<signed char> o = face_orientations(S.cm, S.st, S.st.ubar);
+  const std::vector<signed char>& o = S.input_orientations;
   std::vector<char> positive(o.size());
   for(std::size_t f = 0; f < o.size(); ++f) positive[f] = o[f] == CGAL::POSITIVE ? 1 : 0;
   return positive;
@@ -867,14 +867,18 @@ Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const Sea
   if(s != SUCCESS) return finish(s, message);
   repair_stage(opt, S, report);
   restore_pinned_values(S.pins, S.x);
+  t = Snap_clock::now();
   explain_folds_stage(opt, S, report);
+  report.explain_ms = ms_since(t);
 
   t = Snap_clock::now();
   s = verify_stage(S, report, message);
   report.verify_ms = ms_since(t);
   if(s != SUCCESS) return finish(s, message);
 
+  t = Snap_clock::now();
   write_stage(uvmap, S);
+  report.write_ms = ms_since(t);
   return finish(SUCCESS, success_summary(opt, S, report));
 }
 

@@ -94,9 +94,14 @@ private:
   void build_local_system(const std::vector<int>& faces, int radius)
   {
     // sectors of the vertices within `radius` face rings of the faces
-    std::vector<std::vector<int> > vertex_faces(std::size_t(cm_.n_vertices));
+    // the faces of each vertex v: face_of[first[v] .. first[v + 1]) (one array, not a vector per vertex)
+    std::vector<int> first(std::size_t(cm_.n_vertices) + 1, 0), face_of(3 * fc_.halfedge.size());
+    for(const std::array<int, 3>& hs : fc_.halfedge)
+      for(int h : hs) ++first[std::size_t(cm_.target[h]) + 1];
+    for(std::size_t v = 0; v < std::size_t(cm_.n_vertices); ++v) first[v + 1] += first[v];
+    std::vector<int> fill(first.begin(), first.end() - 1);
     for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
-      for(int h : fc_.halfedge[f]) vertex_faces[std::size_t(cm_.target[h])].push_back(int(f));
+      for(int h : fc_.halfedge[f]) face_of[std::size_t(fill[std::size_t(cm_.target[h])]++)] = int(f);
     std::vector<char> in(std::size_t(cm_.n_vertices), 0);
     std::vector<int> front;
     for(int f : faces)
@@ -105,8 +110,8 @@ private:
     for(int r = 0; r < radius; ++r) {
       std::vector<int> next;
       for(int v : front)
-        for(int g : vertex_faces[std::size_t(v)])
-          for(int h : fc_.halfedge[std::size_t(g)])
+        for(int i = first[std::size_t(v)]; i < first[std::size_t(v) + 1]; ++i)
+          for(int h : fc_.halfedge[std::size_t(face_of[std::size_t(i)])])
             if(!in[std::size_t(cm_.target[h])]) { in[std::size_t(cm_.target[h])] = 1; next.push_back(cm_.target[h]); }
       front.swap(next);
     }
