@@ -15,6 +15,7 @@
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/version.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/IO/OBJ.h>
@@ -37,6 +38,7 @@ typedef CGAL::Surface_mesh<Point_3>                        Mesh;
 typedef Mesh::Property_map<Mesh::Halfedge_index, Point_2>  UV_map;
 
 namespace SS = CGAL::Seamless_snapping;
+using SS::IO::internal::json_string;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
@@ -97,13 +99,6 @@ static std::string extension_of(const std::string& file)
   std::string e = dot == std::string::npos ? "" : file.substr(dot + 1);
   for(char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
   return e;
-}
-
-static std::string json_string(const std::string& v)
-{
-  std::string o = "\"";
-  for(char c : v) { if(c == '"' || c == '\\') o += '\\'; if(c == '\n') { o += "\\n"; continue; } o += c; }
-  return o + "\"";
 }
 
 int main(int argc, char** argv)

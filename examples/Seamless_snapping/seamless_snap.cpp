@@ -22,6 +22,7 @@
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
@@ -46,6 +47,7 @@ typedef Mesh::Halfedge_index                               halfedge_descriptor;
 typedef Mesh::Property_map<halfedge_descriptor, Point_2>   UV_map;
 
 namespace SS = CGAL::Seamless_snapping;
+using SS::IO::internal::json_string;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
@@ -270,13 +272,6 @@ static bool read_mesh(const std::string& in, bool weld, Mesh& mesh, UV_map& uv, 
   mesh = Mesh();
   uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
   return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) == SS::SUCCESS;
-}
-
-static std::string json_string(const std::string& v)
-{
-  std::string o = "\"";
-  for(char c : v) { if(c == '"' || c == '\\') o += '\\'; if(c == '\n') { o += "\\n"; continue; } o += c; }
-  return o + "\"";
 }
 
 // The options of a run (one input, or each input of --outdir).

@@ -21,6 +21,7 @@
 #include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <chrono>
 #include <cstdio>
@@ -34,16 +35,7 @@ typedef CGAL::Surface_mesh<K::Point_3>                     Mesh;
 typedef Mesh::Property_map<Mesh::Halfedge_index, K::Point_2> UV_map;
 
 namespace SS = CGAL::Seamless_snapping;
-
-static std::string json_string(const std::string& s)
-{
-  std::string out = "\"";
-  for(char c : s) {
-    if(c == '"' || c == '\\') out += '\\';
-    if(static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
+using SS::IO::internal::json_string;
 
 int main(int argc, char** argv)
 {

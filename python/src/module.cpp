@@ -10,6 +10,7 @@
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -107,11 +108,7 @@ std::string projection_report_json(const SS::Projection_report& r, const SS::Irr
 {
   std::ostringstream o;
   o.precision(17);
-  auto quoted = [](const std::string& s) {
-    std::string q = "\"";
-    for(char c : s) { if(c == '"' || c == '\\') q += '\\'; if(c == '\n') { q += "\\n"; continue; } q += c; }
-    return q + "\"";
-  };
+  auto quoted = [](const std::string& s) { return SS::IO::internal::json_string(s); };
   o << "{\"status\": " << quoted(SS::status_name(r.status)) << ", \"message\": " << quoted(r.message)
     << ", \"delta_exponent\": " << r.delta_exponent << ", \"quantum\": " << r.quantum
     << ", \"max_abs_change\": " << r.max_abs_change << ", \"changed_variables\": " << r.changed_variables

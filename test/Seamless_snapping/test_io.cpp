@@ -5,6 +5,7 @@
 //   io: malformed inputs give INVALID_INPUT and leave mesh and map untouched
 //   io: the reader builds the halfedges Euler::add_face() builds (random soups, the shared maps), refuses the same soups
 //   io: an invalid mesh or an unwritable place writes no file (atomic write)
+//   io: json_string() escapes every control character, quote and backslash (decoded back here, all 256 bytes)
 //   orbifold: Square on CGAL's bear has 90-degree seams up to solver error; Triangle does not; the map has the
 //             seams, rotations and cones of shared/data's bear_orbifold_square_mvc.obj and its UVs within 1e-11 of
 //             the UV diagonal (not bit for bit: CGAL's solve rounds differently on other CPUs, see test_arguments.h)
@@ -33,7 +34,9 @@
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/matrices.h>
+#include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
@@ -1006,11 +1009,60 @@ static void test_obj_matrices(const fs::path& tmp)
         msg.find("cannot open") == 0, "missing file: " << msg);
 }
 
+// json_string() (the escaper of every JSON the package writes): every string of one byte, and a mixed one, decode
+// back to themselves with a decoder written here from RFC 8259 (escapes \" \\ \n \r \t \uXXXX), and no output holds a
+// raw control character or an unescaped quote; a Snap_report whose message has a tab and a byte 0x01 writes them escaped
+static bool decode_json_string(const std::string& j, std::string& out)
+{
+  if(j.size() < 2 || j.front() != '"' || j.back() != '"') return false;
+  out.clear();
+  for(std::size_t i = 1; i + 1 < j.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(j[i]);
+    if(c < 0x20 || c == '"') return false;
+    if(c != '\\') { out += char(c); continue; }
+    if(++i + 1 >= j.size()) return false;
+    switch(j[i]) {
+      case '"': out += '"'; break;
+      case '\\': out += '\\'; break;
+      case 'n': out += '\n'; break;
+      case 'r': out += '\r'; break;
+      case 't': out += '\t'; break;
+      case 'u': {
+        if(i + 4 >= j.size() - 1) return false;
+        out += char(std::stoi(j.substr(i + 1, 4), nullptr, 16));
+        i += 4;
+        break;
+      }
+      default: return false;
+    }
+  }
+  return true;
+}
+
+static void test_json_strings()
+{
+  std::cout << "io: JSON strings\n";
+  std::string mixed = "C:\\maps\\\"a b\".obj\tline 3\r\n";
+  for(int b = 0; b < 256; ++b) {
+    const std::string one(1, char(b));
+    std::string back;
+    CHECK(decode_json_string(SS::IO::internal::json_string(one), back) && back == one, "byte " + std::to_string(b));
+    if(b < 0x20 || b == 0x7f) mixed += one;
+  }
+  std::string back;
+  CHECK(decode_json_string(SS::IO::internal::json_string(mixed), back) && back == mixed, "mixed string");
+  SS::Snap_report r;
+  r.message = "file\tname\x01";
+  const std::string j = r.to_json();
+  CHECK(j.find("\"message\": \"file\\tname\\u0001\"") != std::string::npos, "Snap_report::to_json escapes its message");
+}
+
 int main(int argc, char** argv)
 {
   parse_test_arguments(argc, argv);
   const auto t0 = std::chrono::steady_clock::now();
   const fs::path tmp = scratch_dir();
+  test_json_strings();
   test_malformed();
   test_euler_equivalence();
   test_valid_variants();

@@ -11,6 +11,7 @@
 #define CGAL_SEAMLESS_SNAPPING_QUAD_MESH_REPORT_H
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <CGAL/Gmpq.h>
 
@@ -81,9 +82,7 @@ struct Quad_mesh_report
     std::ostringstream o;
     o << std::setprecision(17) << "{\n";
     auto str = [&](const char* k, const std::string& v) {
-      o << "  \"" << k << "\": \"";
-      for(char c : v) { if(c == '"' || c == '\\') o << '\\'; if(c == '\n') { o << "\\n"; continue; } o << c; }
-      o << "\",\n";
+      o << "  \"" << k << "\": " << IO::internal::json_string(v) << ",\n";
     };
     auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
     auto list = [&](const char* k, const std::vector<std::size_t>& v) {

@@ -11,6 +11,7 @@
 #define CGAL_SEAMLESS_SNAPPING_SNAP_REPORT_H
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
 #include <cstddef>
 #include <iomanip>
@@ -192,9 +193,7 @@ struct Snap_report
     std::ostringstream o;
     o << std::setprecision(17);
     auto str = [&](const char* k, const std::string& v, bool comma = true) {
-      o << "  \"" << k << "\": \"";
-      for(char c : v) { if(c == '"' || c == '\\') o << '\\'; if(c == '\n') { o << "\\n"; continue; } o << c; }
-      o << "\"" << (comma ? ",\n" : "\n");
+      o << "  \"" << k << "\": " << IO::internal::json_string(v) << (comma ? ",\n" : "\n");
     };
     auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
     o << "{\n";
