@@ -72,8 +72,11 @@
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
 
 #include <CGAL/Gmpq.h>
+
+#include <Eigen/Eigenvalues>
 
 #include "connection_test_utils.h"
 
@@ -902,6 +905,52 @@ static void move_vertex_uv(Mesh& m, UV_map uv, vertex_descriptor v, const Point_
     if(!m.is_border(h) && m.target(h) == v) put(uv, h, p);
 }
 
+// The untangling energy's derivatives (untangling_energy.h): the gradient against central differences of the
+// energy, and the PSD-projected Hessian, written from its eigensystem in closed form, against Eigen's symmetric
+// eigensolver applied to central differences of the gradient (eigenvalues clamped at 0), on random Jacobians
+// (positive, inverted, near-singular) and on the special ones (j+ = 0 or j- = 0, the zero matrix)
+static void test_untangling_energy()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-2, 2);
+  std::vector<Eigen::Vector4d> js = {Eigen::Vector4d(1, 0, 0, 1), Eigen::Vector4d(1, 0, 0, -1), Eigen::Vector4d(0, 1, -1, 0),
+                                     Eigen::Vector4d(0, 1, 1, 0), Eigen::Vector4d(0, 0, 0, 0), Eigen::Vector4d(2, 0, 0, 0.5),
+                                     Eigen::Vector4d(0.5, 0.2, 0.2, 0.08)};
+  for(int i = 0; i < 2000; ++i) js.emplace_back(U(rng), U(rng), U(rng), U(rng));
+  double worst_grad = 0, worst_hess = 0;
+  for(double eps : {1., 0.1, 0.01})
+    for(const Eigen::Vector4d& j : js) {
+      Eigen::Vector4d grad;
+      Eigen::Matrix4d hess;
+      const double f = SI::untangling_energy(j, eps, grad, hess);
+      assert(f == SI::untangling_energy(j, eps));
+      const double h = 1e-6 * (std::max)(1., j.norm());
+      Eigen::Vector4d grad_fd;
+      Eigen::Matrix4d hess_fd;
+      for(int c = 0; c < 4; ++c) {
+        Eigen::Vector4d a = j, b = j, ga, gb;
+        a[c] += h; b[c] -= h;
+        Eigen::Matrix4d unused;
+        grad_fd[c] = (SI::untangling_energy(a, eps) - SI::untangling_energy(b, eps)) / (2 * h);
+        SI::untangling_energy(a, eps, ga, unused);
+        SI::untangling_energy(b, eps, gb, unused);
+        hess_fd.col(c) = (ga - gb) / (2 * h);
+      }
+      hess_fd = 0.5 * (hess_fd + hess_fd.transpose()).eval();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(hess_fd);
+      const Eigen::Matrix4d projected = es.eigenvectors() * es.eigenvalues().cwiseMax(0.).asDiagonal() * es.eigenvectors().transpose();
+      const double scale_g = (std::max)(1., grad.norm()), scale_h = (std::max)(1., hess_fd.norm());
+      worst_grad = (std::max)(worst_grad, (grad - grad_fd).norm() / scale_g);
+      worst_hess = (std::max)(worst_hess, (hess - projected).norm() / scale_h);
+      assert((grad - grad_fd).norm() <= 1e-5 * scale_g);
+      assert((hess - projected).norm() <= 1e-5 * scale_h);
+      assert(hess.isApprox(hess.transpose(), 0.) && Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(hess).eigenvalues().minCoeff() >= -1e-12 * scale_h);
+    }
+  std::cout << "untangling energy: gradient and projected Hessian of " << 3 * js.size()
+            << " Jacobians agree with central differences (largest relative differences " << worst_grad << ", " << worst_hess << ")\n";
+}
+
 static void test_untangling_analytic()
 {
   // an exact flat 8 x 8 torus (an IGM) with vertex (3, 3) dragged across its neighbour (4, 3): its triangles fold
@@ -1025,6 +1074,7 @@ int main(int argc, char** argv)
   test_pinned_corners_data();
   if(!sanitizer_subset()) test_integer_grid_orbifold();
   test_integer_grid_data();
+  test_untangling_energy();
   test_untangling_analytic();
   test_untangling_data();
   test_invalid();

@@ -28,9 +28,9 @@
 //   hess f = g hess N + g' (grad N grad D^T + grad D grad N^T) + N g'' grad D grad D^T + N g' hess D
 // with N = (1 - theta)|j|^2 + theta (1 + D^2), chi' = chi / s, s = sqrt(eps^2 + D^2), g' = -1 / (chi s),
 // g'' = 2 / s^3. The 4x4 Hessian is projected onto the positive semidefinite
-// cone (eigenvalues clamped at 0) for Newton's method.
+// cone (eigenvalues clamped at 0) for Newton's method, from its eigensystem in closed form (below).
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
@@ -104,28 +104,59 @@ inline double untangling_energy(const Eigen::Vector4d& j, double eps)
   return N / untangling_chi(D, eps);
 }
 
-// f_eps(J), its gradient in j and its Hessian in j projected onto the PSD cone
+// f_eps(J), its gradient in j and its Hessian in j projected onto the PSD cone (eigenvalues clamped at 0),
+// from the Hessian's eigensystem in closed form. With hD j = gD and hN, gN from the header,
+//   hess f = c0 I + c1 hD + k gD gD^T + m (j gD^T + gD j^T),
+//   c0 = 2 g (1 - theta), c1 = 2 g theta D + N g', k = 2 g theta + N g'' + 4 theta D g', m = 2 (1 - theta) g'.
+// hD (the Hessian of det) has the eigenvalue +1 on V+ = {(a, b, -b, a)} (similarities) and -1 on
+// V- = {(a, b, b, -a)} (anti-similarities); j = j+ + j- splits along them and gD = j+ - j-. So the unit vector
+// w+ of V+ orthogonal to j+ is an eigenvector (eigenvalue c0 + c1), so is w- in V- orthogonal to j-
+// (c0 - c1), and on the unit vectors u+ = j+ / |j+|, u- = j- / |j-| the Hessian is the 2x2 block
+//   [[c0 + c1 + (k + 2m) |j+|^2, -k |j+| |j-|], [-k |j+| |j-|, c0 - c1 + (k - 2m) |j-|^2]],
+// whose eigenpairs are written with square roots only (no libm function whose last bit may differ between
+// machines). This is the structure of the Hessians of isotropic 2D energies (Smith, Goes, Kim, "Analytic
+// eigensystems for isotropic distortion energies", ACM TOG 2019), derived here for f_eps directly.
 inline double untangling_energy(const Eigen::Vector4d& j, double eps, Eigen::Vector4d& grad, Eigen::Matrix4d& hess)
 {
   const double theta = untangling_theta;
   const double D = untangling_determinant(j);
   const Eigen::Vector4d gD(j[3], -j[2], -j[1], j[0]);
-  Eigen::Matrix4d hD = Eigen::Matrix4d::Zero();
-  hD(0, 3) = hD(3, 0) = 1;
-  hD(1, 2) = hD(2, 1) = -1;
   const double N = (1 - theta) * j.squaredNorm() + theta * (1 + D * D);
   const Eigen::Vector4d gN = 2 * (1 - theta) * j + 2 * theta * D * gD;
-  const Eigen::Matrix4d hN = 2 * (1 - theta) * Eigen::Matrix4d::Identity() + 2 * theta * (gD * gD.transpose() + D * hD);
   const double s = std::sqrt(eps * eps + D * D);
   const double chi = untangling_chi(D, eps);
   const double g = 1 / chi, g1 = -1 / (chi * s), g2 = 2 / (s * s * s);
   grad = g * gN + N * g1 * gD;
-  hess = g * hN + g1 * (gN * gD.transpose() + gD * gN.transpose()) + N * g2 * gD * gD.transpose() + N * g1 * hD;
-  if(Eigen::LLT<Eigen::Matrix4d>(hess).info() == Eigen::Success) return N * g;   // positive definite already
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(hess);
-  const Eigen::Vector4d lambda = es.eigenvalues().cwiseMax(0.);
-  hess = es.eigenvectors() * lambda.asDiagonal() * es.eigenvectors().transpose();
-  return N * g;
+  const double c0 = 2 * g * (1 - theta), c1 = 2 * g * theta * D + N * g1;
+  const double k = 2 * g * theta + N * g2 + 4 * theta * D * g1, m = 2 * (1 - theta) * g1;
+  // j+ = p1 e1 + p2 e2, j- = q1 e3 + q2 e4 in the orthonormal bases e1 = (1, 0, 0, 1) / sqrt2,
+  // e2 = (0, 1, -1, 0) / sqrt2 of V+ and e3 = (1, 0, 0, -1) / sqrt2, e4 = (0, 1, 1, 0) / sqrt2 of V-
+  const double r = std::sqrt(0.5);
+  const double p1 = r * (j[0] + j[3]), p2 = r * (j[1] - j[2]), q1 = r * (j[0] - j[3]), q2 = r * (j[1] + j[2]);
+  const double np = std::sqrt(p1 * p1 + p2 * p2), nm = std::sqrt(q1 * q1 + q2 * q2);
+  const double a1 = np > 0 ? p1 / np : 1, a2 = np > 0 ? p2 / np : 0;   // u+ in (e1, e2); any unit vector if j+ = 0
+  const double b1 = nm > 0 ? q1 / nm : 1, b2 = nm > 0 ? q2 / nm : 0;   // u- in (e3, e4)
+  const Eigen::Vector4d up(r * a1, r * a2, -r * a2, r * a1), wp(-r * a2, r * a1, -r * a1, -r * a2);
+  const Eigen::Vector4d um(r * b1, r * b2, r * b2, -r * b1), wm(-r * b2, r * b1, r * b1, r * b2);
+  // the 2x2 block [[A, B], [B, C]] on (u+, u-): eigenvalues mean +- rad, the first eigenvector without cancellation
+  const double A = c0 + c1 + (k + 2 * m) * np * np, C = c0 - c1 + (k - 2 * m) * nm * nm, B = -k * np * nm;
+  const double mean = 0.5 * (A + C), dif = 0.5 * (A - C), rad = std::sqrt(dif * dif + B * B);
+  double v1 = 1, v2 = 0;
+  if(rad > 0) {
+    const double x = dif >= 0 ? dif + rad : B, y = dif >= 0 ? B : rad - dif, n = std::sqrt(x * x + y * y);
+    v1 = x / n; v2 = y / n;
+  }
+  const Eigen::Vector4d z1 = v1 * up + v2 * um, z2 = v1 * um - v2 * up;
+  hess.setZero();
+  const double lambda[4] = {c0 + c1, c0 - c1, mean + rad, mean - rad};
+  const Eigen::Vector4d* vector[4] = {&wp, &wm, &z1, &z2};
+  for(int i = 0; i < 4; ++i) {
+    if(!(lambda[i] > 0)) continue;
+    const Eigen::Vector4d& v = *vector[i];
+    for(int a = 0; a < 4; ++a)
+      for(int b = 0; b < 4; ++b) hess(a, b) += lambda[i] * (v[a] * v[b]);   // exactly symmetric
+  }
+  return N / chi;                                         // as untangling_energy(j, eps), bit for bit
 }
 
 } // namespace internal
