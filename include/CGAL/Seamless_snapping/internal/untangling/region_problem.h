@@ -233,27 +233,28 @@ public:
     return E;
   }
 
-  // the gradient g and the PSD Hessian (into the values of H) of value()
-  void derivatives(const std::vector<double>& w, double eps, double weight_proximity, Eigen::VectorXd& g)
+  // the gradient g and, with `hessian`, the PSD Hessian (into the values of H) of value()
+  void derivatives(const std::vector<double>& w, double eps, double weight_proximity, Eigen::VectorXd& g, bool hessian = true)
   {
     g.setZero();
     double* values = H.valuePtr();
-    std::fill(values, values + H.nonZeros(), 0.);
+    if(hessian) std::fill(values, values + H.nonZeros(), 0.);
     std::vector<double> HB;
     for(const Face& e : faces) {
       Eigen::Vector4d gj;
       Eigen::Matrix4d hj;
-      untangling_energy(jacobian(e, w), eps, gj, hj);
+      untangling_energy(jacobian(e, w), eps, gj, hessian ? &hj : nullptr);
       const std::size_t n = e.w.size();
+      for(std::size_t a = 0; a < n; ++a) {
+        const double* bm = &e.BM[4 * a];
+        g[e.w[a]] += e.area * (bm[0] * gj[0] + bm[1] * gj[1] + bm[2] * gj[2] + bm[3] * gj[3]);
+      }
+      if(!hessian) continue;
       HB.assign(4 * n, 0.);                               // hj BM, column by column
       for(std::size_t a = 0; a < n; ++a) {
         const double* bm = &e.BM[4 * a];
-        double ga = 0;
-        for(int r = 0; r < 4; ++r) {
-          ga += bm[r] * gj[r];
+        for(int r = 0; r < 4; ++r)
           HB[4 * a + std::size_t(r)] = hj(r, 0) * bm[0] + hj(r, 1) * bm[1] + hj(r, 2) * bm[2] + hj(r, 3) * bm[3];
-        }
-        g[e.w[a]] += e.area * ga;
       }
       for(std::size_t a = 0; a < n; ++a)
         for(std::size_t b = 0; b <= a; ++b) {
@@ -267,8 +268,9 @@ public:
         const double c = 2 * weight_proximity / h2, r = offset[l] + displacement(l, w);
         for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a) {
           g[space.w_index[a]] += c * r * space.coef[a];
-          for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
-            if(space.w_index[b] <= space.w_index[a]) values[slot(space.w_index[a], space.w_index[b])] += c * space.coef[a] * space.coef[b];
+          if(hessian)
+            for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
+              if(space.w_index[b] <= space.w_index[a]) values[slot(space.w_index[a], space.w_index[b])] += c * space.coef[a] * space.coef[b];
         }
       }
   }

@@ -257,15 +257,18 @@ private:
 
   // one Newton direction for value(w, eps, weight) into d; false if none (no descent). refactor = false: the
   // factorization of the previous call is used if it gives a descent direction (a fixed positive definite matrix:
-  // the line search still decreases the energy), else the Hessian is factored as with refactor = true
+  // the line search still decreases the energy), and the Hessian is not even assembled; else the Hessian is
+  // factored as with refactor = true
   static bool newton_direction(Region_problem& p, Eigen::SimplicialLDLT<Region_problem::Matrix>& ldlt,
                                const std::vector<double>& w, double eps, double weight, Eigen::VectorXd& g, Eigen::VectorXd& d,
                                bool refactor = true)
   {
-    p.derivatives(w, eps, weight, g);
-    if(!refactor && ldlt.info() == Eigen::Success) {
+    const bool reuse = !refactor && ldlt.info() == Eigen::Success;
+    p.derivatives(w, eps, weight, g, !reuse);
+    if(reuse) {
       d = ldlt.solve(-g);
       if(d.allFinite() && g.dot(d) < 0) return true;
+      p.derivatives(w, eps, weight, g);                       // no descent: the Hessian after all
     }
     double trace = 0;
     for(int k : p.diagonal) trace += p.H.valuePtr()[k];

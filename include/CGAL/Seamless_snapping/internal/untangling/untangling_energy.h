@@ -104,8 +104,8 @@ inline double untangling_energy(const Eigen::Vector4d& j, double eps)
   return N / untangling_chi(D, eps);
 }
 
-// f_eps(J), its gradient in j and its Hessian in j projected onto the PSD cone (eigenvalues clamped at 0),
-// from the Hessian's eigensystem in closed form. With hD j = gD and hN, gN from the header,
+// f_eps(J), its gradient in j and, unless hess is null, its Hessian in j projected onto the PSD cone (eigenvalues
+// clamped at 0), from the Hessian's eigensystem in closed form. With hD j = gD and hN, gN from the header,
 //   hess f = c0 I + c1 hD + k gD gD^T + m (j gD^T + gD j^T),
 //   c0 = 2 g (1 - theta), c1 = 2 g theta D + N g', k = 2 g theta + N g'' + 4 theta D g', m = 2 (1 - theta) g'.
 // hD (the Hessian of det) has the eigenvalue +1 on V+ = {(a, b, -b, a)} (similarities) and -1 on
@@ -116,7 +116,7 @@ inline double untangling_energy(const Eigen::Vector4d& j, double eps)
 // whose eigenpairs are written with square roots only (no libm function whose last bit may differ between
 // machines). This is the structure of the Hessians of isotropic 2D energies (Smith, Goes, Kim, "Analytic
 // eigensystems for isotropic distortion energies", ACM TOG 2019), derived here for f_eps directly.
-inline double untangling_energy(const Eigen::Vector4d& j, double eps, Eigen::Vector4d& grad, Eigen::Matrix4d& hess)
+inline double untangling_energy(const Eigen::Vector4d& j, double eps, Eigen::Vector4d& grad, Eigen::Matrix4d* hess)
 {
   const double theta = untangling_theta;
   const double D = untangling_determinant(j);
@@ -127,6 +127,7 @@ inline double untangling_energy(const Eigen::Vector4d& j, double eps, Eigen::Vec
   const double chi = untangling_chi(D, eps);
   const double g = 1 / chi, g1 = -1 / (chi * s), g2 = 2 / (s * s * s);
   grad = g * gN + N * g1 * gD;
+  if(hess == nullptr) return N / chi;                     // as untangling_energy(j, eps), bit for bit
   const double c0 = 2 * g * (1 - theta), c1 = 2 * g * theta * D + N * g1;
   const double k = 2 * g * theta + N * g2 + 4 * theta * D * g1, m = 2 * (1 - theta) * g1;
   // j+ = p1 e1 + p2 e2, j- = q1 e3 + q2 e4 in the orthonormal bases e1 = (1, 0, 0, 1) / sqrt2,
@@ -147,16 +148,16 @@ inline double untangling_energy(const Eigen::Vector4d& j, double eps, Eigen::Vec
     v1 = x / n; v2 = y / n;
   }
   const Eigen::Vector4d z1 = v1 * up + v2 * um, z2 = v1 * um - v2 * up;
-  hess.setZero();
+  hess->setZero();
   const double lambda[4] = {c0 + c1, c0 - c1, mean + rad, mean - rad};
   const Eigen::Vector4d* vector[4] = {&wp, &wm, &z1, &z2};
   for(int i = 0; i < 4; ++i) {
     if(!(lambda[i] > 0)) continue;
     const Eigen::Vector4d& v = *vector[i];
     for(int a = 0; a < 4; ++a)
-      for(int b = 0; b < 4; ++b) hess(a, b) += lambda[i] * (v[a] * v[b]);   // exactly symmetric
+      for(int b = 0; b < 4; ++b) (*hess)(a, b) += lambda[i] * (v[a] * v[b]);   // exactly symmetric
   }
-  return N / chi;                                         // as untangling_energy(j, eps), bit for bit
+  return N / chi;
 }
 
 } // namespace internal
