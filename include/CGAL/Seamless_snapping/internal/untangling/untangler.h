@@ -122,13 +122,13 @@ public:
     stats = Untangle_statistics();
     budget_ = opt.work_per_face * double(fc_.halfedge.size());
     const std::vector<double> target = x;
+    Map_state state = map_state(x);
     for(int sweep = 0; sweep < 2; ++sweep) {
       for(int k : opt.rings) {
         if(stats.work > budget_) { stats.budget_spent = true; break; }
-        const std::vector<signed char> state = face_states(x);
         std::vector<int> targets;
-        for(std::size_t f = 0; f < state.size(); ++f)
-          if(state[f] == NON_POSITIVE || (sweep == 1 && state[f] == WOUND)) targets.push_back(int(f));
+        for(std::size_t f = 0; f < state.face.size(); ++f)
+          if(state.face[f] == NON_POSITIVE || (sweep == 1 && state.face[f] == WOUND)) targets.push_back(int(f));
         if(targets.empty()) break;
         stats.rings = (std::max)(stats.rings, k);
         Status s = attempt(rings_around(targets, k, nullptr), state, x, opt, stats, message);
@@ -136,39 +136,82 @@ public:
       }
     }
     std::vector<int> bad;
-    const std::vector<signed char> state = face_states(x);
-    for(std::size_t f = 0; f < state.size(); ++f) if(state[f] != GOOD) bad.push_back(int(f));
+    for(std::size_t f = 0; f < state.face.size(); ++f) if(state.face[f] != GOOD) bad.push_back(int(f));
     if(opt.polish) {
       Status s = polish(x, target, bad, opt, stats, message);
       if(s != SUCCESS) return s;
     }
     stats.not_positive = 0;
-    for(signed char c : face_states(x)) stats.not_positive += c == NON_POSITIVE ? 1 : 0;
+    for(signed char c : map_state(x).face) stats.not_positive += c == NON_POSITIVE ? 1 : 0;
     return SUCCESS;
   }
 
 private:
   enum Face_state : signed char { GOOD = 0, WOUND = 1, NON_POSITIVE = 2 };
 
-  // per face: NON_POSITIVE (det J <= 0 in floating point, as the energy sees it; excluded faces are GOOD),
-  // else WOUND if a corner's vertex is wound other than its valence in x, else GOOD
-  std::vector<signed char> face_states(const std::vector<double>& x) const
+  // a map's angle sums per vertex and per face its state: NON_POSITIVE (det J <= 0 in floating point, as the
+  // energy sees it; excluded faces are GOOD), else WOUND if a corner's vertex is wound other than its valence,
+  // else GOOD
+  struct Map_state
   {
-    const std::vector<int> turns = vertex_quarter_turns(cm_, st_, x);
-    std::vector<signed char> state(fc_.halfedge.size(), GOOD);
-    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) {
-      if(excluded_[f]) continue;
-      if(!(face_det(int(f), x) > 0)) { state[f] = NON_POSITIVE; continue; }
-      for(int h : fc_.halfedge[f]) {
-        const std::size_t v = std::size_t(cm_.target[h]);
-        if(turns[v] != valence_[v] && valence_[v] != 0) state[f] = WOUND;
-      }
+    std::vector<int> turns;
+    std::vector<signed char> face;
+  };
+
+  signed char face_state(std::size_t f, const std::vector<double>& x, const std::vector<int>& turns) const
+  {
+    if(excluded_[f]) return GOOD;
+    if(!(face_det(int(f), x) > 0)) return NON_POSITIVE;
+    for(int h : fc_.halfedge[f]) {
+      const std::size_t v = std::size_t(cm_.target[h]);
+      if(turns[v] != valence_[v] && valence_[v] != 0) return WOUND;
     }
-    return state;
+    return GOOD;
   }
 
-  // optimizes the regions from x (face states `before`) and keeps each region's result if it is better
-  Status attempt(const std::vector<std::vector<int> >& regions, const std::vector<signed char>& before, std::vector<double>& x,
+  Map_state map_state(const std::vector<double>& x) const
+  {
+    Map_state m;
+    m.turns = vertex_quarter_turns(cm_, st_, x);
+    m.face.resize(fc_.halfedge.size());
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) m.face[f] = face_state(f, x, m.turns);
+    return m;
+  }
+
+  // The state of the map y, which differs from the map of `base` at most in the sectors of the vertices `moved`
+  // (the same as map_state(y), computed only where it can differ): the angle sums of the vertices of the faces
+  // around the moved vertices, and the states of the faces around those.
+  Map_state updated_state(const Map_state& base, const std::vector<double>& y, const std::vector<int>& moved) const
+  {
+    Map_state m = base;
+    std::vector<char> seen(std::size_t(cm_.n_vertices), 0), done(fc_.halfedge.size(), 0);
+    std::vector<int> changed, corners;
+    auto faces_of = [&](int v) {
+      return std::make_pair(vertex_faces_.begin() + std::ptrdiff_t(vertex_faces_start_[std::size_t(v)]),
+                            vertex_faces_.begin() + std::ptrdiff_t(vertex_faces_start_[std::size_t(v) + 1]));
+    };
+    for(int v : moved)
+      for(auto r = faces_of(v); r.first != r.second; ++r.first)
+        for(int h : fc_.halfedge[std::size_t(*r.first)])
+          if(!seen[std::size_t(cm_.target[h])]) { seen[std::size_t(cm_.target[h])] = 1; changed.push_back(cm_.target[h]); }
+    for(int w : changed) {
+      corners.clear();
+      for(auto r = faces_of(w); r.first != r.second; ++r.first)
+        for(int h : fc_.halfedge[std::size_t(*r.first)]) if(cm_.target[h] == w) corners.push_back(h);
+      std::sort(corners.begin(), corners.end());
+      m.turns[std::size_t(w)] = vertex_quarter_turns_at(cm_, st_, y, w, corners);
+    }
+    for(int w : changed)
+      for(auto r = faces_of(w); r.first != r.second; ++r.first) {
+        const std::size_t f = std::size_t(*r.first);
+        if(!done[f]) { done[f] = 1; m.face[f] = face_state(f, y, m.turns); }
+      }
+    return m;
+  }
+
+  // optimizes the regions from x (state `before`) and keeps each region's result if it is better; `before`
+  // becomes the state of the new x
+  Status attempt(const std::vector<std::vector<int> >& regions, Map_state& before, std::vector<double>& x,
                  const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
   {
     Region_problem problem;
@@ -181,21 +224,27 @@ private:
     untangle(problem, opt, w, stats);
     problem.region_state(w, regions.size(), unused, det_after);
     std::vector<double> y = x;
-    for(std::size_t l = 0; l < problem.vars.size(); ++l) y[std::size_t(problem.vars[l])] += problem.displacement(l, w);
-    const std::vector<signed char> after = face_states(y);
+    std::vector<int> moved;
+    for(std::size_t l = 0; l < problem.vars.size(); ++l) {
+      y[std::size_t(problem.vars[l])] += problem.displacement(l, w);
+      moved.push_back(st_.sector_vertex(cm_, problem.vars[l] / 2));
+    }
+    const Map_state after = updated_state(before, y, moved);
     std::vector<long> fewer_non_positive(regions.size(), 0), fewer_wound(regions.size(), 0);
     for(const Region_problem::Face& e : problem.faces) {
       if(e.region < 0) continue;
       const std::size_t f = std::size_t(e.face), r = std::size_t(e.region);
-      fewer_non_positive[r] += long(before[f] == NON_POSITIVE) - long(after[f] == NON_POSITIVE);
-      fewer_wound[r] += long(before[f] == WOUND) - long(after[f] == WOUND);
+      fewer_non_positive[r] += long(before.face[f] == NON_POSITIVE) - long(after.face[f] == NON_POSITIVE);
+      fewer_wound[r] += long(before.face[f] == WOUND) - long(after.face[f] == WOUND);
     }
+    std::vector<int> kept;
     for(std::size_t l = 0; l < problem.vars.size(); ++l) {
       const std::size_t r = std::size_t(problem.var_region[l]);
       const bool better = fewer_non_positive[r] > 0 ||
                           (fewer_non_positive[r] == 0 && (fewer_wound[r] > 0 || (fewer_wound[r] == 0 && det_after[r] > det_before[r])));
-      if(better) x[std::size_t(problem.vars[l])] = y[std::size_t(problem.vars[l])];
+      if(better) { x[std::size_t(problem.vars[l])] = y[std::size_t(problem.vars[l])]; kept.push_back(moved[l]); }
     }
+    before = updated_state(before, x, kept);
     return SUCCESS;
   }
 

@@ -35,12 +35,28 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// the UVs in the map x (2 values per sector) of the corner h and of the next and previous corners of its face
+inline void corner_uvs(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x, int h,
+                       double q[2], double a[2], double b[2])
+{
+  auto uv = [&](int g, double p[2]) { const std::size_t s = std::size_t(st.sector_of[g]); p[0] = x[2 * s]; p[1] = x[2 * s + 1]; };
+  uv(h, q); uv(cm.next[h], a); uv(cm.prev[h], b);
+}
+
+// the signed floating-point angle at q from a to b
+inline double corner_uv_angle(const double q[2], const double a[2], const double b[2])
+{
+  const double ax = a[0] - q[0], ay = a[1] - q[1], bx = b[0] - q[0], by = b[1] - q[1];
+  return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+}
+
+inline int quarter_turns_of_angle(double angle) { return int(std::lround(angle / (std::acos(-1.) / 2))); }
+
 // per vertex, the angle sum of the map x (2 values per sector) in quarter turns; border and isolated vertices: 4
 inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
 {
   std::vector<int> turns(std::size_t(cm.n_vertices), 0);
   std::vector<char> exact(std::size_t(cm.n_vertices), 1), has_corner(std::size_t(cm.n_vertices), 0);
-  auto uv = [&](int h, double p[2]) { const std::size_t s = std::size_t(st.sector_of[h]); p[0] = x[2 * s]; p[1] = x[2 * s + 1]; };
   for(int pass = 0; pass < 2; ++pass) {       // pass 1: floating-point angles where the exact count is undetermined
     std::vector<double> angle(pass == 1 ? std::size_t(cm.n_vertices) : 0, 0.);
     for(int h = 0; h < cm.n_halfedges; ++h) {
@@ -48,12 +64,8 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
       const std::size_t v = std::size_t(cm.target[h]);
       if(pass == 1 && exact[v]) continue;
       double q[2], a[2], b[2];
-      uv(h, q); uv(cm.next[h], a); uv(cm.prev[h], b);
-      if(pass == 1) {
-        const double ax = a[0] - q[0], ay = a[1] - q[1], bx = b[0] - q[0], by = b[1] - q[1];
-        angle[v] += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
-        continue;
-      }
+      corner_uvs(cm, st, x, h, q, a, b);
+      if(pass == 1) { angle[v] += corner_uv_angle(q, a, b); continue; }
       has_corner[v] = 1;
       int c = 0;
       if(corner_quarter_crossings(q, a, b, c)) turns[v] += c;
@@ -61,7 +73,7 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
     }
     if(pass == 1)
       for(int v = 0; v < cm.n_vertices; ++v)
-        if(!exact[std::size_t(v)]) turns[std::size_t(v)] = int(std::lround(angle[std::size_t(v)] / (std::acos(-1.) / 2)));
+        if(!exact[std::size_t(v)]) turns[std::size_t(v)] = quarter_turns_of_angle(angle[std::size_t(v)]);
     if(std::find(exact.begin(), exact.end(), 0) == exact.end()) break;
   }
   for(int v = 0; v < cm.n_vertices; ++v)
@@ -69,10 +81,27 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
   return turns;
 }
 
-// per vertex its valence; border vertices: 4. `turns`: the input's angle sums, `input_positive`: per face,
-// whether it is positive in the input; a vertex whose triangles are all positive in the input keeps its input
-// angle sum (the field's valence there, even 1 or 7), the others get the member of their class nearest to 4
-// (see the header). `points`: 3D positions (3 per vertex) or empty
+// the same at one vertex v from all its corners `corners` in ascending order (the floating-point sum is then
+// the one vertex_quarter_turns() takes, bit for bit)
+inline int vertex_quarter_turns_at(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x, int v,
+                                   const std::vector<int>& corners)
+{
+  if(cm.vertex_on_border[std::size_t(v)] || corners.empty()) return 4;
+  int turns = 0;
+  double q[2], a[2], b[2];
+  for(int h : corners) {
+    corner_uvs(cm, st, x, h, q, a, b);
+    int c = 0;
+    if(!corner_quarter_crossings(q, a, b, c)) {
+      double angle = 0;
+      for(int g : corners) { corner_uvs(cm, st, x, g, q, a, b); angle += corner_uv_angle(q, a, b); }
+      return quarter_turns_of_angle(angle);
+    }
+    turns += c;
+  }
+  return turns;
+}
+
 inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& turns, const std::vector<char>& input_positive,
                                         const std::vector<double>& points, const std::vector<std::array<int, 3> >& face_halfedges)
 {
