@@ -37,7 +37,8 @@
 //    eps (a barrier: f grows like 1 / det J), lambda = 1e-3, over the moved vertices and 2 rings around
 //    them, by Newton steps whose line search never lets a positive face reach det J = 0 (Smith and
 //    Schaefer's flip-free step bound): every iterate stays fold-free, and the change shrinks to what
-//    keeps the faces positive with a margin (this follows the study in ../research/untangling_study.md).
+//    keeps the faces positive with a margin (this follows the study in ../research/untangling_study.md);
+//    until a step lowers the energy by less than a relative Untangle_options::polish_tolerance.
 // Faces far from the fold-overs keep their UVs bit for bit; the result is a floating-point map, never
 // claimed exact: the pipeline snaps it exactly and checks every triangle exactly afterwards.
 
@@ -78,6 +79,9 @@ struct Untangle_options
   int polish_rings = 2;
   double polish_lambda = 1e-3;
   int polish_iterations = 50;
+  double polish_tolerance = 1e-4;             // the polish stops at a relative energy decrease below this (against
+                                              // 1e-8: the same max / RMS change to 4 digits on the shared maps but
+                                              // fandisk's 0.1710 -> 0.1709 cells, untangling 10-20 % faster)
   double work_per_face = 400;                 // budget of the untangling (step 1): face evaluations (energy or
                                               // derivatives of one face) per face of the mesh; deterministic
 };
@@ -425,7 +429,7 @@ private:
       const double t = (std::min)(1., 0.8 * p.positive_step(w, d));
       double work = 0;
       if(!line_search(p, w, g, d, t, eps, weight, E, det_min, work)) break;
-      if(before - E <= 1e-8 * std::fabs(E)) break;
+      if(before - E <= opt.polish_tolerance * std::fabs(E)) break;
     }
     for(std::size_t l = 0; l < p.vars.size(); ++l) x[std::size_t(p.vars[l])] += p.displacement(l, w);
     return SUCCESS;
