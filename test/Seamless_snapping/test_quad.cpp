@@ -37,6 +37,8 @@
 //                               integer_grid_map(true): fold-free ones give a checked quad mesh (the horse also
 //                               at grid scale 2), the ones with fold-overs FOLD_OVERS listing the snap report's
 //                               flipped and zero-area faces
+//   quad: collapsed cone pairs  libQEx's fandisk and duck_miq_8 (IGM, untangled, fold-free): refused, the message
+//                               naming a cone pair the integer translations put onto one point, as the snap report does
 
 #include "mesh_test_support.h"
 
@@ -500,6 +502,34 @@ static void test_shared_data()
   assert(extracted >= 3);
 }
 
+// libQEx's fandisk and duck_miq_8 maps (over 1 MB, so not in test_shared_data()): their integer translations put
+// cone pairs onto one integer point, and the untangled IGM, fold-free, winds wrongly around them. The extraction
+// refuses it (nothing written) and names a collapsed pair that the snap report's winding defects name too.
+static void test_collapsed_cone_pairs()
+{
+  std::vector<fs::path> files;
+  if(!shared_obj_files_or_skip("quad: collapsed cone pairs", files)) return;
+  std::size_t refused = 0;
+  for(const fs::path& p : files) {
+    const std::string name = p.filename().string();
+    if(name != "fandisk_param.obj" && name != "duck_miq_8_param.obj") continue;
+    Mesh m;
+    if(!load_obj(p, m)) continue;
+    UV_map uv = uv_of(m);
+    const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(s.status == SS::SUCCESS && s.flips_after_repair + s.degenerate_after_repair == 0 && !s.winding_defects.empty());
+    const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::INVALID_INPUT, "onto one integer point (vertices ", name);
+    const std::size_t at = r.message.find("(vertices ") + 10;
+    const std::string pair = r.message.substr(at, r.message.find_first_of(",)", at) - at);   // "a and b"
+    bool named = false;
+    for(const SS::Winding_defect& d : s.winding_defects)
+      named = named || d.message.find("the cones at vertices " + pair + " nearby") != std::string::npos;
+    assert(named);
+    ++refused;
+  }
+  std::cout << "quad: collapsed cone pairs: " << refused << " maps refused with the pair named\n";
+}
+
 // The exact tests on doubles that the extractor's input check uses (exact_uv_check.h, integer_grid_constraints.h):
 // same_difference (x - y == z - w, by Dyadic_sum) and is_integer_sum ((a + b) 2^s an integer) against Gmpq, on
 // random doubles of every magnitude, on near misses (one ulp off) and on exact hits.
@@ -543,6 +573,7 @@ int main(int argc, char** argv)
   test_branch_points();
   if(!sanitizer_subset()) test_bear_orbifold();
   test_shared_data();
+  if(!sanitizer_subset()) test_collapsed_cone_pairs();
   std::cout << "test_quad: all passed\n";
   return 0;
 }

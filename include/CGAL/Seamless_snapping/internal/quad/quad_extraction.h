@@ -32,6 +32,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
+#include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
 
 #include <array>
 #include <chrono>
@@ -95,9 +96,36 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   return facts;
 }
 
+// The cone pairs within coincident_cone_rings face rings of vertex v that the map's integer translations put onto
+// one integer point (winding_defects.h), as a clause of a message, or "" if none. `edge_k`: the rotation of
+// halfedge(e) of every cut edge e (is_exact_integer_grid_map_impl()).
+inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::vector<int>& edge_k, int v)
+{
+  Seam_topology st;
+  std::string ignored;
+  if(compute_seam_topology(cm, {}, st, ignored) != SUCCESS) return std::string();
+  Cut_rotations rot;
+  rot.k.assign(std::size_t(cm.n_halfedges), 0);
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[std::size_t(e)];
+    rot.k[std::size_t(h)] = edge_k[std::size_t(e)];
+    rot.k[std::size_t(cm.opp[h])] = (4 - edge_k[std::size_t(e)]) % 4;
+  }
+  std::string clause;
+  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, Face_corners(cm), st.ubar, v, coincident_cone_rings))
+    clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(c.first) + " and " + std::to_string(c.second);
+  if(clause.empty()) return clause;
+  return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +
+         "): the translations fix both cones on that point, so no move of the UVs separates them, and the map winds "
+         "wrongly around them, where no quad mesh follows it; integer translations that keep the cones apart are needed "
+         "(libQEx merges such a pair into one regular vertex, which changes the field)";
+}
+
 // Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
-// a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice).
-inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, std::string& message)
+// a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice). Where
+// such a vertex lies next to a collapsed cone pair, the message says so.
+inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<int>& edge_k,
+                          std::string& message)
 {
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h], q = valence[std::size_t(v)];
@@ -107,7 +135,8 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns " +
               (q == 1 ? "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
                         "a corner twice; no quad mesh has it"
-                      : "but is not on an integer point: the map branches inside a cell");
+                      : "but is not on an integer point: the map branches inside a cell") +
+              collapsed_cone_pairs_near(cm, edge_k, v);
     return INVALID_INPUT;
   }
   return SUCCESS;
@@ -146,7 +175,7 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   r.input_boundary_loops = facts.boundary_loops;
   r.cones = facts.cones;
   r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
-  return check_cones(cm, facts.valence, r.message);
+  return check_cones(cm, facts.valence, edge_k, r.message);
 }
 
 // The 3D point of an integer point p: the combination of the vertices of its edge or face with the
