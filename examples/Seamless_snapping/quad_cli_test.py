@@ -3,8 +3,10 @@ Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here fro
 every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area); refusals with
 exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
-a grid scale that is not a power of two; command-line errors (exit 2).
-usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR"""
+a grid scale that is not a power of two; command-line errors (exit 2). With the shared data directory (optional
+SHARED_DATA argument, skipped where it does not exist): libQEx's fandisk map, whose integer translations put a cone
+pair onto one integer point, gives its quad mesh by default (the pair merged) and is refused with --keep-cone-pairs.
+usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR [SHARED_DATA]"""
 import json
 import os
 import shutil
@@ -14,6 +16,7 @@ import sys
 from fold_over_grid import write_fold_over_grid
 
 exe, parallelogram, square, work = sys.argv[1:5]
+shared = sys.argv[5] if len(sys.argv) > 5 else ""
 shutil.rmtree(work, ignore_errors=True)   # no file of an earlier run may pass a 'nothing written' check
 os.makedirs(work, exist_ok=True)
 checks, failures = [0], []
@@ -95,13 +98,30 @@ if rc == 0:
     check(sum(1 for p in lines if p and p[0] == "v") == 16 and sum(1 for p in lines if p and p[0] == "f") == 9,
           "untangled fold-over grid: 16 quad vertices, 9 quads written")
 
+# 2b. a collapsed cone pair (shared data only): merged by default, kept with --keep-cone-pairs (then refused)
+fandisk = os.path.join(shared, "libqex", "fandisk_param.obj")
+if shared and os.path.exists(fandisk):
+    out = os.path.join(work, "fandisk.obj")
+    rc, text = run(fandisk, out, "--report", report)
+    r = json.load(open(report))
+    check(rc == 0 and len(r["snap"]["merged_cone_pairs"]) > 0 and r["quad_mesh"]["status"] == "SUCCESS" and
+          r["quad_mesh"]["irregular_vertices"] == r["snap"]["field_cones"] and os.path.exists(out),
+          "fandisk: the cone pair merged, its quad mesh written: %d %s" % (rc, text))
+    out = os.path.join(work, "fandisk_kept.obj")
+    rc, text = run(fandisk, out, "--keep-cone-pairs", "--report", report)
+    r = json.load(open(report))
+    check(rc == 1 and "onto one integer point" in text and not os.path.exists(out) and r["snap"]["merged_cone_pairs"] == [],
+          "fandisk with --keep-cone-pairs: refused, nothing written: %d %s" % (rc, text))
+else:
+    print("quad_cli_test: fandisk: SKIPPED (no shared data directory '%s')" % shared)
+
 # 3. command-line errors and --help
 rc, text = run(parallelogram, os.path.join(work, "x.stl"))
 check(rc == 2 and ".obj, .off or .ply" in text, "unknown output format: %d %s" % (rc, text))
 rc, text = run(parallelogram)
 check(rc == 2, "missing OUT: %d" % rc)
 rc, text = run("--help")
-for opt in ["--weld", "--grid-scale", "--no-untangle", "--report", "--quiet", "--help"]:
+for opt in ["--weld", "--grid-scale", "--no-untangle", "--keep-cone-pairs", "--report", "--quiet", "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
 for f in failures:

@@ -1,6 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
-//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--report FILE.json] [--quiet]
+//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
+//                 [--report FILE.json] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -43,13 +44,16 @@ using SS::IO::internal::json_string;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
-  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--report FILE.json] [--quiet]\n";
+  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
+  "                     [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
   "integer-grid map (every seam translation an integer vector, every cone on an integer point; the\n"
   "package's snap with integer_grid_map(true), which first removes the map's fold-overs inside the\n"
-  "space of maps with the same exact constraints: untangle(true)), then extracts its quad mesh: the\n"
+  "space of maps with the same exact constraints: untangle(true), and merges the +-90 degree cone pairs\n"
+  "that the map's integer translations put onto one integer point: merge_cone_pairs(true)), then\n"
+  "extracts its quad mesh: the\n"
   "vertices are the integer points of the map, the edges the unit segments of its integer isolines,\n"
   "the faces its unit cells, all decided exactly. The result is verified before it is written: every\n"
   "face a quad, manifold, closed if the input is, Euler characteristic and number of quads (= the exact\n"
@@ -68,6 +72,10 @@ static const char* help_text =
   "                       finer quads (S^2 times as many)\n"
   "  --no-untangle        snap the map as it is, without removing its fold-overs (then refused if it\n"
   "                       has any)\n"
+  "  --keep-cone-pairs    keep every cone of the map's field: a valence-3 and a valence-5 cone that the\n"
+  "                       map's integer translations put onto one integer point are not merged into\n"
+  "                       regular vertices (the map then folds around them and is refused; libQEx\n"
+  "                       merges such pairs too). The snap report lists the merged pairs\n"
   "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
@@ -106,7 +114,7 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
   std::string in, out, report_file;
-  bool weld = false, quiet = false, untangle = true;
+  bool weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -114,6 +122,7 @@ int main(int argc, char** argv)
     else if(a == "--weld") weld = true;
     else if(a == "--quiet") quiet = true;
     else if(a == "--no-untangle") untangle = false;
+    else if(a == "--keep-cone-pairs") merge = false;
     else if(a == "--grid-scale") {
       char* end = nullptr;
       if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
@@ -145,7 +154,7 @@ int main(int argc, char** argv)
   if(!quiet) std::cout << message << "\n";
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)
-  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle).grid_scale(grid_scale));
+  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle).merge_cone_pairs(merge).grid_scale(grid_scale));
   if(!quiet)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
                 "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,

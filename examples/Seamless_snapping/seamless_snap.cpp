@@ -3,7 +3,7 @@
 //   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
 //                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
-//                 [--untangle | --no-untangle] [--max-untangle-change C] [--quiet]
+//                 [--untangle | --no-untangle] [--max-untangle-change C] [--merge-cone-pairs] [--quiet]
 //   seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
@@ -56,7 +56,7 @@ static const char* usage_text =
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
   "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
-  "                     [--max-untangle-change C] [--quiet]\n"
+  "                     [--max-untangle-change C] [--merge-cone-pairs] [--quiet]\n"
   "       seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]\n";
 
 static const char* help_text =
@@ -125,6 +125,11 @@ static const char* help_text =
   "  --no-untangle        keep the input's fold-overs (the default without --integer-grid)\n"
   "  --max-untangle-change C  do not use an untangled map that moves a UV by more than C grid cells\n"
   "                       (then the snapped input is written, with its fold-overs reported)\n"
+  "  --merge-cone-pairs   with --integer-grid: a 90 and a -90 degree cone that the rounded translations put\n"
+  "                       onto one integer point (no locally injective map has them) become regular points\n"
+  "                       of the field: the rotations and translations of the cut edges between them change\n"
+  "                       (where that cut runs within one grid cell of the point), as libQEx merges them.\n"
+  "                       The report lists the pairs ('merged_cone_pairs'); seamless_quad does it by default\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --outdir DIR         several inputs: each IN.obj is snapped (with the same options) into DIR/IN.obj, its\n"
   "                       JSON report into DIR/IN.json (names by file stem: inputs must not share one), then a\n"
@@ -284,7 +289,7 @@ struct Options
 {
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
   bool align_boundary = true, reduced = true, quiet = false;
-  bool integer_grid = false;
+  bool integer_grid = false, merge_cone_pairs = false;
   int untangle = -1;                 // -1: the default (with --integer-grid)
   double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
@@ -372,7 +377,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
     return fail("cannot read input: " + message);
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)
-                     .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change);
+                     .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change)
+                     .merge_cone_pairs(o.merge_cone_pairs);
   t = Clock::now();
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
@@ -522,6 +528,7 @@ int main(int argc, char** argv)
     else if(a == "--integer-grid") integer_grid = true;
     else if(a == "--untangle") untangle = untangle == 0 ? 2 : 1;
     else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
+    else if(a == "--merge-cone-pairs") o.merge_cone_pairs = true;
     else if(a == "--max-untangle-change") {
       char* end = nullptr;
       if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
@@ -597,6 +604,10 @@ int main(int argc, char** argv)
   }
   if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
   if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
+  if(o.merge_cone_pairs && !integer_grid) {
+    std::cerr << "seamless_snap: --merge-cone-pairs needs --integer-grid (cones are merged on integer points)\n" << usage_text;
+    return 2;
+  }
 
   if(outdir.empty()) return snap_file(o, in, out, has_report ? report_file : std::string(), nullptr);
   // --outdir: each input to OUTDIR/NAME.obj with its report OUTDIR/NAME.json, then the summary table

@@ -94,7 +94,8 @@ def write_obj(path, V, F, UV, FUV):
 
 def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
          rotation_tolerance=1.0, alignment_tolerance=1e-3, minimal_change=True, integer_grid_map=False,
-         grid_scale=1.0, untangle=None, max_untangle_change=float("inf"), raise_on_failure=True):
+         grid_scale=1.0, untangle=None, max_untangle_change=float("inf"), merge_cone_pairs=False,
+         raise_on_failure=True):
     """Snap the per-corner UV map (UV, FUV) of the triangle mesh (V, F) to an exactly seamless one.
 
     Returns (UV_out, FUV_out, report): FUV_out equals FUV and UV_out equals UV except for the moved rows
@@ -107,14 +108,16 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     exactly); the default (None) is `integer_grid_map`. What cannot be untangled is listed with its reason in
     report["folds"] (per face, "forced": proven by the constraints) and report["winding_defects"] (vertices whose
     UV angle sum is not their valence); an untangled map that moves a UV by more than `max_untangle_change` grid
-    cells is not used (report["untangle_refused"]).
+    cells is not used (report["untangle_refused"]). `merge_cone_pairs=True` (with `integer_grid_map`) makes each
+    pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point regular points of
+    the field (report["merged_cone_pairs"]), as libQEx merges them; without it such maps keep winding defects.
     """
     if untangle is None:
         untangle = integer_grid_map
     uv, fuv, text = _core.snap(*_mesh_arrays(V, F, UV, FUV), weld, repair_flips, align_boundary,
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
                                bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
-                               float(max_untangle_change))
+                               float(max_untangle_change), bool(merge_cone_pairs))
     report = json.loads(text)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

@@ -632,3 +632,23 @@ def test_extract_quad_mesh_shared_data(name, weld):
     # welded: the rows of V with one position are one vertex; compare positions, not rows
     check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
     assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]
+
+
+def test_extract_quad_mesh_merged_cone_pairs():
+    # libQEx's fandisk map puts a 90 and a -90 degree cone onto one integer point: without merging, its untangled
+    # IGM winds wrongly there and is refused; merge_cone_pairs=True makes the pair regular and the quads follow
+    path = os.path.join(SHARED, "libqex/fandisk_param.obj")
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = ss.read_obj(path)
+    UV1, FUV1, kept = ss.snap(V, F, UV, FUV, integer_grid_map=True)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV1, FUV1, raise_on_failure=False)
+    assert QV is None and r["status"] == "INVALID_INPUT" and "onto one integer point" in r["message"]
+    assert kept["merged_cone_pairs"] == []
+    UV2, FUV2, merged = ss.snap(V, F, UV, FUV, integer_grid_map=True, merge_cone_pairs=True)
+    assert len(merged["merged_cone_pairs"]) > 0 and merged["winding_defects"] == []
+    assert merged["field_cones"] + 2 * len(merged["merged_cone_pairs"]) == kept["field_cones"]
+    assert ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2)
+    check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
+    assert r["euler_characteristic"] == 2 and r["irregular_vertices"] == merged["field_cones"]

@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -147,6 +148,9 @@ struct Snap_report
   bool near_integer_grid_map = false;         ///< the input's translations and field cones are all within 1e-6 of integers (it looks like an IGM)
   std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
   std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
+  std::vector<std::pair<std::size_t, std::size_t> > merged_cone_pairs; ///< `merge_cone_pairs`: the +-90 degree cone pairs (vertex indices) that the rounded translations put onto one integer point, made regular points of the field; not counted in `field_cones`
+  std::size_t merged_cut_edges = 0;            ///< `merge_cone_pairs`: cut edges whose rotation k (and translation) changed to merge them
+  std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
@@ -225,6 +229,11 @@ struct Snap_report
     num("cones_on_integer_points_after", double(cones_on_integer_points_after));
     o << "  \"near_integer_grid_map\": " << (near_integer_grid_map ? "true" : "false") << ",\n";
     num("pinned_cones", double(pinned_cones)); num("not_field_cones", double(not_field_cones.size()));
+    o << "  \"merged_cone_pairs\": [";
+    for(std::size_t i = 0; i < merged_cone_pairs.size(); ++i)
+      o << (i ? ", " : "") << "[" << merged_cone_pairs[i].first << ", " << merged_cone_pairs[i].second << "]";
+    o << "],\n";
+    num("merged_cut_edges", double(merged_cut_edges)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));
     o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";
     o << "  \"untangled\": " << (untangled ? "true" : "false") << ",\n";

@@ -276,6 +276,23 @@ namespace Seamless_snapping {
  *     \cgalParamDefault{no bound}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_untangle_change()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{merge_cone_pairs}
+ *     \cgalParamDescription{with `integer_grid_map`: a +90 and a -90 degree cone (valence 3 and 5) that the rounded
+ *                           translations put onto one integer point, joined by a path of edges whose vertices all lie within
+ *                           one grid cell of that point (cut edges where possible, else edges that become cut edges), become
+ *                           regular points of the field: the rotation k of every edge of that path changes by the same
+ *                           quarter turns and its integer translation so that the transition still maps the point onto
+ *                           itself (beyond the paper; libQEx merges such pairs into one regular quad vertex). No locally injective map keeps both cones on one point, so without
+ *                           it the untangled map winds wrongly there and `extract_quad_mesh()` refuses it. The pairs are
+ *                           listed in `Snap_report::merged_cone_pairs`, not counted in `Snap_report::field_cones`; the
+ *                           result is an exact integer-grid map of the changed field (the caller's rotations change on
+ *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new).}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false` (the caller's field is kept); the `seamless_quad` program turns it on
+ *                       (`--keep-cone-pairs` turns it off)}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::merge_cone_pairs()`; implemented in
+ *                     `internal/surface/cone_merging.h`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_point_map}
  *     \cgalParamDescription{the 3D positions of the vertices, for the reference shapes of the untangling (triangles flipped
  *                           or thin in the input and those around wrongly wound vertices take their 3D shape, scaled to the

@@ -112,13 +112,15 @@ inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::v
     rot.k[std::size_t(cm.opp[h])] = (4 - edge_k[std::size_t(e)]) % 4;
   }
   std::string clause;
-  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, Face_corners(cm), st.ubar, v, coincident_cone_rings))
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, Face_corners(cm), st.ubar, v, coincident_cone_rings))
     clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(c.first) + " and " + std::to_string(c.second);
   if(clause.empty()) return clause;
   return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +
          "): the translations fix both cones on that point, so no move of the UVs separates them, and the map winds "
-         "wrongly around them, where no quad mesh follows it; integer translations that keep the cones apart are needed "
-         "(libQEx merges such a pair into one regular vertex, which changes the field)";
+         "wrongly around them, where no quad mesh follows it; snap with merge_cone_pairs(true) (seamless_quad's default), "
+         "which makes such a pair regular points of the field where the cut between them runs within one grid cell of "
+         "that point (libQEx merges such pairs too), or choose integer translations that keep the cones apart";
 }
 
 // Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;

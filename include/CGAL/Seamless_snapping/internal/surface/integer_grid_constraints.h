@@ -190,19 +190,22 @@ inline std::string point_name(double a, double b)
   return "(" + format_double(a, 17) + ", " + format_double(b, 17) + ")";
 }
 
-// Rounds, checks (see the header comment) and appends the integer-grid rows to `rows`.
-// `ubar`: the input sector values in grid units; the right-hand sides are the rounded integers times
-// 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
-// grid when corners are pinned, pinned_corners.h). On failure nothing is appended.
-inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const Align_edges& al, const std::vector<double>& ubar, int rhs_shift,
-                                    double tolerance, Constraint_rows& rows,
-                                    Integer_grid_rows_result& result, std::string& message)
+// t(opposite(h)) = -R^{-k} t(h), with k(opposite(h)) = -k(h)
+inline void set_opposite_translation(const Corner_mesh& cm, const Cut_rotations& rot, int h, std::vector<long>& t)
 {
-  result = Integer_grid_rows_result();
+  const int o = cm.opp[h];
+  const Quarter_turn Ri(-rot.k[h]);
+  for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
+}
 
-  // rounded translation per halfedge (cut edges), at the source of the halfedge
-  std::vector<long> t(2 * std::size_t(cm.n_halfedges), 0);
+// The translation of every cut edge rounded to an integer vector, per halfedge (2 per halfedge, at its source;
+// 0 on the other edges): t(h) maps the chart of face(h) to that of face(opposite(h)), p -> R^k(h) p + t(h).
+// INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end.
+inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                 const std::vector<double>& ubar, double tolerance, std::vector<long>& t,
+                                 std::string& message)
+{
+  t.assign(2 * std::size_t(cm.n_halfedges), 0);
   std::size_t far = 0;
   std::string first_far;
   for(int e : st.cut_edges) {
@@ -221,10 +224,7 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + point_name(ta[0], ta[1]);
       continue;
     }
-    // the opposite halfedge: t(o) = -R^{-k} t(h), k(o) = -k(h)
-    const int o = cm.opp[h];
-    const Quarter_turn Ri(-rot.k[h]);
-    for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
+    set_opposite_translation(cm, rot, h, t);
   }
   if(far > 0) {
     message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
@@ -233,6 +233,73 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
               "(grid_scale / --grid-scale, a power of two), or snap without integer_grid_map (--integer-grid)";
     return INVALID_INPUT;
   }
+  return SUCCESS;
+}
+
+// Every interior vertex's first interior corner (a halfedge with the vertex as target), -1 for the others
+inline std::vector<int> first_corners(const Corner_mesh& cm)
+{
+  std::vector<int> corner_of(cm.n_vertices, -1);
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && corner_of[cm.target[h]] < 0) corner_of[cm.target[h]] = h;
+  return corner_of;
+}
+
+// The transitions (rotations k, integer translations t) composed once around the target of corner g0, starting
+// in the chart of face(g0): p -> R^K p + T, K in 0..3
+inline void compose_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                           const std::vector<long>& t, int g0, int& K, long T[2])
+{
+  K = 0; T[0] = 0; T[1] = 0;
+  int g = g0;
+  do {
+    const int crossed = cm.next[g];          // source(crossed) = target(g0)
+    if(st.is_cut[cm.edge[crossed]]) {
+      const Quarter_turn R(rot.k[crossed]);
+      const long T0 = R.sign[0] * T[R.col[0]] + t[2 * crossed], T1 = R.sign[1] * T[R.col[1]] + t[2 * crossed + 1];
+      T[0] = T0; T[1] = T1;
+      K += rot.k[crossed];
+    }
+    g = cm.opp[crossed];
+  } while(g != g0);
+  K = ((K % 4) + 4) % 4;
+}
+
+// 2p for the fixed point p of q -> R^K q + T, K = 1, 2, 3: (I - R^K) p = T gives p = T/2 (K = 2),
+// ((T0 - T1)/2, (T0 + T1)/2) (K = 1), ((T0 + T1)/2, (T1 - T0)/2) (K = 3)
+inline void fixed_point_times_2(int K, const long T[2], long num[2])
+{
+  if(K == 2) { num[0] = T[0]; num[1] = T[1]; }
+  else if(K == 1) { num[0] = T[0] - T[1]; num[1] = T[0] + T[1]; }
+  else { num[0] = T[0] + T[1]; num[1] = T[1] - T[0]; }
+}
+
+// true iff target(g) is a cone of the field (the transitions around it rotate) whose fixed point p is an integer
+// point; p in the chart of face(g)
+inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                               const std::vector<long>& t, int g, long p[2])
+{
+  int K;
+  long T[2], num[2];
+  compose_around(cm, st, rot, t, g, K, T);
+  if(K == 0) return false;
+  fixed_point_times_2(K, T, num);
+  if(num[0] % 2 != 0 || num[1] % 2 != 0) return false;
+  p[0] = num[0] / 2; p[1] = num[1] / 2;
+  return true;
+}
+
+// Checks the rounded translations `t` (round_translations(), possibly changed by cone_merging.h) around every
+// vertex (see the header comment) and appends the integer-grid rows to `rows`.
+// `ubar`: the input sector values in grid units; the right-hand sides are the integers times
+// 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
+// grid when corners are pinned, pinned_corners.h). On failure nothing is appended.
+inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                    const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
+                                    int rhs_shift, double tolerance, Constraint_rows& rows,
+                                    Integer_grid_rows_result& result, std::string& message)
+{
+  result = Integer_grid_rows_result();
   std::vector<long> isoline(cm.n_edges, 0);
   for(int e : al.edges) {
     const int g = al.halfedge[e], c = al.component[e];
@@ -248,30 +315,17 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
   }
 
   // the rotations and rounded translations composed around every interior vertex with cut edges
-  std::vector<int> corner_of(cm.n_vertices, -1);
-  for(int h = 0; h < cm.n_halfedges; ++h)
-    if(!cm.is_border_halfedge(h) && corner_of[cm.target[h]] < 0) corner_of[cm.target[h]] = h;
+  const std::vector<int> corner_of = first_corners(cm);
   for(int v = 0; v < cm.n_vertices; ++v) {
     if(cm.vertex_on_border[v] || corner_of[v] < 0) continue;
     if(st.cut_degree[v] == 0) {           // no transition around it: not a cone of the field
       if(st.is_cone[v]) result.not_field_cones.push_back(v);
       continue;
     }
-    int K = 0;
-    long T[2] = {0, 0};
+    int K;
+    long T[2];
     const int g0 = corner_of[v];
-    int g = g0;
-    do {
-      const int crossed = cm.next[g];          // source(crossed) = v
-      if(st.is_cut[cm.edge[crossed]]) {
-        const Quarter_turn R(rot.k[crossed]);
-        const long T0 = R.sign[0] * T[R.col[0]] + t[2 * crossed], T1 = R.sign[1] * T[R.col[1]] + t[2 * crossed + 1];
-        T[0] = T0; T[1] = T1;
-        K += rot.k[crossed];
-      }
-      g = cm.opp[crossed];
-    } while(g != g0);
-    K = ((K % 4) + 4) % 4;
+    compose_around(cm, st, rot, t, g0, K, T);
     if(K == 0) {
       if(T[0] != 0 || T[1] != 0) {
         message = "the rounded translations around vertex " + std::to_string(v) + " contradict each other: composed once " +
@@ -282,11 +336,8 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       if(st.is_cone[v]) result.not_field_cones.push_back(v);
       continue;
     }
-    // (I - R^K) p = T: p = T/2 (K = 2), ((T0 - T1)/2, (T0 + T1)/2) (K = 1), ((T0 + T1)/2, (T1 - T0)/2) (K = 3)
     long num[2];
-    if(K == 2) { num[0] = T[0]; num[1] = T[1]; }
-    else if(K == 1) { num[0] = T[0] - T[1]; num[1] = T[0] + T[1]; }
-    else { num[0] = T[0] + T[1]; num[1] = T[1] - T[0]; }
+    fixed_point_times_2(K, T, num);
     if(num[0] % 2 != 0 || num[1] % 2 != 0) {
       message = "cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * K) + " degrees): the rounded " +
                 "transitions around it have the fixed point " + point_name(num[0] / 2., num[1] / 2.) + " (frame of face " +

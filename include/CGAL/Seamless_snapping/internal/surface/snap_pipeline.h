@@ -38,6 +38,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/connection_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
@@ -90,6 +91,7 @@ struct Snap_options
   std::vector<int> pinned_corners;     // halfedges (pipeline numbering) whose corner UV is kept bit-identical (pinned_corners.h)
   bool untangle = false;               // step 4b: remove fold-overs inside the constraint space (default: integer_grid_map)
   double max_untangle_change = HUGE_VAL;   // grid cells: an untangled map that moves a UV further is not used
+  bool merge_cone_pairs = false;       // integer-grid mode: merge +-90 degree cone pairs rounded onto one point (cone_merging.h)
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -195,6 +197,7 @@ struct Snap_state
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   std::vector<double> points;            // per vertex its 3D position (x, y, z), for step 4b (empty without untangling)
+  std::vector<char> merged_cones;        // per vertex: a cone of a merged cone pair (Snap_options::merge_cone_pairs), now regular
   std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for steps 4b, 5 and 5b
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
@@ -272,18 +275,33 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
   }
   s = compute_seam_topology(cm, seam_override, S.st, message);
   if(s != SUCCESS) return s;
-  collect_pinned_sectors(cm, S.st, opt.pinned_corners, S.pins);
-  report.cut_edges = S.st.cut_edges.size();
-  report.sectors = std::size_t(S.st.n_sectors);
-  report.uv_diagonal = cm.to_uv(S.st.uv_diagonal);
-  for(char c : S.st.is_cone) report.cones += c ? 1 : 0;
-
   if(has_rotations) {
     given_k.assign(cm.n_edges, 0);
     for(int e : S.st.cut_edges) given_k[e] = int(rotation_of(S.desc.halfedges[cm.edge_halfedge[e]]));
   }
   s = fit_rotations(cm, S.st, given_k, opt.rotation_tolerance, S.rot, message);
   if(s != SUCCESS) return s;
+  if(opt.integer_grid_map && opt.merge_cone_pairs) {
+    // cone pairs on one integer point that no cut path near the point joins: a path through the mesh near it
+    // becomes cut edges (rotation 0, continuous UVs), along which build_constraints() merges them
+    const std::vector<int> added = cut_edges_to_add(cm, S.st, S.rot, in_grid_units(S, S.st.ubar),
+                                                    opt.integer_grid_tolerance, default_merge_cone_reach);
+    if(!added.empty()) {
+      seam_override.assign(cm.n_edges, 0);
+      given_k.assign(cm.n_edges, 0);
+      for(int e : S.st.cut_edges) { seam_override[e] = 1; given_k[e] = S.rot.k[cm.edge_halfedge[e]]; }
+      for(int e : added) seam_override[e] = 1;
+      s = compute_seam_topology(cm, seam_override, S.st, message);
+      if(s == SUCCESS) s = fit_rotations(cm, S.st, given_k, opt.rotation_tolerance, S.rot, message);
+      if(s != SUCCESS) return s;
+      report.added_cut_edges = added.size();
+    }
+  }
+  collect_pinned_sectors(cm, S.st, opt.pinned_corners, S.pins);
+  report.cut_edges = S.st.cut_edges.size();
+  report.sectors = std::size_t(S.st.n_sectors);
+  report.uv_diagonal = cm.to_uv(S.st.uv_diagonal);
+  for(char c : S.st.is_cone) report.cones += c ? 1 : 0;
   s = find_align_edges(cm, S.st, opt.align_boundary, opt.alignment_tolerance, constrained, S.al, message);
   if(s != SUCCESS) return s;
   report.align_edges = S.al.edges.size();
@@ -294,20 +312,34 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
 template <class TriangleMesh>
 Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
-  build_full_system(S.cm, S.st, S.rot, S.al, S.full);
-  S.first_connection_row = S.full.size();
-  Status s = add_connection_rows(S.cm, S.st, S.rot, opt.connections, S.full, S.path_endpoints, message);
-  if(s != SUCCESS) return s;
-  mark_pinned_nodes(S.cm, S.st, S.pins, S.path_endpoints);
   const std::vector<double> ubar_grid = in_grid_units(S, S.st.ubar);
   const Integer_grid_counts before = count_integer_structure(S.cm, S.st, S.rot, ubar_grid);
   report.integer_translations_before = before.integer_translations;
   report.field_cones = before.field_cones;
   report.cones_on_integer_points_before = before.cones_on_integer_points;
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
+  std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging)
+  std::vector<char>& merged = S.merged_cones;
+  merged.assign(S.cm.n_vertices, 0);
+  if(opt.integer_grid_map) {
+    if(round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message) != SUCCESS)
+      return INVALID_INPUT;
+    if(opt.merge_cone_pairs)
+      for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
+        report.merged_cone_pairs.emplace_back(std::size_t(m.a), std::size_t(m.b));
+        report.merged_cut_edges += m.path.size();
+        merged[m.a] = merged[m.b] = 1;
+        report.field_cones -= 2;
+      }
+  }
+  build_full_system(S.cm, S.st, S.rot, S.al, S.full);
+  S.first_connection_row = S.full.size();
+  Status s = add_connection_rows(S.cm, S.st, S.rot, opt.connections, S.full, S.path_endpoints, message);
+  if(s != SUCCESS) return s;
+  mark_pinned_nodes(S.cm, S.st, S.pins, S.path_endpoints);
   if(opt.integer_grid_map) {
     Integer_grid_rows_result igm;
-    s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, -(S.cm.uv_exponent + S.grid_exponent),
+    s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, translations, -(S.cm.uv_exponent + S.grid_exponent),
                               opt.integer_grid_tolerance, S.full, igm, message);
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
@@ -316,7 +348,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       return INFEASIBLE;
     }
     report.pinned_cones = igm.cones.size();
-    report.not_field_cones.assign(igm.not_field_cones.begin(), igm.not_field_cones.end());
+    for(int v : igm.not_field_cones) if(!merged[v]) report.not_field_cones.push_back(std::size_t(v));
   }
   s = add_pinned_rows(S.cm, S.pins, S.full, message);
   if(s != SUCCESS) return s;
@@ -546,6 +578,16 @@ std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
   return positive;
 }
 
+// per vertex: the angle sum in quarter turns a locally injective map has there (vertex_windings.h); 4 at the
+// cones of merged pairs, which the merge made regular points of the field
+template <class TriangleMesh>
+std::vector<int> target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
+{
+  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
+  for(std::size_t v = 0; v < S.merged_cones.size(); ++v) if(S.merged_cones[v]) valence[v] = 4;
+  return valence;
+}
+
 // the faces whose UV triangle in `x` is not positively oriented (exact test)
 template <class TriangleMesh>
 std::vector<int> non_positive_faces(const Snap_state<TriangleMesh>& S, const std::vector<double>& x)
@@ -574,7 +616,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   report.snap_rms_change = snap.rms;
   if(!opt.untangle) return SUCCESS;
   const Face_corners fc(S.cm);
-  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
+  std::vector<int> valence = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
   std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
   for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
@@ -683,8 +725,9 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> faces = non_positive_faces(S, S.x);
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
-  const std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
+  const std::vector<int> valence = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
+  const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
   for(int v = 0; v < S.cm.n_vertices; ++v) {
     if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
     Winding_defect d;
@@ -694,7 +737,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
                 " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
     if(opt.integer_grid_map)
-      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, fc, S.x, v, coincident_cone_rings))
+      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings))
         d.message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
                      " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
     report.winding_defects.push_back(d);
@@ -794,6 +837,14 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
                std::to_string(report.cut_edges) + " cut edges with integer translations, " +
                std::to_string(report.cones_on_integer_points_after) + " of " + std::to_string(report.field_cones) +
                " cones on integer points";
+    if(!report.merged_cone_pairs.empty()) {
+      summary += "; " + std::to_string(report.merged_cone_pairs.size()) + " cone pair(s) that the rounded translations put " +
+                 "onto one integer point merged into regular points of the field (" + std::to_string(report.merged_cut_edges) +
+                 " cut edges with a new rotation, " + std::to_string(report.added_cut_edges) + " of them new):";
+      for(std::size_t i = 0; i < report.merged_cone_pairs.size() && i < 10; ++i)
+        summary += " " + std::to_string(report.merged_cone_pairs[i].first) + "+" + std::to_string(report.merged_cone_pairs[i].second);
+      if(report.merged_cone_pairs.size() > 10) summary += " ...";
+    }
     if(!report.not_field_cones.empty()) {
       summary += "; not pinned: " + std::to_string(report.not_field_cones.size()) + " vertices whose UV angle sum is not " +
                  "2 pi but whose rotations compose to the identity (fold-overs next to them, not cones of the field):";

@@ -20,6 +20,7 @@
 
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
@@ -51,10 +52,12 @@ struct Chart_map
 };
 
 // The cone pairs that one of the `rings` face rings around vertex v maps onto one UV point, in the chart of
-// a face of v (transitions composed along the faces reached first, breadth first).
+// a face of v (transitions composed along the faces reached first, breadth first). The cones are those of the
+// field: K[w] > 0 (field_rotation_sums()).
 inline std::vector<std::pair<int, int> > coincident_cones_near(const Corner_mesh& cm, const Seam_topology& st,
-                                                               const Cut_rotations& rot, const Face_corners& fc,
-                                                               const std::vector<double>& x, int v, int rings)
+                                                               const Cut_rotations& rot, const std::vector<int>& K,
+                                                               const Face_corners& fc, const std::vector<double>& x,
+                                                               int v, int rings)
 {
   std::vector<int> start;
   for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
@@ -73,7 +76,7 @@ inline std::vector<std::pair<int, int> > coincident_cones_near(const Corner_mesh
       const Chart_map& M = to_start[f];
       for(int h : fc.halfedge[std::size_t(f)]) {
         const int w = cm.target[h];
-        if(st.is_cone[std::size_t(w)]) {
+        if(K[std::size_t(w)] > 0) {
           double p[2], q[2];
           uv(h, p);
           M.apply(p, q);
@@ -114,8 +117,9 @@ inline std::vector<int> vertices_near_collapsed_cones(const Corner_mesh& cm, con
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   std::vector<char> near(std::size_t(cm.n_vertices), 0);
   std::vector<int> front;
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
   for(int v : seeds)
-    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, fc, x, v, coincident_cone_rings))
+    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, x, v, coincident_cone_rings))
       for(int w : {c.first, c.second})
         if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; front.push_back(w); }
   std::vector<int> out = front;

@@ -1,0 +1,201 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONE_MERGING_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONE_MERGING_H
+
+// Integer-grid mode, beyond the paper: merging collapsed cone pairs (Snap_options::merge_cone_pairs).
+//
+// Integer-grid-map solvers sometimes round a +90 and a -90 degree cone (valence 3 and 5) onto one integer point:
+// the rounded translations fix both cones there, the map between them collapses, and no locally injective map
+// with these transitions exists (the geodesic between the cones would have length 0), so the untangling cannot
+// remove the fold-overs around them and no quad mesh follows the map (quad_extraction.h names such pairs).
+// libQEx contracts the pair into one regular quad vertex. Here the field itself is changed, exactly and as
+// little as possible: along the shortest path of cut edges from cone A to cone B on which every vertex lies
+// within `merge_cone_reach` grid cells of the common integer point p, the rotation of every cut edge changes by
+// dk = -K_A (quarter turns, oriented from A to B) and its integer translation so that the transition still maps
+// p to p:
+//   k' = k + dk,   t' = t + (R^k - R^k') p_i     (p_i: p in the chart of the face on the left of the path)
+// Around A the rotations then sum to K_A + dk = 0, around B to K_B - dk = K_A + K_B = 0 (a dipole), around the
+// path's other vertices the changes cancel; every composition around a vertex of the path fixes p and has no
+// rotation, so it is the identity, as add_integer_grid_rows() checks exactly. A and B are then regular points
+// of the field (4 quarter turns), the snap's rows hold the new transitions, and the untangling makes the map
+// around them locally injective. Only pairs with K_A + K_B = 0 mod 4 are merged, each cone at most once; a path
+// may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
+// one through the mesh: cut_edges_to_add() finds its edges, the snap makes them cut edges (rotation 0, the input's
+// UVs continuous there) before its rows are built, and the merge then runs along them.
+
+#include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
+#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// default of Snap_options::merge_cone_reach: how far (grid cells, Euclidean) from the cones' common integer point
+// the cut path between them may run
+constexpr double default_merge_cone_reach = 1.0;
+
+struct Cone_merge
+{
+  int a = -1, b = -1;                 // the cones (vertices), a < b not implied: a is where the path starts
+  std::vector<int> path;              // its halfedges, from a to b
+};
+
+// p -> R^k p + t on an integer point
+inline void apply_transition(int k, const long* t, long p[2])
+{
+  const Quarter_turn R(k);
+  const long q0 = R.sign[0] * p[R.col[0]] + t[0], q1 = R.sign[1] * p[R.col[1]] + t[1];
+  p[0] = q0; p[1] = q1;
+}
+
+// The integer point p given in the chart of face(h_in) (h_in: target v), carried around v on the side of face(h_in)
+// to the chart of face(h_out) (h_out: source v) through the transitions of the cut edges in between
+inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                         const std::vector<long>& t, int h_in, int h_out, long p[2])
+{
+  for(int g = h_in; cm.next[g] != h_out; g = cm.opp[cm.next[g]]) {
+    const int crossed = cm.next[g];
+    if(st.is_cut[cm.edge[crossed]]) apply_transition(rot.k[crossed], &t[2 * std::size_t(crossed)], p);
+  }
+}
+
+// The shortest path of cut edges (of any edges: cut_edges_only = false) from field cone a to a field cone b with
+// K[a] + K[b] = 0 mod 4 that the rounded transitions carry onto a's integer point, every vertex of it within `reach`
+// of that point; empty if none. Other cones on the point may lie on the path (the changes then keep their rotation
+// about that point); cones elsewhere may not.
+inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                    const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
+                                    const std::vector<char>& taken, int a, double reach, bool cut_edges_only)
+{
+  struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
+  std::vector<State> states;
+  std::vector<char> seen(std::size_t(cm.n_vertices), 0);
+  seen[std::size_t(a)] = 1;
+  // every cut halfedge leaving target(g_in) (except the one back along g_in), with a's point p carried from the
+  // chart of face(g_in) to the chart of its face
+  auto push_from = [&](int g_in, const long p[2], bool back_allowed, int parent) {
+    int g = g_in;
+    do {
+      const int out = cm.next[g];
+      if((!cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
+         !seen[std::size_t(cm.target[out])]) {
+        State s{out, {p[0], p[1]}, parent};
+        carry_around(cm, st, rot, t, g_in, out, s.p);
+        states.push_back(s);
+      }
+      g = cm.opp[out];
+    } while(g != g_in);
+  };
+  long pa[2];
+  const int ga = first_corners(cm)[std::size_t(a)];
+  if(!integer_cone_point(cm, st, rot, t, ga, pa)) return Cone_merge();
+  push_from(ga, pa, true, -1);
+  for(std::size_t i = 0; i < states.size(); ++i) {
+    const State s = states[i];
+    const int w = cm.target[s.h];
+    if(seen[std::size_t(w)] || cm.vertex_on_border[w]) continue;
+    seen[std::size_t(w)] = 1;
+    const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
+    if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > reach) continue;
+    if(K[std::size_t(w)] > 0) {
+      long q[2];
+      if(!integer_cone_point(cm, st, rot, t, s.h, q) || q[0] != s.p[0] || q[1] != s.p[1])
+        continue;                                    // a cone elsewhere: the path does not pass through it
+      if(taken[std::size_t(w)] || (K[std::size_t(a)] + K[std::size_t(w)]) % 4 != 0) {
+        push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
+        continue;
+      }
+      Cone_merge m;
+      m.a = a; m.b = w;
+      for(int j = int(i); j >= 0; j = states[std::size_t(j)].parent) m.path.push_back(states[std::size_t(j)].h);
+      std::reverse(m.path.begin(), m.path.end());
+      return m;
+    }
+    push_from(s.h, s.p, false, int(i));
+  }
+  return Cone_merge();
+}
+
+// Merges the collapsed cone pairs (see the header comment): changes rot.k and the integer translations t of
+// round_translations() along each path. `ubar` in grid units. Returns the merges, in order of the first cone.
+// With cut_edges_only = false the paths may use edges that are not cut edges (for cut_edges_to_add() only: the
+// transitions are then changed on edges that the snap does not treat as cut edges).
+inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm, const Seam_topology& st,
+                                                          Cut_rotations& rot, std::vector<long>& t,
+                                                          const std::vector<double>& ubar, double reach,
+                                                          bool cut_edges_only = true)
+{
+  std::vector<int> K = field_rotation_sums(cm, st, rot);     // merged cones become 0: later paths pass them
+  std::vector<char> taken(std::size_t(cm.n_vertices), 0);
+  std::vector<Cone_merge> merges;
+  for(int a = 0; a < cm.n_vertices; ++a) {
+    if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
+    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, a, reach, cut_edges_only);
+    if(m.path.empty()) continue;
+    taken[std::size_t(m.a)] = taken[std::size_t(m.b)] = 1;
+    const int dk = (4 - K[std::size_t(a)]) % 4;
+    K[std::size_t(m.a)] = K[std::size_t(m.b)] = 0;
+    long p[2];
+    integer_cone_point(cm, st, rot, t, cm.prev[m.path.front()], p);   // checked by find_cone_partner
+    for(std::size_t i = 0; i < m.path.size(); ++i) {
+      const int h = m.path[i];
+      if(i > 0) carry_around(cm, st, rot, t, m.path[i - 1], h, p);
+      // t' = t + (R^k - R^k') p: the new transition maps p (chart of face(h)) where the old one did
+      long old_image[2] = {p[0], p[1]};
+      apply_transition(rot.k[h], &t[2 * std::size_t(h)], old_image);
+      const int k_new = (rot.k[h] + dk) % 4;
+      long new_image[2] = {p[0], p[1]};
+      const long zero[2] = {0, 0};
+      apply_transition(k_new, zero, new_image);
+      for(int c = 0; c < 2; ++c) t[2 * std::size_t(h) + c] = old_image[c] - new_image[c];
+      rot.k[h] = k_new;
+      rot.k[cm.opp[h]] = (4 - k_new) % 4;
+      set_opposite_translation(cm, rot, h, t);
+    }
+    merges.push_back(m);
+  }
+  return merges;
+}
+
+// The edges to make cut edges so that merge_collapsed_cone_pairs() can merge the pairs that no cut path near their
+// point joins: the edges, not cut edges, of the paths through the mesh (within `reach` of the point) that join them
+// after the merges along cut paths. The new cut edges have rotation 0 and translation 0 in the input (its UVs are
+// continuous there) until the merge changes them. Empty if the translations are not near integers.
+inline std::vector<int> cut_edges_to_add(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                         const std::vector<double>& ubar, double tolerance, double reach)
+{
+  std::vector<long> t;
+  std::string ignored;
+  if(round_translations(cm, st, rot, ubar, tolerance, t, ignored) != SUCCESS) return {};
+  Cut_rotations r = rot;
+  merge_collapsed_cone_pairs(cm, st, r, t, ubar, reach);
+  std::vector<int> edges;
+  for(const Cone_merge& m : merge_collapsed_cone_pairs(cm, st, r, t, ubar, reach, false))
+    for(int h : m.path) if(!st.is_cut[cm.edge[h]]) edges.push_back(cm.edge[h]);
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_SURFACE_CONE_MERGING_H
