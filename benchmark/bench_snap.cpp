@@ -298,7 +298,8 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
-// --untangle: instead, the untangling (untangle(true)) per model, in the default mode and in integer-grid mode:
+// --untangle: instead, the untangling (untangle(true)) per model, in the default mode and in integer-grid mode, and
+// in integer-grid mode with merge_cone_pairs(true) (row "IGM+m", printed where pairs were merged):
 // UV triangles negative / zero in the input, after the snap alone, after untangling (floating point), at the end
 // (after its exact snap and the repair); of those at the end, how many are proven forced; vertices left not locally
 // injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
@@ -306,7 +307,7 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
 // untangling + snap, and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
 static int untangle_study(const std::vector<fs::path>& files, int repeat)
 {
-  std::printf("%-34s %4s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %6s | %s\n", "model", "mode", "#F",
+  std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %6s | %s\n", "model", "mode", "#F",
               "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
               "snap ms", "unt.+snap", "ratio", "exact");
   int failures = 0;
@@ -314,22 +315,27 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
     Mesh input;
     UV_map uv_in;
     if(!read_model(p, input, uv_in, failures)) continue;
-    for(bool igm : {false, true}) {
+    for(int mode = 0; mode < 3; ++mode) {
+      const bool igm = mode > 0, merge = mode == 2;
+      const char* mode_name = mode == 0 ? "def" : mode == 1 ? "IGM" : "IGM+m";
       SS::Snap_report alone, best;
       Mesh out;
       for(int r = 0; r < repeat; ++r) {
         Mesh m0 = input;
         UV_map uv0 = m0.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
-        const SS::Snap_report a = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(igm).untangle(false));
+        const SS::Snap_report a = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(igm).untangle(false)
+                                                                               .merge_cone_pairs(merge));
         Mesh m = input;
         UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
-        const SS::Snap_report b = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(igm).untangle(true));
+        const SS::Snap_report b = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(igm).untangle(true)
+                                                                             .merge_cone_pairs(merge));
         if(r == 0 || a.total_ms < alone.total_ms) alone = a;
         if(r == 0 || b.total_ms < best.total_ms) { best = b; out = m; }
       }
       const std::string name = p.filename().string();
+      if(merge && best.merged_cone_pairs.empty()) continue;          // the IGM row again
       if(best.status != SS::SUCCESS) {
-        std::printf("%-34s %4s %7zu | %s: %.120s\n", name.c_str(), igm ? "IGM" : "def", best.faces, SS::status_name(best.status),
+        std::printf("%-34s %5s %7zu | %s: %.120s\n", name.c_str(), mode_name, best.faces, SS::status_name(best.status),
                     best.message.c_str());
         continue;
       }
@@ -341,8 +347,8 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
       auto counts = [](std::size_t n, std::size_t z) { return std::to_string(n) + "/" + std::to_string(z); };
       const std::string change = best.untangled ? (std::to_string(best.untangle_max_change * best.grid_scale).substr(0, 6) + " / " +
                                                    std::to_string(best.untangle_rms_change * best.grid_scale).substr(0, 6)) : "-";
-      std::printf("%-34s %4s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s\n",
-                  name.c_str(), igm ? "IGM" : "def", best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
+      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s\n",
+                  name.c_str(), mode_name, best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
                   counts(alone.flips_after_repair, alone.degenerate_after_repair).c_str(),
                   counts(best.flips_after_untangling, best.degenerate_after_untangling).c_str(),
                   counts(best.flips_after_repair, best.degenerate_after_repair).c_str(), best.folds_forced,
@@ -357,7 +363,8 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
               "UV angle sum is not their valence (Snap_report::winding_defects), in brackets those next to a cone pair the\n"
               "integer rounding collapsed onto one point; rings = largest k of the regions; max/RMS cells = the change beyond\n"
               "the snap (grid cells: UV units at grid scale 1); snap max = the snap alone's max change; times in ms (min over\n"
-              "--repeat runs); ratio = (untangling + snap) / snap alone.\n");
+              "--repeat runs); ratio = (untangling + snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
+              "(the collapsed cone pairs made regular points of the field), where it merged pairs.\n");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
