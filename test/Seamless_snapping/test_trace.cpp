@@ -554,6 +554,30 @@ static void test_shared_data()
   assert(inexact_inputs == 0 || inputs_seen_inexact > 0);
 }
 
+// libQEx's maps (over 1 MB, so not in test_shared_data()) snapped to exact integer-grid maps with their collapsed cone
+// pairs merged (merge_cone_pairs(true)) and untangled: locally injective, so every separatrix ends regularly and the
+// layout is valid (every patch a rectangle). On fandisk two traces reach one point in the same round; the one
+// that got there first goes on (a T-junction), else the patch there would have a 270-degree corner.
+static void test_merged_libqex_maps()
+{
+  std::vector<fs::path> files;
+  if(!shared_obj_files_or_skip("trace: libQEx maps, cone pairs merged", files)) return;
+  std::size_t layouts = 0;
+  for(const fs::path& p : files) {
+    const std::string name = p.filename().string();
+    if(name != "fandisk_param.obj" && name != "duck_miq_8_param.obj" && name != "duck_qc_8_param.obj") continue;
+    Mesh m;
+    if(!load_obj(p, m)) continue;
+    UV_map uv = uv_of(m);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).merge_cone_pairs(true));
+    assert(r.status == SS::SUCCESS && r.flips_after_repair + r.degenerate_after_repair == 0 && r.winding_defects.empty());
+    const SS::Motorcycle_graph<Mesh> g = check_exact_graph(m, uv, name + ", IGM with cone pairs merged");
+    assert(g.layout.is_valid());
+    ++layouts;
+  }
+  std::cout << "trace: libQEx maps, cone pairs merged: " << layouts << " valid layouts\n";
+}
+
 int main(int argc, char** argv)
 {
   std::setvbuf(stdout, nullptr, _IONBF, 0);
@@ -564,6 +588,7 @@ int main(int argc, char** argv)
   if(!sanitizer_subset()) test_bear_orbifold();
   if(!sanitizer_subset()) test_connections_realized();
   test_shared_data();
+  if(!sanitizer_subset()) test_merged_libqex_maps();
   std::cout << "test_trace: all passed\n";
   return 0;
 }

@@ -97,8 +97,10 @@ struct Trail_registry
   struct Stored { int trace; Exact_uv a, b; };
   std::vector<std::vector<Stored> > per_face;
   std::vector<int> vertex_trace;      // -1 or the first trace through (or from) the vertex
+  std::vector<int> ended_on;          // per trace: the trace it ended on (EARLIER_TRACE), else -1
   std::size_t laid = 0;               // segments laid so far (Raw_segment::order)
-  void init(const Corner_mesh& cm) { per_face.assign(cm.n_faces, {}); vertex_trace.assign(cm.n_vertices, -1); laid = 0; }
+  void init(const Corner_mesh& cm) { per_face.assign(cm.n_faces, {}); vertex_trace.assign(cm.n_vertices, -1); ended_on.clear(); laid = 0; }
+  int ended_on_trace(int trace) const { return trace >= 0 && std::size_t(trace) < ended_on.size() ? ended_on[std::size_t(trace)] : -1; }
 };
 
 struct Trace_target
@@ -144,6 +146,10 @@ public:
   void finish(Trace_run& r, Trace_end e, const std::string& detail) const
   {
     r.finished = true; r.end = e; r.detail = detail;
+    if(trails && e == Trace_end::EARLIER_TRACE && r.id >= 0) {
+      if(trails->ended_on.size() <= std::size_t(r.id)) trails->ended_on.resize(std::size_t(r.id) + 1, -1);
+      trails->ended_on[std::size_t(r.id)] = r.hit_trace;
+    }
   }
 
   // Start at the vertex target(corner), direction m in the chart of face(corner): the sector that
@@ -252,7 +258,11 @@ public:
             stop_at = FT(0); stop = Trace_end::EARLIER_TRACE; stopped = true; hit = t.trace;
           }
         } else if(gA * gB <= 0) {
-          consider(aA + (sA / (sA - sB)) * (aB - aA), Trace_end::EARLIER_TRACE, t.trace);
+          const FT x = aA + (sA / (sA - sB)) * (aB - aA);
+          // a trace that ended on this one at its current point (both reached it in one round) is a T-junction
+          // onto this trace, which goes on (stopping too would leave a corner of two arcs, a 270-degree patch corner)
+          if(CGAL::is_zero(x) && trails->ended_on_trace(t.trace) == r.id) continue;
+          consider(x, Trace_end::EARLIER_TRACE, t.trace);
         }
       }
     if(stopped) {
