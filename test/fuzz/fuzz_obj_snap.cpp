@@ -14,7 +14,8 @@
 //  - a successful read gives a mesh with faces;
 //  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
 //  - on any other status, every halfedge UV is bit-identical to what was read;
-//  - the map as read, snapped with integer_grid_map(true): on SUCCESS, extract_quad_mesh() either gives a valid
+//  - the map as read, snapped with integer_grid_map(true) and merge_cone_pairs(true) (as seamless_quad does): on
+//    SUCCESS, is_exact_integer_grid_map() holds and extract_quad_mesh() either gives a valid
 //    polygon mesh of quads (as many as the exact UV area when no cell was dropped) or refuses with the output
 //    mesh left empty.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
@@ -24,6 +25,7 @@
 
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -61,7 +63,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_REQUIRE(uv_bits(m, uv) == before, "the UV map is untouched on failure");
 
   UV_map guv = uv_of(grid);
-  if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true)).status != SS::SUCCESS) return 0;
+  if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true).merge_cone_pairs(true)).status !=
+     SS::SUCCESS)
+    return 0;
+  FUZZ_REQUIRE(SS::is_exact_integer_grid_map(grid, guv), "an integer-grid SUCCESS is an exact integer-grid map");
   Mesh quads;
   const SS::Quad_mesh_report q = SS::extract_quad_mesh(grid, guv, quads);
   if(q.status == SS::SUCCESS) {
