@@ -105,7 +105,8 @@ if shared and os.path.exists(fandisk):
     rc, text = run(fandisk, out, "--report", report)
     r = json.load(open(report))
     check(rc == 0 and len(r["snap"]["merged_cone_pairs"]) > 0 and r["quad_mesh"]["status"] == "SUCCESS" and
-          r["quad_mesh"]["irregular_vertices"] == r["snap"]["field_cones"] and os.path.exists(out),
+          r["quad_mesh"]["irregular_vertices"] == r["snap"]["field_cones"] and os.path.exists(out) and
+          "merged 1 cone pair(s)" in text and "--keep-cone-pairs keeps them" in text,
           "fandisk: the cone pair merged, its quad mesh written: %d %s" % (rc, text))
     out = os.path.join(work, "fandisk_kept.obj")
     rc, text = run(fandisk, out, "--keep-cone-pairs", "--report", report)

@@ -159,6 +159,15 @@ int main(int argc, char** argv)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
                 "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,
                 snap.field_cones, snap.flips_after_repair, snap.degenerate_after_repair);
+  if(!quiet && !snap.merged_cone_pairs.empty()) {
+    std::printf("merged %zu cone pair(s) that the map's integer translations put onto one integer point (vertices",
+                snap.merged_cone_pairs.size());
+    for(std::size_t i = 0; i < snap.merged_cone_pairs.size() && i < 10; ++i)
+      std::printf(" %zu+%zu", snap.merged_cone_pairs[i].first, snap.merged_cone_pairs[i].second);
+    std::printf("%s): regular vertices of the quad mesh now, the rotations of %zu cut edges changed (%zu of them new); "
+                "--keep-cone-pairs keeps them\n", snap.merged_cone_pairs.size() > 10 ? " ..." : "", snap.merged_cut_edges,
+                snap.added_cut_edges);
+  }
 
   // 3. extract (the quad mesh is written into `quads` only on success)
   Mesh quads;
