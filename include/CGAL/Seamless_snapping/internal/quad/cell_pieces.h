@@ -113,54 +113,61 @@ private:
   double dx_, dy_;
 };
 
-// The pieces of face f (first halfedge h0), appended to `out`; `sign` is scratch space.
-inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& out, std::vector<signed char>& sign)
+// Where a grid point lies relative to the closed triangle, from its side masks (bit s of `left`: strictly left
+// of side s; of `right`: strictly right): outside if right of a side; on no side's line: inside; on one: inside
+// that side; on two (s and s+1): at the corner c_{s+1} between them.
+inline Corner_place corner_place(unsigned left, unsigned right)
+{
+  if(right != 0) return OUTSIDE;
+  switch(~left & 7u) {                            // the sides whose line holds the point
+    case 0: return INSIDE;
+    case 1: return ON_SIDE_0;
+    case 2: return ON_SIDE_1;
+    case 4: return ON_SIDE_2;
+    case 3: return AT_CORNER_1;                   // sides 0 and 1 meet at c_1
+    case 6: return AT_CORNER_2;
+    case 5: return AT_CORNER_0;                   // sides 2 and 0 meet at c_0
+    default: return AT_CORNER_2;                  // on all three lines: no such point of a positive triangle
+  }
+}
+
+// The pieces of face f (first halfedge h0), appended to `out`; `mask` is scratch space.
+inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& out, std::vector<unsigned char>& mask)
 {
   const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
   const Uv_point t[3] = {corner_point(cm, c[0]), corner_point(cm, c[1]), corner_point(cm, c[2])};
   std::int64_t i0, i1, j0, j1;
   candidate_cells(t, i0, i1, j0, j1);
   const std::size_t ni = std::size_t(i1 - i0 + 2), nj = std::size_t(j1 - j0 + 2), n = ni * nj;   // grid points
-  sign.resize(3 * n);
+  // per grid point: bits 0-2 strictly left of side s, bits 3-5 strictly right of it
+  mask.assign(n, 0);
   for(int s = 0; s < 3; ++s) {
     const Side_orientation side(t[s], t[(s + 1) % 3]);
-    signed char* row = sign.data() + std::size_t(s) * n;
     for(std::size_t b = 0; b < nj; ++b)
-      for(std::size_t a = 0; a < ni; ++a) row[b * ni + a] = side(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
+      for(std::size_t a = 0; a < ni; ++a) {
+        const signed char o = side(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
+        mask[b * ni + a] |= static_cast<unsigned char>(o > 0 ? 1u << s : o < 0 ? 8u << s : 0u);
+      }
   }
   for(std::size_t b = 0; b + 1 < nj; ++b)
     for(std::size_t a = 0; a + 1 < ni; ++a) {
       std::size_t g[4];                           // the cell's corners in the grid, counter-clockwise
       for(int k = 0; k < 4; ++k) g[k] = (b + std::size_t(cell_corner_offset[k][1])) * ni + a + std::size_t(cell_corner_offset[k][0]);
-      bool left[3], right[3], separated = false;
-      for(int s = 0; s < 3; ++s) {
-        left[s] = right[s] = false;
-        for(int k = 0; k < 4; ++k) { left[s] = left[s] || sign[std::size_t(s) * n + g[k]] > 0; right[s] = right[s] || sign[std::size_t(s) * n + g[k]] < 0; }
-        separated = separated || !left[s];
-      }
-      if(separated) continue;
+      const unsigned any = unsigned(mask[g[0]] | mask[g[1]] | mask[g[2]] | mask[g[3]]);
+      const unsigned left = any & 7u, right = any >> 3;   // sides with a corner strictly left / right of them
+      if(left != 7u) continue;                    // all four corners on or right of a side: separated
       const std::size_t x = out.cell.size();
       const Grid_point cell{i0 + std::int64_t(a), j0 + std::int64_t(b)};
       out.cell.push_back(cell);
       out.face.push_back(f);
       std::array<Corner_place, 4> place;
-      for(int k = 0; k < 4; ++k) {
-        int zero = 0, on = -1;
-        bool outside = false;
-        for(int s = 0; s < 3; ++s) {
-          const signed char o = sign[std::size_t(s) * n + g[k]];
-          outside = outside || o < 0;
-          if(o == 0) { on = zero == 0 ? s : (on + 1) % 3 == s ? s : on; ++zero; }
-        }
-        // on sides s and s+1: the corner c_{s+1} between them; `on` keeps the later side of the pair
-        place[k] = outside ? OUTSIDE : zero == 0 ? INSIDE : zero == 1 ? Corner_place(ON_SIDE_0 + on) : Corner_place(AT_CORNER_0 + on);
-      }
+      for(int k = 0; k < 4; ++k) place[std::size_t(k)] = corner_place(mask[g[k]] & 7u, unsigned(mask[g[k]]) >> 3);
       out.corner.push_back(place);
       char cut = 0;
       for(int s = 0; s < 3; ++s) {                // side s: from t[s] to t[s+1], the halfedge c[s+1]
         const Uv_point& p = t[s];
         const Uv_point& q = t[(s + 1) % 3];
-        if(!left[s] || !right[s] || (std::max)(p.x(), q.x()) <= double(cell.u) || (std::min)(p.x(), q.x()) >= double(cell.u + 1) ||
+        if(!(right & (1u << s)) || (std::max)(p.x(), q.x()) <= double(cell.u) || (std::min)(p.x(), q.x()) >= double(cell.u + 1) ||
            (std::max)(p.y(), q.y()) <= double(cell.v) || (std::min)(p.y(), q.y()) >= double(cell.v + 1))
           continue;
         const int h = c[(s + 1) % 3], o = cm.opp[h];
@@ -195,10 +202,10 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
   out.first.reserve(std::size_t(cm.n_faces) + 1);
   out.cell.reserve(candidates); out.face.reserve(candidates); out.corner.reserve(candidates); out.cut.reserve(candidates);
   out.glue.reserve(candidates);
-  std::vector<signed char> sign;
+  std::vector<unsigned char> mask;
   for(int f = 0; f < cm.n_faces; ++f) {
     out.first.push_back(out.cell.size());
-    add_face_pieces(cm, f, face_halfedge[std::size_t(f)], out, sign);
+    add_face_pieces(cm, f, face_halfedge[std::size_t(f)], out, mask);
   }
   out.first.push_back(out.cell.size());
   return SUCCESS;

@@ -38,6 +38,33 @@ template <class TriangleMesh> struct Quad_vertex_origin;
 namespace internal {
 namespace quad {
 
+// The verified quad mesh x.mesh added to qm: its vertices and faces, in order, into `qv` and `qf`.
+template <class QuadMesh>
+void add_vertices_and_faces(const Quad_extraction& x, QuadMesh& qm,
+                            std::vector<typename boost::graph_traits<QuadMesh>::vertex_descriptor>& qv,
+                            std::vector<typename boost::graph_traits<QuadMesh>::face_descriptor>& qf)
+{
+  typedef boost::graph_traits<QuadMesh> QT;
+  for(std::size_t i = 0; i < x.cells.points.size(); ++i) qv.push_back(add_vertex(qm));
+  for(const std::array<int, 4>& c : x.cells.quads) {
+    const std::array<typename QT::vertex_descriptor, 4> corners = {{qv[std::size_t(c[0])], qv[std::size_t(c[1])],
+                                                                    qv[std::size_t(c[2])], qv[std::size_t(c[3])]}};
+    qf.push_back(CGAL::Euler::add_face(corners, qm));
+    CGAL_assertion(qf.back() != QT::null_face());     // the faces of the verified mesh, in the same order
+  }
+}
+
+// The same for a mesh of the verified mesh's own type: appended whole (Surface_mesh::join(), which keeps the
+// caller's property maps and numbers the new elements after the old ones, removed ones included).
+inline void add_vertices_and_faces(const Quad_extraction& x, Quad_surface& qm, std::vector<Quad_surface::Vertex_index>& qv,
+                                   std::vector<Quad_surface::Face_index>& qf)
+{
+  const Quad_surface::size_type nv = qm.num_vertices(), nf = qm.num_faces();
+  qm.join(x.mesh);
+  for(std::size_t i = 0; i < x.mesh.num_vertices(); ++i) qv.push_back(Quad_surface::Vertex_index(nv + Quad_surface::size_type(i)));
+  for(std::size_t q = 0; q < x.mesh.num_faces(); ++q) qf.push_back(Quad_surface::Face_index(nf + Quad_surface::size_type(q)));
+}
+
 // `covered`: fill face_origin_map (false when the caller gave none)
 template <class TriangleMesh, class QuadMesh, class VPM_out, class Origin_map, class Face_origin_map>
 void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<TriangleMesh>& desc, const Quad_extraction& x,
@@ -51,9 +78,11 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
   for(std::size_t h = 0; h < desc.halfedges.size(); ++h)
     if(!x.cm.is_border_halfedge(int(h))) face_of[std::size_t(x.cm.face[h])] = face(desc.halfedges[h], tm);
   std::vector<typename QT::vertex_descriptor> qv;
+  std::vector<typename QT::face_descriptor> qf;
+  add_vertices_and_faces(x, qm, qv, qf);
   for(std::size_t i = 0; i < x.cells.points.size(); ++i) {
     const Integer_point& p = x.cells.points[i];
-    const typename QT::vertex_descriptor v = add_vertex(qm);
+    const typename QT::vertex_descriptor v = qv[i];
     put(vpm_out, v, Out_point(x.positions[i][0], x.positions[i][1], x.positions[i][2]));
     Origin o;
     o.location = p.kind == AT_VERTEX ? Origin::VERTEX : p.kind == ON_EDGE ? Origin::EDGE : Origin::FACE;
@@ -62,14 +91,9 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
     o.u = p.uv.u;
     o.v = p.uv.v;
     put(origin_map, v, o);
-    qv.push_back(v);
   }
   for(std::size_t q = 0; q < x.cells.quads.size(); ++q) {
-    const std::array<int, 4>& c = x.cells.quads[q];
-    const std::array<typename QT::vertex_descriptor, 4> corners = {{qv[std::size_t(c[0])], qv[std::size_t(c[1])],
-                                                                    qv[std::size_t(c[2])], qv[std::size_t(c[3])]}};
-    const typename QT::face_descriptor f = CGAL::Euler::add_face(corners, qm);
-    CGAL_assertion(f != QT::null_face());     // the faces of the verified mesh, in the same order
+    const typename QT::face_descriptor f = qf[q];
     if(!covered_faces) continue;
     std::vector<typename GT::face_descriptor> covered;
     covered.reserve(x.cells.faces_first[q + 1] - x.cells.faces_first[q]);

@@ -67,38 +67,61 @@ inline Integer_point locate_integer_point(const Corner_mesh& cm, int h0, const G
   return r;
 }
 
+// Numbers the names: a mesh vertex by an array over the vertices, a point in a face by an array over the grid
+// points of that face's bounding box (its lookups come together: the pieces are ordered by face, see
+// stitch_cells()), a point on an edge by a hash table.
 class Integer_point_index
 {
 public:
+  explicit Integer_point_index(int n_vertices) : vertex_id_(std::size_t(n_vertices), -1) {}
   const std::vector<Integer_point>& points() const { return points_; }
+  void reserve(std::size_t n) { ids_.reserve(n / 4); points_.reserve(n); }
+
+  // the points in face f are looked up next; their uv within [u0, u1] x [v0, v1]
+  void begin_face(int f, std::int64_t u0, std::int64_t u1, std::int64_t v0, std::int64_t v1)
+  {
+    face_ = f; u0_ = u0; v0_ = v0; width_ = std::size_t(u1 - u0 + 1);
+    face_id_.assign(width_ * std::size_t(v1 - v0 + 1), -1);
+  }
 
   // the number of the point (a new one if its name was not seen yet)
   int id(const Integer_point& p)
   {
-    const Key k{int(p.kind), p.element, p.kind == AT_VERTEX ? 0 : p.uv.u, p.kind == AT_VERTEX ? 0 : p.uv.v};
-    const auto it = ids_.emplace(k, int(points_.size()));
-    if(it.second) points_.push_back(p);
-    return it.first->second;
+    int* slot;
+    if(p.kind == AT_VERTEX) slot = &vertex_id_[std::size_t(p.element)];
+    else if(p.kind == IN_FACE) {
+      CGAL_precondition(p.element == face_);
+      slot = &face_id_[std::size_t(p.uv.v - v0_) * width_ + std::size_t(p.uv.u - u0_)];
+    } else {
+      const Key k{p.element, p.uv.u, p.uv.v};
+      slot = &ids_.try_emplace(k, -1).first->second;     // no node allocated for a name seen before
+    }
+    if(*slot < 0) { *slot = int(points_.size()); points_.push_back(p); }
+    return *slot;
   }
 
 private:
-  struct Key
+  struct Key                                     // a point on an edge
   {
-    int kind, element;
+    int element;
     std::int64_t u, v;
-    bool operator==(const Key& o) const { return kind == o.kind && element == o.element && u == o.u && v == o.v; }
+    bool operator==(const Key& o) const { return element == o.element && u == o.u && v == o.v; }
   };
   struct Key_hash
   {
     std::size_t operator()(const Key& k) const
     {
-      std::uint64_t h = std::uint64_t(k.element) * 0x9E3779B97F4A7C15ull + std::uint64_t(k.kind);
+      std::uint64_t h = std::uint64_t(k.element) * 0x9E3779B97F4A7C15ull;
       h ^= std::uint64_t(k.u) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
       h ^= std::uint64_t(k.v) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
       return std::size_t(h);
     }
   };
   std::unordered_map<Key, int, Key_hash> ids_;
+  std::vector<int> vertex_id_, face_id_;
+  int face_ = -1;
+  std::int64_t u0_ = 0, v0_ = 0;
+  std::size_t width_ = 0;
   std::vector<Integer_point> points_;
 };
 

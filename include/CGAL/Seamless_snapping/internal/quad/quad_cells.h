@@ -109,36 +109,46 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
     }
 
   // corners
-  Integer_point_index index;
+  Integer_point_index index(cm.n_vertices);
+  index.reserve(roots.size() + roots.size() / 8 + 16);   // about one point per cell on a closed surface
   std::vector<int> corner(4 * roots.size(), -1);
   out.faces_first.assign(1, 0);
-  for(std::size_t x = 0; x < pieces.size(); ++x) {
-    const std::size_t cell = std::size_t(cell_of[x]);
-    if(!complete[cell]) continue;
-    const int f = pieces.face[x];
-    const Grid_point& c = pieces.cell[x];
-    const Grid_point& root_cell = pieces.cell[std::size_t(root_of[x])];
-    if(to_root[x].apply_to_cell(c) != root_cell) {
-      message = "internal error: the " + cell_name(c, f) + " is joined to a piece of another cell";
-      return EXACTNESS_CHECK_FAILED;
+  for(int f = 0; f < cm.n_faces; ++f) {
+    const std::size_t b = pieces.first[std::size_t(f)], e = pieces.first[std::size_t(f) + 1];
+    if(b == e) continue;
+    std::int64_t u0 = pieces.cell[b].u, u1 = u0, v0 = pieces.cell[b].v, v1 = v0;   // the corners of its pieces' cells
+    for(std::size_t x = b; x < e; ++x) {
+      u0 = (std::min)(u0, pieces.cell[x].u); u1 = (std::max)(u1, pieces.cell[x].u);
+      v0 = (std::min)(v0, pieces.cell[x].v); v1 = (std::max)(v1, pieces.cell[x].v);
     }
-    for(int k = 0; k < 4; ++k) {
-      const Corner_place place = pieces.corner[x][std::size_t(k)];
-      if(place == OUTSIDE) continue;
-      const Grid_point p{c.u + cell_corner_offset[k][0], c.v + cell_corner_offset[k][1]};
-      const Grid_point q = to_root[x].apply(p);
-      int i = 0;
-      while(i < 3 && !(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1])) ++i;
-      CGAL_assertion(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1]);
-      const int id = index.id(locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition));
-      int& slot = corner[4 * cell + std::size_t(i)];
-      if(slot >= 0 && slot != id) {
-        message = "the " + cell_name(c, f) + " has two surface points at one corner (" + std::to_string(p.u) + ", " +
-                  std::to_string(p.v) + "): it is not a disk; the integer grid is too coarse for the surface (use a "
-                  "larger grid_scale)";
-        return INVALID_INPUT;
+    index.begin_face(f, u0, u1 + 1, v0, v1 + 1);
+    for(std::size_t x = b; x < e; ++x) {
+      const std::size_t cell = std::size_t(cell_of[x]);
+      if(!complete[cell]) continue;
+      const Grid_point& c = pieces.cell[x];
+      const Grid_point& root_cell = pieces.cell[std::size_t(root_of[x])];
+      if(to_root[x].apply_to_cell(c) != root_cell) {
+        message = "internal error: the " + cell_name(c, f) + " is joined to a piece of another cell";
+        return EXACTNESS_CHECK_FAILED;
       }
-      slot = id;
+      for(int k = 0; k < 4; ++k) {
+        const Corner_place place = pieces.corner[x][std::size_t(k)];
+        if(place == OUTSIDE) continue;
+        const Grid_point p{c.u + cell_corner_offset[k][0], c.v + cell_corner_offset[k][1]};
+        const Grid_point q = to_root[x].apply(p);
+        int i = 0;
+        while(i < 3 && !(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1])) ++i;
+        CGAL_assertion(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1]);
+        const int id = index.id(locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition));
+        int& slot = corner[4 * cell + std::size_t(i)];
+        if(slot >= 0 && slot != id) {
+          message = "the " + cell_name(c, f) + " has two surface points at one corner (" + std::to_string(p.u) + ", " +
+                    std::to_string(p.v) + "): it is not a disk; the integer grid is too coarse for the surface (use a "
+                    "larger grid_scale)";
+          return INVALID_INPUT;
+        }
+        slot = id;
+      }
     }
   }
   // the faces per cell: pieces are ordered by face, so each cell's list comes out ascending
