@@ -52,6 +52,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Gmpq.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <array>
 #include <cassert>
@@ -318,6 +319,52 @@ static void test_torus()
   Mesh odd; UV_map uvo;
   make_flat_torus(odd, uvo, 3, 3.5);
   check_refused(odd, uvo, 1, SS::INVALID_INPUT, "translation is not an integer vector", "torus of period 3.5");
+}
+
+// The quad mesh is added to the caller's mesh: appended whole to a Surface_mesh of the extraction's own type
+// (a fresh one, or one that already holds elements, a removed face and a property map of the caller: kept, the
+// new vertices numbered after the old ones) or face by face to another mesh type; the same mesh every time.
+static void test_output_meshes()
+{
+  typedef CGAL::Simple_cartesian<double>::Point_3 Other_point;
+  typedef CGAL::Surface_mesh<Other_point> Other_mesh;
+  Mesh m; UV_map uv;
+  make_flat_torus(m, uv, 3, 3);
+  Mesh fresh;
+  const SS::Quad_mesh_report rf = SS::extract_quad_mesh(m, uv, fresh);
+  assert(rf.status == SS::SUCCESS && fresh.number_of_faces() == 9);
+
+  Mesh used;                                       // a triangle, a removed one, a property of the caller
+  std::vector<vertex_descriptor> tri;
+  for(int i = 0; i < 4; ++i) tri.push_back(used.add_vertex(Point_3(i, i * i, 1)));
+  used.add_face(tri[0], tri[1], tri[2]);
+  used.remove_face(used.add_face(tri[0], tri[2], tri[3]));
+  Mesh::Property_map<vertex_descriptor, int> mine = used.add_property_map<vertex_descriptor, int>("v:mine", -1).first;
+  for(int i = 0; i < 4; ++i) put(mine, tri[std::size_t(i)], 10 + i);
+  Origin_map origin = used.add_property_map<vertex_descriptor, Origin>("v:origin").first;
+  const std::size_t nv = used.num_vertices(), nf = used.num_faces();
+  const SS::Quad_mesh_report ru = SS::extract_quad_mesh(m, uv, used, CGAL::parameters::default_values(),
+                                                          SS::parameters::vertex_origin_map(origin));
+  assert(ru.status == SS::SUCCESS && used.number_of_faces() == 1 + 9 && used.num_vertices() == nv + fresh.num_vertices());
+  for(int i = 0; i < 4; ++i) assert(get(mine, tri[std::size_t(i)]) == 10 + i && used.point(tri[std::size_t(i)]) == Point_3(i, i * i, 1));
+
+  Other_mesh other;
+  const SS::Quad_mesh_report ro = SS::extract_quad_mesh(m, uv, other);
+  assert(ro.status == SS::SUCCESS && other.num_vertices() == fresh.num_vertices() && other.num_faces() == fresh.num_faces());
+  for(face_descriptor f : fresh.faces()) {
+    const face_descriptor g(Mesh::size_type(nf + std::size_t(f)));
+    halfedge_descriptor a = fresh.halfedge(f), b = used.halfedge(g);
+    Other_mesh::Halfedge_index c = other.halfedge(Other_mesh::Face_index(Mesh::size_type(f)));
+    for(int k = 0; k < 4; ++k, a = fresh.next(a), b = used.next(b), c = other.next(c)) {
+      const std::size_t v = std::size_t(fresh.target(a));
+      assert(std::size_t(used.target(b)) == nv + v && std::size_t(other.target(c)) == v);
+      const Point_3& p = fresh.point(fresh.target(a));
+      const Other_point& q = other.point(other.target(c));
+      assert(used.point(used.target(b)) == p && q.x() == p.x() && q.y() == p.y() && q.z() == p.z());
+      assert(get(mine, used.target(b)) == -1 && get(origin, used.target(b)).face != Mesh::null_face());
+    }
+  }
+  std::cout << "quad: output meshes: fresh, appended (after 4 vertices and a removed face), other type: the same mesh\n";
 }
 
 static void test_grid()
@@ -620,6 +667,7 @@ int main(int argc, char** argv)
   test_exact_double_tests();
   test_cube();
   test_torus();
+  test_output_meshes();
   test_grid();
   test_refusals();
   test_branch_points();
