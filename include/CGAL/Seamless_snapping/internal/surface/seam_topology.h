@@ -116,8 +116,12 @@ inline double atan2_within_3e_9(double y, double x)
   const bool steep = ay > ax;
   double t = steep ? ax / ay : ay / ax, base = 0;
   if(t > tan_twelfth_pi) { t = (sqrt3 * t - 1) / (sqrt3 + t); base = sixth_pi; }
+  // the coefficients 1/3, 1/5, ..., 1/11 rounded to doubles, as literals: with -frounding-math (CGAL's flags)
+  // the compiler does not fold 1. / 3 and would divide five times per call
+  const double c3 = 0.3333333333333333, c5 = 0.2, c7 = 0.14285714285714285, c9 = 0.1111111111111111,
+               c11 = 0.09090909090909091;
   const double t2 = t * t;
-  double r = base + t * (1 + t2 * (-1. / 3 + t2 * (1. / 5 + t2 * (-1. / 7 + t2 * (1. / 9 + t2 * (-1. / 11))))));
+  double r = base + t * (1 + t2 * (-c3 + t2 * (c5 + t2 * (-c7 + t2 * (c9 + t2 * (-c11))))));
   if(steep) r = half_pi - r;
   if(x < 0) r = pi - r;
   return y < 0 ? -r : r;
@@ -147,13 +151,14 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
   // cut edges
   st.is_cut.assign(cm.n_edges, 0);
   st.cut_degree.assign(cm.n_vertices, 0);
+  std::vector<char> joins(nh, 0);   // per halfedge: its edge joins two corners of a sector (not cut, not border)
   for(int e = 0; e < cm.n_edges; ++e) {
     if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
     bool cut;
     if(!seam_override.empty() && seam_override[e] >= 0) cut = seam_override[e] != 0;
     else cut = !same_uv(cm, h, cm.prev[o]) || !same_uv(cm, cm.prev[h], o);
-    if(!cut) continue;
+    if(!cut) { joins[h] = joins[o] = 1; continue; }
     st.is_cut[e] = 1;
     st.cut_edges.push_back(e);
     ++st.cut_degree[cm.target[h]];
@@ -164,33 +169,37 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
   // path or a cycle: corner c meets prev(opp(c)) across edge(c) and opp(next(c)) across edge(next(c))),
   // so each sector is walked once from its smallest halfedge, in both directions; the sectors are numbered
   // in the order of their smallest halfedges (as a union-find with the smallest representative did).
-  // A corner whose UV differs from its sector's first corner is an error; the smallest such halfedge is named.
+  // The walk touches as few arrays as it can (its loads are random); the UVs are compared afterwards, in
+  // halfedge order: a corner whose UV differs from its sector's first corner is an error, the smallest one named.
   st.sector_of.assign(nh, -1);
-  auto joins = [&](int e) { return !st.is_cut[e] && !cm.is_border_edge(e); };
-  int mismatch = nh;
-  auto assign = [&](int c, int s, int first) {
-    st.sector_of[c] = s;
-    if(c < mismatch && !same_uv(cm, c, first)) mismatch = c;
-  };
   for(int h = 0; h < nh; ++h) {
     if(cm.is_border_halfedge(h) || st.sector_of[h] >= 0) continue;
     const int s = st.n_sectors++;
     st.sector_corner.push_back(h);
-    st.ubar.push_back(cm.u[h]);
-    st.ubar.push_back(cm.v[h]);
     st.sector_of[h] = s;
     bool closed = false;
-    for(int c = h; joins(cm.edge[c]);) {          // across edge(c)
+    for(int c = h; joins[c];) {                   // across edge(c)
       c = cm.prev[cm.opp[c]];
       if(c == h) { closed = true; break; }
-      assign(c, s, h);
+      st.sector_of[c] = s;
     }
     if(!closed)
-      for(int c = h; joins(cm.edge[cm.next[c]]);) {   // across edge(next(c))
+      for(int c = h; joins[cm.next[c]];) {        // across edge(next(c))
         c = cm.opp[cm.next[c]];
-        assign(c, s, h);
+        st.sector_of[c] = s;
       }
   }
+  st.ubar.resize(2 * std::size_t(st.n_sectors));
+  for(int s = 0; s < st.n_sectors; ++s) {
+    st.ubar[2 * std::size_t(s)] = cm.u[st.sector_corner[s]];
+    st.ubar[2 * std::size_t(s) + 1] = cm.v[st.sector_corner[s]];
+  }
+  int mismatch = nh;
+  for(int h = 0; h < nh && mismatch == nh; ++h)
+    if(!cm.is_border_halfedge(h)) {
+      const std::size_t s = std::size_t(st.sector_of[h]);
+      if(cm.u[h] != st.ubar[2 * s] || cm.v[h] != st.ubar[2 * s + 1]) mismatch = h;
+    }
   if(mismatch < nh) {
     const int h = mismatch, s = st.sector_of[h];
     message = "the corners of vertex " + std::to_string(cm.target[h]) + " in faces " +
@@ -207,41 +216,40 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
   // 3e-9 for the approximation and 2 ulp(pi) for std::atan2 (glibc's atan2 is within 1 ulp); per sum of n
   // terms of magnitude at most pi, a rounding error of at most n^2 u pi for each of the two sums.
   const double quarter = std::acos(-1.) / 2;
-  std::vector<double> approximate_sum(cm.n_vertices, 0.);
-  std::vector<int> corners(cm.n_vertices, 0);
-  std::vector<char> exact_sum(cm.n_vertices, 0);   // the std::atan2 sum is needed
+  struct Vertex_sum { double approximate = 0; int corners = 0; bool exact = false; };   // exact: std::atan2 needed
+  std::vector<Vertex_sum> sums(cm.n_vertices);     // one cache line per vertex for the random accesses below
   for(int h = 0; h < nh; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const int v = cm.target[h];
     double y, x;
     corner_angle_arguments(cm, h, y, x);
-    ++corners[v];
-    if(y == 0 || x == 0) { exact_sum[v] = 1; continue; }    // signed zeros and angles of exactly 0, +-pi/2, pi
-    approximate_sum[v] += atan2_within_3e_9(y, x);
+    ++sums[v].corners;
+    if(y == 0 || x == 0) { sums[v].exact = true; continue; }    // signed zeros and angles of exactly 0, +-pi/2, pi
+    sums[v].approximate += atan2_within_3e_9(y, x);
   }
   st.quarter_turns.assign(cm.n_vertices, 4);
   st.is_cone.assign(cm.n_vertices, 0);
   bool any_exact = false;
   for(int v = 0; v < cm.n_vertices; ++v) {
-    if(cm.vertex_on_border[v] || corners[v] == 0 || exact_sum[v]) { any_exact = any_exact || exact_sum[v]; continue; }
-    const double n = double(corners[v]);
+    if(cm.vertex_on_border[v] || sums[v].corners == 0 || sums[v].exact) { any_exact = any_exact || sums[v].exact; continue; }
+    const double n = double(sums[v].corners);
     const double bound = (n * (3e-9 + 1e-14 + 1e-15) + 2 * n * n * 3.5e-16) / quarter + 1e-12;
-    const double turns = approximate_sum[v] / quarter;
+    const double turns = sums[v].approximate / quarter;
     const double k = std::nearbyint(turns);
     if(std::fabs(turns - k) <= 0.5 - bound && std::fabs(k) < 1e9) {
       st.quarter_turns[v] = int(k);
       st.is_cone[v] = st.quarter_turns[v] != 4;
     } else {
-      exact_sum[v] = 1;
+      sums[v].exact = true;
       any_exact = true;
     }
   }
   if(any_exact) {
     std::vector<double> angle_sum(cm.n_vertices, 0.);
     for(int h = 0; h < nh; ++h)
-      if(!cm.is_border_halfedge(h) && exact_sum[cm.target[h]]) angle_sum[cm.target[h]] += corner_angle(cm, h);
+      if(!cm.is_border_halfedge(h) && sums[cm.target[h]].exact) angle_sum[cm.target[h]] += corner_angle(cm, h);
     for(int v = 0; v < cm.n_vertices; ++v) {
-      if(cm.vertex_on_border[v] || corners[v] == 0 || !exact_sum[v]) continue;   // border or isolated vertex
+      if(cm.vertex_on_border[v] || sums[v].corners == 0 || !sums[v].exact) continue;   // border or isolated vertex
       st.quarter_turns[v] = int(std::lround(angle_sum[v] / quarter));
       st.is_cone[v] = st.quarter_turns[v] != 4;
     }
