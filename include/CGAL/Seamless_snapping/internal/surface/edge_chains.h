@@ -23,6 +23,7 @@
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -42,12 +43,18 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
                                   const std::vector<char>& stop, Edge_chains& out)
 {
   out.chains.clear(); out.loop_starts.clear();
-  // outgoing set halfedges per vertex, in increasing halfedge index order
-  std::vector<std::vector<int> > outgoing(cm.n_vertices);
+  // outgoing set halfedges per vertex, in increasing halfedge index order: outgoing[first[v] .. first[v + 1])
+  // (a counting sort of the set halfedges by their source, stable)
+  std::vector<int> set_halfedges, first(std::size_t(cm.n_vertices) + 1, 0);
   for(int h = 0; h < cm.n_halfedges; ++h)
-    if(in_set[cm.edge[h]]) outgoing[cm.source(h)].push_back(h);
+    if(in_set[cm.edge[h]]) { set_halfedges.push_back(h); ++first[std::size_t(cm.source(h)) + 1]; }
+  for(std::size_t v = 0; v < std::size_t(cm.n_vertices); ++v) first[v + 1] += first[v];
+  std::vector<int> outgoing(set_halfedges.size()), fill(first.begin(), first.end() - 1);
+  for(int h : set_halfedges) outgoing[std::size_t(fill[std::size_t(cm.source(h))]++)] = h;
+  auto degree = [&](int v) { return first[std::size_t(v) + 1] - first[std::size_t(v)]; };
+  auto outgoing_at = [&](int v, int i) { return outgoing[std::size_t(first[std::size_t(v)] + i)]; };
   std::vector<char> used(cm.n_edges, 0);
-  auto is_stop = [&](int v) { return stop[v] || outgoing[v].size() != 2; };
+  auto is_stop = [&](int v) { return stop[v] || degree(v) != 2; };
 
   auto walk = [&](int h0) {
     std::vector<int> chain;
@@ -57,8 +64,7 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
       used[cm.edge[h]] = 1;
       const int w = cm.target[h];
       if(is_stop(w)) break;
-      const std::vector<int>& o = outgoing[w];
-      const int hn = (cm.edge[o[0]] == cm.edge[h]) ? o[1] : o[0];
+      const int hn = (cm.edge[outgoing_at(w, 0)] == cm.edge[h]) ? outgoing_at(w, 1) : outgoing_at(w, 0);
       if(used[cm.edge[hn]]) break;     // closed loop: back at its start
       h = hn;
     }
@@ -67,14 +73,14 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
 
   for(int v = 0; v < cm.n_vertices; ++v) {
     if(!is_stop(v)) continue;
-    for(int h : outgoing[v])
-      if(!used[cm.edge[h]]) walk(h);
+    for(int i = 0; i < degree(v); ++i)
+      if(!used[cm.edge[outgoing_at(v, i)]]) walk(outgoing_at(v, i));
   }
   // loops without stop vertices; the first vertex met with an unused edge is the loop's smallest
   for(int v = 0; v < cm.n_vertices; ++v) {
-    if(outgoing[v].empty() || used[cm.edge[outgoing[v][0]]]) continue;
+    if(degree(v) == 0 || used[cm.edge[outgoing_at(v, 0)]]) continue;
     out.loop_starts.push_back(v);
-    walk(outgoing[v][0]);
+    walk(outgoing_at(v, 0));
   }
 }
 

@@ -131,8 +131,9 @@ inline std::vector<int> field_rotation_sums(const Corner_mesh& cm, const Seam_to
 {
   std::vector<int> K(cm.n_vertices, -1);
   for(int v = 0; v < cm.n_vertices; ++v) if(!cm.vertex_on_border[v]) K[v] = 0;
-  for(int h = 0; h < cm.n_halfedges; ++h)
-    if(K[cm.source(h)] >= 0 && st.is_cut[cm.edge[h]]) K[cm.source(h)] += rot.k[h];
+  for(int e : st.cut_edges)       // cut edges are interior: both halfedges, both endpoints
+    for(int h : {cm.edge_halfedge[e], cm.opp[cm.edge_halfedge[e]]})
+      if(K[cm.source(h)] >= 0) K[cm.source(h)] += rot.k[h];
   for(int& k : K) if(k >= 0) k = ((k % 4) + 4) % 4;
   return K;
 }
