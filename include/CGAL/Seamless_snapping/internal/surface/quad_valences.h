@@ -56,12 +56,24 @@ struct Quad_valence_result
 // q(b - a): the quadrant of the vector from a to b (-1 if a == b)
 inline int quadrant(double ax, double ay, double bx, double by)
 {
+  // by the signs (sx, sy) of the vector: quadrant 0 = {x > 0, y >= 0}, 1 = {x <= 0, y > 0}, 2 = {x < 0, y <= 0},
+  // 3 = {x >= 0, y < 0}; a table instead of branches (the signs of UV edges are unpredictable)
+  static const int table[9] = {2, 2, 1,  3, -1, 1,  3, 0, 0};   // index 3 (sx + 1) + (sy + 1)
   const int sx = (bx > ax) - (bx < ax), sy = (by > ay) - (by < ay);
-  if(sx == 0 && sy == 0) return -1;
-  if(sx > 0 && sy >= 0) return 0;
-  if(sx <= 0 && sy > 0) return 1;
-  if(sx < 0 && sy <= 0) return 2;
-  return 3;
+  return table[3 * (sx + 1) + (sy + 1)];
+}
+
+// the signed number of quadrant boundaries crossed by a corner from the quadrants qa, qb of its edges
+// (quadrant(), both >= 0) and the orientation o of its triangle; false if undetermined
+inline bool quarter_crossings(int qa, int qb, CGAL::Orientation o, int& crossings)
+{
+  if(o == CGAL::COLLINEAR) {
+    if(qa != qb) return false;           // opposite directions: +-180 degrees
+    crossings = 0;
+    return true;
+  }
+  crossings = o == CGAL::LEFT_TURN ? ((qb - qa) % 4 + 4) % 4 : -(((qa - qb) % 4 + 4) % 4);
+  return true;
 }
 
 // the signed number of quadrant boundaries crossed by the corner at q of the triangle (q, a, b)
@@ -71,14 +83,7 @@ inline bool corner_quarter_crossings(const double q[2], const double a[2], const
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
   const int qa = quadrant(q[0], q[1], a[0], a[1]), qb = quadrant(q[0], q[1], b[0], b[1]);
   if(qa < 0 || qb < 0) return false;
-  const CGAL::Orientation o = CGAL::orientation(P(q[0], q[1]), P(a[0], a[1]), P(b[0], b[1]));
-  if(o == CGAL::COLLINEAR) {
-    if(qa != qb) return false;           // opposite directions: +-180 degrees
-    crossings = 0;
-    return true;
-  }
-  crossings = o == CGAL::LEFT_TURN ? ((qb - qa) % 4 + 4) % 4 : -(((qa - qb) % 4 + 4) % 4);
-  return true;
+  return quarter_crossings(qa, qb, CGAL::orientation(P(q[0], q[1]), P(a[0], a[1]), P(b[0], b[1])), crossings);
 }
 
 // the same for the corner h of the corner mesh (its UVs)

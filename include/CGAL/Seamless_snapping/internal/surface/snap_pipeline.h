@@ -208,6 +208,8 @@ struct Snap_state
   std::vector<double> start;
   // 3.-5. project, propagate, repair
   std::vector<double> x;                 // the result, one value per sector variable
+  std::vector<double> oriented_x;        // the x of which x_orientations are the face orientations (orientations_of_x())
+  std::vector<signed char> x_orientations;
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
   std::string untangle_note;
@@ -588,11 +590,20 @@ std::vector<int> target_valences(const Snap_state<TriangleMesh>& S, const Face_c
   return valence;
 }
 
-// the faces whose UV triangle in `x` is not positively oriented (exact test)
+// face_orientations() of S.x (exact), computed again only when S.x changed since the last call
 template <class TriangleMesh>
-std::vector<int> non_positive_faces(const Snap_state<TriangleMesh>& S, const std::vector<double>& x)
+const std::vector<signed char>& orientations_of_x(Snap_state<TriangleMesh>& S)
 {
-  const std::vector<signed char> o = face_orientations(S.cm, S.st, x);
+  if(S.oriented_x.empty() || S.oriented_x != S.x) {
+    S.x_orientations = face_orientations(S.cm, S.st, S.x);
+    S.oriented_x = S.x;
+  }
+  return S.x_orientations;
+}
+
+// the faces whose UV triangle is not positively oriented, from their orientations `o`
+inline std::vector<int> non_positive_faces(const std::vector<signed char>& o)
+{
   std::vector<int> faces;
   for(std::size_t f = 0; f < o.size(); ++f) if(o[f] != CGAL::POSITIVE) faces.push_back(int(f));
   return faces;
@@ -608,7 +619,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
 {
   report.untangle = opt.untangle;
   report.grid_scale = opt.grid_scale;
-  const Orientation_counts snapped = count_orientations(face_orientations(S.cm, S.st, S.x));
+  const Orientation_counts snapped = count_orientations(orientations_of_x(S));
   report.flips_before_untangling = report.flips_after_untangling = snapped.negative;
   report.degenerate_before_untangling = report.degenerate_after_untangling = snapped.degenerate;
   const Uv_change snap = measure_uv_change(S, S.x, S.st.ubar);
@@ -629,7 +640,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   if(opt.integer_grid_map) {
     std::vector<int> seeds;
     for(int v = 0; v < S.cm.n_vertices; ++v) if(turns[std::size_t(v)] != valence[std::size_t(v)]) seeds.push_back(v);
-    for(int f : non_positive_faces(S, S.x)) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
+    for(int f : non_positive_faces(orientations_of_x(S))) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
     for(int v : vertices_near_collapsed_cones(S.cm, S.st, S.rot, fc, S.x, seeds, 2)) valence[std::size_t(v)] = 0;
   }
   for(int v = 0; v < S.cm.n_vertices; ++v) wound += (turns[std::size_t(v)] != valence[std::size_t(v)] && valence[std::size_t(v)] != 0) ? 1 : 0;
@@ -639,7 +650,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   const Variable_rows incidence(S.full, S.x.size());
   std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
-  for(const Fold_explanation& e : prover.explain(non_positive_faces(S, S.x), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
+  for(const Fold_explanation& e : prover.explain(non_positive_faces(orientations_of_x(S)), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
   const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points, from_3d);
   Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded, valence);
   std::vector<double> y = S.x;
@@ -688,7 +699,7 @@ template <class TriangleMesh>
 void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
   const std::vector<signed char>& input = S.input_orientations;
-  const std::vector<signed char> snapped = face_orientations(S.cm, S.st, S.x);
+  const std::vector<signed char>& snapped = orientations_of_x(S);
   const Orientation_counts after = count_orientations(snapped), introduced = count_orientations(snapped, &input);
   report.flips_after = report.flips_after_repair = after.negative;
   report.degenerate_after = report.degenerate_after_repair = after.degenerate;
@@ -722,7 +733,7 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
 template <class TriangleMesh>
 void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
-  const std::vector<int> faces = non_positive_faces(S, S.x);
+  const std::vector<int> faces = non_positive_faces(orientations_of_x(S));
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
   const std::vector<int> valence = target_valences(S, fc);

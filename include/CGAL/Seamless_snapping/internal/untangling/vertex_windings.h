@@ -55,29 +55,46 @@ inline int quarter_turns_of_angle(double angle) { return int(std::lround(angle /
 // per vertex, the angle sum of the map x (2 values per sector) in quarter turns; border and isolated vertices: 4
 inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
 {
-  std::vector<int> turns(std::size_t(cm.n_vertices), 0);
-  std::vector<char> exact(std::size_t(cm.n_vertices), 1), has_corner(std::size_t(cm.n_vertices), 0);
-  for(int pass = 0; pass < 2; ++pass) {       // pass 1: floating-point angles where the exact count is undetermined
-    std::vector<double> angle(pass == 1 ? std::size_t(cm.n_vertices) : 0, 0.);
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  struct Count { int turns = 0; char exact = 1, has_corner = 0; };   // one cache line access per corner
+  std::vector<Count> count(std::size_t(cm.n_vertices));
+  bool all_exact = true;
+  for(int h = 0; h < cm.n_halfedges; ++h) {   // exact counts, once per face: its orientation holds at its 3 corners
+    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;
+    const int corner[3] = {h, cm.next[h], cm.prev[h]};
+    double p[3][2];
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t s = std::size_t(st.sector_of[corner[i]]);
+      p[i][0] = x[2 * s]; p[i][1] = x[2 * s + 1];
+    }
+    const CGAL::Orientation o = CGAL::orientation(P(p[0][0], p[0][1]), P(p[1][0], p[1][1]), P(p[2][0], p[2][1]));
+    for(int i = 0; i < 3; ++i) {
+      const double* q = p[i];
+      const double* a = p[(i + 1) % 3];
+      const double* b = p[(i + 2) % 3];
+      Count& n = count[std::size_t(cm.target[corner[i]])];
+      n.has_corner = 1;
+      const int qa = quadrant(q[0], q[1], a[0], a[1]), qb = quadrant(q[0], q[1], b[0], b[1]);
+      int c = 0;
+      if(qa >= 0 && qb >= 0 && quarter_crossings(qa, qb, o, c)) n.turns += c;
+      else { n.exact = 0; all_exact = false; }
+    }
+  }
+  if(!all_exact) {   // floating-point angles where the exact count is undetermined, summed in corner order
+    std::vector<double> angle(std::size_t(cm.n_vertices), 0.);
     for(int h = 0; h < cm.n_halfedges; ++h) {
-      if(cm.is_border_halfedge(h)) continue;
       const std::size_t v = std::size_t(cm.target[h]);
-      if(pass == 1 && exact[v]) continue;
+      if(cm.is_border_halfedge(h) || count[v].exact) continue;
       double q[2], a[2], b[2];
       corner_uvs(cm, st, x, h, q, a, b);
-      if(pass == 1) { angle[v] += corner_uv_angle(q, a, b); continue; }
-      has_corner[v] = 1;
-      int c = 0;
-      if(corner_quarter_crossings(q, a, b, c)) turns[v] += c;
-      else exact[v] = 0;
+      angle[v] += corner_uv_angle(q, a, b);
     }
-    if(pass == 1)
-      for(int v = 0; v < cm.n_vertices; ++v)
-        if(!exact[std::size_t(v)]) turns[std::size_t(v)] = quarter_turns_of_angle(angle[std::size_t(v)]);
-    if(std::find(exact.begin(), exact.end(), 0) == exact.end()) break;
+    for(std::size_t v = 0; v < count.size(); ++v)
+      if(!count[v].exact) count[v].turns = quarter_turns_of_angle(angle[v]);
   }
-  for(int v = 0; v < cm.n_vertices; ++v)
-    if(cm.vertex_on_border[std::size_t(v)] || !has_corner[std::size_t(v)]) turns[std::size_t(v)] = 4;
+  std::vector<int> turns(count.size());
+  for(std::size_t v = 0; v < count.size(); ++v)
+    turns[v] = cm.vertex_on_border[v] || !count[v].has_corner ? 4 : count[v].turns;
   return turns;
 }
 
