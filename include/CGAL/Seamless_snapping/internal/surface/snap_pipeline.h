@@ -68,7 +68,9 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -213,6 +215,7 @@ struct Snap_state
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
   std::string untangle_note;
+  std::string cone_pair_note;            // collapsed cone pairs next to the windings left, and what merges them (step 5b)
   std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
@@ -739,6 +742,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> valence = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x);
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
+  std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
   for(int v = 0; v < S.cm.n_vertices; ++v) {
     if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
     Winding_defect d;
@@ -748,11 +752,21 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
                 " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
     if(opt.integer_grid_map)
-      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings))
+      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings)) {
         d.message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
                      " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
+        collapsed.insert(std::minmax(c.first, c.second));
+      }
     report.winding_defects.push_back(d);
   }
+  // cone merging (cone_merging.h) makes the pairs whose cone indices cancel regular points of the field
+  std::size_t cancelling = 0;
+  for(const std::pair<int, int>& c : collapsed) cancelling += (K[std::size_t(c.first)] + K[std::size_t(c.second)]) % 4 == 0 ? 1 : 0;
+  if(!collapsed.empty())
+    S.cone_pair_note = "; " + std::to_string(collapsed.size()) + " cone pair(s) rounded onto one integer point lie next to " +
+                       "them, " + std::to_string(cancelling) + " with cancelling indices" +
+                       (opt.merge_cone_pairs || cancelling == 0 ? std::string()
+                                                                : std::string(" (merge_cone_pairs(true), --merge-cone-pairs, makes those regular points)"));
   if(faces.empty()) return;
   const Variable_rows incidence(S.full, S.x.size());
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
@@ -882,7 +896,7 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   }
   if(!report.winding_defects.empty())
     summary += "; not locally injective at " + std::to_string(report.winding_defects.size()) +
-               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)";
+               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)" + S.cone_pair_note;
   return summary + S.flip_note + S.untangle_note;
 }
 
