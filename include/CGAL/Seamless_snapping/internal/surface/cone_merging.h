@@ -79,21 +79,17 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
 // The shortest path of cut edges (of any edges: cut_edges_only = false) from field cone a to a field cone b with
 // K[a] + K[b] = 0 mod 4 that the rounded transitions carry onto a's integer point, every vertex of it within `reach`
 // of that point; empty if none. Other cones on the point may lie on the path (the changes then keep their rotation
-// about that point); cones elsewhere may not. `corner_of`: first_corners(); `seen`: per vertex, all 0 (scratch
-// space, left so).
+// about that point); cones elsewhere may not. `corner_of`: first_corners(); `reached_from`: per vertex, the cone
+// whose search reached it last (-1: none; one search per cone, so no clearing between searches).
 inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
                                     const std::vector<char>& taken, const std::vector<int>& corner_of, int a,
-                                    double reach, bool cut_edges_only, std::vector<char>& seen)
+                                    double reach, bool cut_edges_only, std::vector<int>& reached_from)
 {
   struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
   std::vector<State> states;
-  std::vector<int> marked(1, a);                    // the entries of `seen` (all 0 on entry and on return) set here
-  seen[std::size_t(a)] = 1;
-  struct Clear {
-    std::vector<char>& seen; std::vector<int>& marked;
-    ~Clear() { for(int v : marked) seen[std::size_t(v)] = 0; }
-  } clear{seen, marked};
+  auto seen = [&](int v) { return reached_from[std::size_t(v)] == a; };
+  reached_from[std::size_t(a)] = a;
   // every cut halfedge leaving target(g_in) (except the one back along g_in), with a's point p carried from the
   // chart of face(g_in) to the chart of its face
   auto push_from = [&](int g_in, const long p[2], bool back_allowed, int parent) {
@@ -101,7 +97,7 @@ inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& 
     do {
       const int out = cm.next[g];
       if((!cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
-         !seen[std::size_t(cm.target[out])]) {
+         !seen(cm.target[out])) {
         State s{out, {p[0], p[1]}, parent};
         carry_around(cm, st, rot, t, g_in, out, s.p);
         states.push_back(s);
@@ -116,9 +112,8 @@ inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& 
   for(std::size_t i = 0; i < states.size(); ++i) {
     const State s = states[i];
     const int w = cm.target[s.h];
-    if(seen[std::size_t(w)] || cm.vertex_on_border[w]) continue;
-    seen[std::size_t(w)] = 1;
-    marked.push_back(w);
+    if(seen(w) || cm.vertex_on_border[w]) continue;
+    reached_from[std::size_t(w)] = a;
     const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
     if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > reach) continue;
     if(K[std::size_t(w)] > 0) {
@@ -150,12 +145,13 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
                                                           bool cut_edges_only = true)
 {
   std::vector<int> K = field_rotation_sums(cm, st, rot);     // merged cones become 0: later paths pass them
-  std::vector<char> taken(std::size_t(cm.n_vertices), 0), seen(std::size_t(cm.n_vertices), 0);
+  std::vector<char> taken(std::size_t(cm.n_vertices), 0);
+  std::vector<int> reached_from(std::size_t(cm.n_vertices), -1);
   const std::vector<int> corner_of = first_corners(cm);
   std::vector<Cone_merge> merges;
   for(int a = 0; a < cm.n_vertices; ++a) {
     if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
-    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, seen);
+    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, reached_from);
     if(m.path.empty()) continue;
     taken[std::size_t(m.a)] = taken[std::size_t(m.b)] = 1;
     const int dk = (4 - K[std::size_t(a)]) % 4;
