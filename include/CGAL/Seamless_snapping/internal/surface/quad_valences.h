@@ -64,9 +64,10 @@ inline int quadrant(double ax, double ay, double bx, double by)
 }
 
 // the signed number of quadrant boundaries crossed by a corner from the quadrants qa, qb of its edges
-// (quadrant(), both >= 0) and the orientation o of its triangle; false if undetermined
+// (quadrant(): -1 for an edge of length 0) and the orientation o of its triangle; false if undetermined
 inline bool quarter_crossings(int qa, int qb, CGAL::Orientation o, int& crossings)
 {
+  if(qa < 0 || qb < 0) return false;
   if(o == CGAL::COLLINEAR) {
     if(qa != qb) return false;           // opposite directions: +-180 degrees
     crossings = 0;
@@ -81,9 +82,8 @@ inline bool quarter_crossings(int qa, int qb, CGAL::Orientation o, int& crossing
 inline bool corner_quarter_crossings(const double q[2], const double a[2], const double b[2], int& crossings)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  const int qa = quadrant(q[0], q[1], a[0], a[1]), qb = quadrant(q[0], q[1], b[0], b[1]);
-  if(qa < 0 || qb < 0) return false;
-  return quarter_crossings(qa, qb, CGAL::orientation(P(q[0], q[1]), P(a[0], a[1]), P(b[0], b[1])), crossings);
+  return quarter_crossings(quadrant(q[0], q[1], a[0], a[1]), quadrant(q[0], q[1], b[0], b[1]),
+                           CGAL::orientation(P(q[0], q[1]), P(a[0], a[1]), P(b[0], b[1])), crossings);
 }
 
 // the same for the corner h of the corner mesh (its UVs)

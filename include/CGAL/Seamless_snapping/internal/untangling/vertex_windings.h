@@ -76,7 +76,7 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
       n.has_corner = 1;
       const int qa = quadrant(q[0], q[1], a[0], a[1]), qb = quadrant(q[0], q[1], b[0], b[1]);
       int c = 0;
-      if(qa >= 0 && qb >= 0 && quarter_crossings(qa, qb, o, c)) n.turns += c;
+      if(quarter_crossings(qa, qb, o, c)) n.turns += c;
       else { n.exact = 0; all_exact = false; }
     }
   }
