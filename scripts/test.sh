@@ -7,7 +7,7 @@
 #                 compiles these CGAL tests in half the time of g++; the Release build stays g++; tests in their
 #                 --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
-#                 on 20000 inputs with a fixed seed from generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
+#                 on 10000 inputs with a fixed seed from generated seeds: fuzz__* (skipped with a notice without clang/libFuzzer)
 # Environment: SEAMLESS_SNAPPING_BUILD_DIR (default <repo>/build); SEAMLESS_SNAPPING_BUILD_BENCHMARKS=ON also builds
 # benchmark/ (off here: tables, not tests; scripts/build.sh builds them); SEAMLESS_SNAPPING_CHECKS=0 leaves
 # out the sanitizer and fuzz builds (a quick local run). Any failure makes the script exit non-zero.
