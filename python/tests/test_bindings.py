@@ -645,8 +645,12 @@ def test_extract_quad_mesh_merged_cone_pairs():
     QV, QF, r = ss.extract_quad_mesh(V, F, UV1, FUV1, raise_on_failure=False)
     assert QV is None and r["status"] == "INVALID_INPUT" and "onto one integer point" in r["message"]
     assert kept["merged_cone_pairs"] == []
+    pairs = kept["collapsed_cone_pairs"]   # named next to the windings, as the pairs the merge makes regular
+    assert len(pairs) >= 1 and 1 <= kept["cancelling_collapsed_cone_pairs"] <= len(pairs)
+    assert all(a < b and any("the cones at vertices %d and %d" % (a, b) in w["message"] for w in kept["winding_defects"])
+               for a, b in pairs)
     UV2, FUV2, merged = ss.snap(V, F, UV, FUV, integer_grid_map=True, merge_cone_pairs=True)
-    assert len(merged["merged_cone_pairs"]) > 0 and merged["winding_defects"] == []
+    assert len(merged["merged_cone_pairs"]) > 0 and merged["winding_defects"] == [] and merged["collapsed_cone_pairs"] == []
     assert merged["field_cones"] + 2 * len(merged["merged_cone_pairs"]) == kept["field_cones"]
     assert ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2)

@@ -1037,11 +1037,27 @@ static void test_untangling_data()
       for(const SS::Winding_defect& w : r.winding_defects) near_pairs += w.message.find("cone pair") != std::string::npos ? 1 : 0;
       assert(r.flips_after_repair > 0 && 2 * near_pairs > r.winding_defects.size());
       assert(r.message.find("with cancelling indices (merge_cone_pairs(true)") != std::string::npos);
+      // the same pairs as fields: each named by a winding defect, the count of cancelling ones as in the message
+      assert(!r.collapsed_cone_pairs.empty() && r.cancelling_collapsed_cone_pairs > 0 &&
+             r.cancelling_collapsed_cone_pairs <= r.collapsed_cone_pairs.size());
+      assert(r.message.find(std::to_string(r.collapsed_cone_pairs.size()) + " cone pair(s) rounded onto one integer point") != std::string::npos);
+      assert(r.message.find(", " + std::to_string(r.cancelling_collapsed_cone_pairs) + " with cancelling indices") != std::string::npos);
+      for(std::size_t i = 0; i < r.collapsed_cone_pairs.size(); ++i) {
+        const std::pair<std::size_t, std::size_t>& p = r.collapsed_cone_pairs[i];
+        assert(p.first < p.second && (i == 0 || r.collapsed_cone_pairs[i - 1] < p));
+        const std::string named = "the cones at vertices " + std::to_string(p.first) + " and " + std::to_string(p.second);
+        bool found = false;
+        for(const SS::Winding_defect& w : r.winding_defects) found = found || w.message.find(named) != std::string::npos;
+        assert(found);
+      }
+      const std::string json = r.to_json();
+      assert(json.find("\"collapsed_cone_pairs\": [[" + std::to_string(r.collapsed_cone_pairs.front().first) + ", ") != std::string::npos);
       continue;
     }
     if(c.igm) for(const SS::Winding_defect& w : r.winding_defects) assert(w.message.find("cone pair") != std::string::npos);
     assert(r.flips_after_repair == 0);
     if(c.merge) assert(!r.merged_cone_pairs.empty() && r.message.find("merge_cone_pairs(true)") == std::string::npos);
+    if(r.winding_defects.empty()) assert(r.collapsed_cone_pairs.empty() && r.cancelling_collapsed_cone_pairs == 0);
     // default mode: no forced triangle; locally injective everywhere but on duck_qc_8 (a few vertices left wound)
     if(!c.igm) assert(r.degenerate_after_repair == 0);
     if(!c.igm && std::strcmp(c.file, "libqex/duck_qc_8_param.obj") != 0) assert(r.winding_defects.empty());

@@ -149,6 +149,8 @@ struct Snap_report
   std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
   std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
   std::vector<std::pair<std::size_t, std::size_t> > merged_cone_pairs; ///< `merge_cone_pairs`: the +-90 degree cone pairs (vertex indices) that the rounded translations put onto one integer point, made regular points of the field; not counted in `field_cones`
+  std::vector<std::pair<std::size_t, std::size_t> > collapsed_cone_pairs; ///< `integer_grid_map`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, found next to the `winding_defects` (within a few face rings); each is named in the message of a winding defect next to it
+  std::size_t cancelling_collapsed_cone_pairs = 0; ///< of `collapsed_cone_pairs`, those whose rotations k sum to a multiple of 4 (a +90 and a -90 degree cone): `merge_cone_pairs(true)` makes such pairs regular points
   std::size_t merged_cut_edges = 0;            ///< `merge_cone_pairs`: cut edges whose rotation k (and translation) changed to merge them
   std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
@@ -233,6 +235,11 @@ struct Snap_report
     for(std::size_t i = 0; i < merged_cone_pairs.size(); ++i)
       o << (i ? ", " : "") << "[" << merged_cone_pairs[i].first << ", " << merged_cone_pairs[i].second << "]";
     o << "],\n";
+    o << "  \"collapsed_cone_pairs\": [";
+    for(std::size_t i = 0; i < collapsed_cone_pairs.size(); ++i)
+      o << (i ? ", " : "") << "[" << collapsed_cone_pairs[i].first << ", " << collapsed_cone_pairs[i].second << "]";
+    o << "],\n";
+    num("cancelling_collapsed_cone_pairs", double(cancelling_collapsed_cone_pairs));
     num("merged_cut_edges", double(merged_cut_edges)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));
     o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";

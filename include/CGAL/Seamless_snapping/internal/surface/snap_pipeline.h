@@ -760,11 +760,14 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     report.winding_defects.push_back(d);
   }
   // cone merging (cone_merging.h) makes the pairs whose cone indices cancel regular points of the field
-  std::size_t cancelling = 0;
-  for(const std::pair<int, int>& c : collapsed) cancelling += (K[std::size_t(c.first)] + K[std::size_t(c.second)]) % 4 == 0 ? 1 : 0;
+  for(const std::pair<int, int>& c : collapsed) {
+    report.collapsed_cone_pairs.emplace_back(std::size_t(c.first), std::size_t(c.second));
+    report.cancelling_collapsed_cone_pairs += (K[std::size_t(c.first)] + K[std::size_t(c.second)]) % 4 == 0 ? 1 : 0;
+  }
+  const std::size_t cancelling = report.cancelling_collapsed_cone_pairs;
   if(!collapsed.empty())
     S.cone_pair_note = "; " + std::to_string(collapsed.size()) + " cone pair(s) rounded onto one integer point lie next to " +
-                       "them, " + std::to_string(cancelling) + " with cancelling indices" +
+                       "them (Snap_report::collapsed_cone_pairs), " + std::to_string(cancelling) + " with cancelling indices" +
                        (opt.merge_cone_pairs || cancelling == 0 ? std::string()
                                                                 : std::string(" (merge_cone_pairs(true), --merge-cone-pairs, makes those regular points)"));
   if(faces.empty()) return;
