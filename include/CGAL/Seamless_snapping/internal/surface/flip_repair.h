@@ -80,6 +80,7 @@
 // constraints has that face positive.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
 #include <CGAL/Seamless_snapping/internal/surface/local_null_space.h>
@@ -185,8 +186,8 @@ class Flip_repair
   std::vector<double>& x;
   const std::vector<double>* ubar_ = nullptr;
   std::vector<int> face_corner;                    // per face: one of its halfedges
-  std::vector<std::size_t> sc_start; std::vector<int> sc_corner;   // sector -> its corners (CSR)
-  std::vector<std::size_t> vr_start; std::vector<int> vr_row;      // variable -> rows (CSR)
+  Index_lists sector_corners;                      // sector -> its corners
+  Index_lists var_rows;                            // variable -> the rows that mention it
   std::vector<int> group_of;                       // per sector: group index, -1 = fixed
   std::vector<Group> groups;
   std::vector<signed char> orient_;                // current orientation per face (exact)
@@ -205,9 +206,9 @@ class Flip_repair
   std::vector<std::pair<int, double> > prefix_new_; // its new values
   // node moves
   const Reduced_system& rs;
-  std::vector<std::size_t> vs_start; std::vector<int> vs_sector;   // vertex -> its sectors (CSR)
-  std::vector<std::size_t> nr_start; std::vector<int> nr_row;      // variable -> rows of the node system C (CSR)
-  std::vector<std::vector<int> > cut_from, align_from;             // sector -> branches that start at it (u_0)
+  Index_lists vertex_sectors;                                      // vertex -> its sectors
+  Index_lists var_node_rows;                                       // variable -> rows of the node system C
+  Index_lists cut_from, align_from;                                // sector -> branches that start at it (u_0)
   std::vector<int> col_of;                                         // variable -> column of the local system, -1
   std::vector<int> face_stamp; int stamp = 0;
   mutable std::vector<signed char> forced_;                        // per face: forced_degenerate(), -1 = not computed yet
@@ -228,39 +229,28 @@ public:
   {
     const int ns = st.n_sectors;
     face_corner.assign(cm.n_faces, -1);
-    std::vector<std::size_t> count(ns + 1, 0);
-    for(int h = 0; h < cm.n_halfedges; ++h) {
-      if(cm.is_border_halfedge(h)) continue;
-      if(face_corner[cm.face[h]] < 0) face_corner[cm.face[h]] = h;
-      ++count[st.sector_of[h] + 1];
-    }
-    sc_start.assign(ns + 1, 0);
-    for(int s = 0; s < ns; ++s) sc_start[s + 1] = sc_start[s] + count[s + 1];
-    sc_corner.assign(sc_start[ns], -1);
-    std::vector<std::size_t> fill(sc_start.begin(), sc_start.end() - 1);
     for(int h = 0; h < cm.n_halfedges; ++h)
-      if(!cm.is_border_halfedge(h)) sc_corner[fill[st.sector_of[h]]++] = h;
-
+      if(!cm.is_border_halfedge(h) && face_corner[cm.face[h]] < 0) face_corner[cm.face[h]] = h;
+    sector_corners.build(ns, [&](auto emit) {
+      for(int h = 0; h < cm.n_halfedges; ++h) if(!cm.is_border_halfedge(h)) emit(st.sector_of[h], h);
+    });
     const std::size_t nv = 2 * std::size_t(ns);
-    csr_index(nv, rows, vr_start, vr_row);
-    csr_index(nv, rs.node_rows, nr_start, nr_row);
+    rows_by_variable(nv, rows, var_rows);
+    rows_by_variable(nv, rs.node_rows, var_node_rows);
     col_of.assign(nv, -1);
     face_stamp.assign(cm.n_faces, 0);
     forced_.assign(cm.n_faces, -1);
     null_space_of_.assign(cm.n_faces, std::array<int, 3>{{-1, -1, -1}});
-    vs_start.assign(cm.n_vertices + 1, 0);
-    for(int t = 0; t < ns; ++t) ++vs_start[st.sector_vertex(cm, t) + 1];
-    for(int v = 0; v < cm.n_vertices; ++v) vs_start[v + 1] += vs_start[v];
-    vs_sector.assign(ns, -1);
-    std::vector<std::size_t> sfill(vs_start.begin(), vs_start.end() - 1);
-    for(int t = 0; t < ns; ++t) vs_sector[sfill[st.sector_vertex(cm, t)]++] = t;
-    cut_from.assign(ns, std::vector<int>());
-    align_from.assign(ns, std::vector<int>());
-    for(std::size_t b = 0; b < rs.cut_branches.size(); ++b) {
-      cut_from[rs.cut_branches[b].u0_plus].push_back(int(b));
-      if(rs.cut_branches[b].u0_minus != rs.cut_branches[b].u0_plus) cut_from[rs.cut_branches[b].u0_minus].push_back(int(b));
-    }
-    for(std::size_t b = 0; b < rs.align_branches.size(); ++b) align_from[rs.align_branches[b].u0].push_back(int(b));
+    vertex_sectors.build(cm.n_vertices, [&](auto emit) { for(int t = 0; t < ns; ++t) emit(st.sector_vertex(cm, t), t); });
+    cut_from.build(ns, [&](auto emit) {
+      for(std::size_t b = 0; b < rs.cut_branches.size(); ++b) {
+        emit(rs.cut_branches[b].u0_plus, int(b));
+        if(rs.cut_branches[b].u0_minus != rs.cut_branches[b].u0_plus) emit(rs.cut_branches[b].u0_minus, int(b));
+      }
+    });
+    align_from.build(ns, [&](auto emit) {
+      for(std::size_t b = 0; b < rs.align_branches.size(); ++b) emit(rs.align_branches[b].u0, int(b));
+    });
 
     // move groups: the inner sectors of the branches, then the sectors in no row. A sector that
     // would belong to two groups (not expected) stays fixed, and so do its partners.
@@ -287,23 +277,20 @@ public:
       groups.push_back(std::move(g));
     }
     for(int s = 0; s < ns; ++s) {
-      if(uses[s] > 0 || vr_start[2 * s + 2] != vr_start[2 * s]) continue;   // on a branch, or in some row
+      if(uses[s] > 0 || !var_rows[2 * s].empty() || !var_rows[2 * s + 1].empty()) continue;   // on a branch, or in some row
       Group g; g.kind = 0; g.m = {Member{s, 0}};
       group_of[s] = int(groups.size());
       groups.push_back(std::move(g));
     }
   }
 
-  // variable -> rows that mention it, as CSR
-  static void csr_index(std::size_t nv, const Constraint_rows& r, std::vector<std::size_t>& start, std::vector<int>& row)
+  // variable -> the rows of r that mention it, in row order
+  static void rows_by_variable(std::size_t nv, const Constraint_rows& r, Index_lists& out)
   {
-    start.assign(nv + 1, 0);
-    for(int c : r.col) ++start[c + 1];
-    for(std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    row.assign(start[nv], -1);
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for(std::size_t i = 0; i < r.size(); ++i)
-      for(std::size_t k = r.start[i]; k < r.start[i + 1]; ++k) row[fill[r.col[k]]++] = int(i);
+    out.build(int(nv), [&](auto emit) {
+      for(std::size_t i = 0; i < r.size(); ++i)
+        for(std::size_t k = r.start[i]; k < r.start[i + 1]; ++k) emit(r.col[k], int(i));
+    });
   }
 
   int face_sector(int f, int i) const
@@ -413,8 +400,8 @@ private:
     cluster = g;
     for(std::size_t i = 0; i < g.m.size(); ++i) {
       const int s = g.m[i].sector;
-      for(std::size_t k = sc_start[s]; k < sc_start[s + 1]; ++k)
-        for(int h : {cm.next[sc_corner[k]], cm.prev[sc_corner[k]]}) {
+      for(int corner : sector_corners[s])
+        for(int h : {cm.next[corner], cm.prev[corner]}) {
           const int t = st.sector_of[h];
           if(group_of[t] < 0 || groups[std::size_t(group_of[t])].kind != 0 || group_of[t] == group_of[s]) continue;
           if(!(std::fabs(x[2 * t] - x[2 * s]) <= 2 * max_move && std::fabs(x[2 * t + 1] - x[2 * s + 1]) <= 2 * max_move)) continue;
@@ -468,8 +455,8 @@ private:
   {
     corners.clear(); member.clear();
     for(int i = 0; i < int(g.m.size()); ++i)
-      for(std::size_t k = sc_start[g.m[i].sector]; k < sc_start[g.m[i].sector + 1]; ++k) {
-        corners.push_back(sc_corner[k]);
+      for(int corner : sector_corners[g.m[i].sector]) {
+        corners.push_back(corner);
         member.push_back(i);
       }
   }
@@ -744,8 +731,8 @@ private:
     long gain = 0, deficit_decrease = 0;
     for(const std::pair<int, double>& v : ch.old) {
       const int s = v.first / 2;
-      for(std::size_t k = sc_start[s]; k < sc_start[s + 1]; ++k) {
-        const int f = cm.face[sc_corner[k]];
+      for(int corner : sector_corners[s]) {
+        const int f = cm.face[corner];
         if(face_stamp[f] == stamp) continue;
         face_stamp[f] = stamp;
         const signed char o = static_cast<signed char>(face_orientation(f, x));
@@ -771,8 +758,8 @@ private:
     for(const std::pair<int, double>& v : ch.old)
       if(!std::isfinite(x[v.first]) || !(std::fabs(x[v.first] - (*ubar_)[v.first]) <= max_move)) return false;
     for(const std::pair<int, double>& v : ch.old)
-      for(std::size_t k = vr_start[v.first]; k < vr_start[v.first + 1]; ++k)
-        if(!row_holds_exactly(rows, std::size_t(vr_row[k]), x)) return false;
+      for(int row : var_rows[v.first])
+        if(!row_holds_exactly(rows, std::size_t(row), x)) return false;
     return true;
   }
 
@@ -811,12 +798,12 @@ private:
     if(vertices.empty()) return false;
     for(int level = 0; level < radius; ++level)
     for(std::size_t i = 0, n_level = vertices.size(); i < n_level; ++i)
-      for(std::size_t k = vs_start[vertices[i]]; k < vs_start[vertices[i] + 1]; ++k)
+      for(int sector : vertex_sectors[vertices[i]])
         for(int c = 0; c < 2; ++c) {
-          const int var = 2 * vs_sector[k] + c;
-          for(std::size_t j = nr_start[var]; j < nr_start[var + 1]; ++j) {
+          const int var = 2 * sector + c;
+          for(int row : var_node_rows[var]) {
             const Constraint_rows& C = rs.node_rows;
-            for(std::size_t e = C.start[nr_row[j]]; e < C.start[nr_row[j] + 1]; ++e) {
+            for(std::size_t e = C.start[std::size_t(row)]; e < C.start[std::size_t(row) + 1]; ++e) {
               const int w = st.sector_vertex(cm, C.col[e] / 2);
               if(std::find(vertices.begin(), vertices.end(), w) == vertices.end()) vertices.push_back(w);
             }
@@ -824,7 +811,7 @@ private:
         }
     vars.clear();
     for(int v : vertices)
-      for(std::size_t k = vs_start[v]; k < vs_start[v + 1]; ++k) { vars.push_back(2 * vs_sector[k]); vars.push_back(2 * vs_sector[k] + 1); }
+      for(int sector : vertex_sectors[v]) { vars.push_back(2 * sector); vars.push_back(2 * sector + 1); }
     return vars.size() <= 96;
   }
 
@@ -890,7 +877,7 @@ private:
     for(std::size_t j = 0; j < vars.size(); ++j) col_of[vars[j]] = int(j);
     std::vector<int> local_rows;
     for(int var : vars)
-      for(std::size_t k = nr_start[var]; k < nr_start[var + 1]; ++k) local_rows.push_back(nr_row[k]);
+      for(int row : var_node_rows[var]) local_rows.push_back(row);
     std::sort(local_rows.begin(), local_rows.end());
     local_rows.erase(std::unique(local_rows.begin(), local_rows.end()), local_rows.end());
     std::vector<long> a(local_rows.size() * vars.size(), 0);
@@ -948,8 +935,8 @@ private:
     for(int i = 0; i < 3; ++i) { vars.push_back(2 * face_sector(f, i)); vars.push_back(2 * face_sector(f, i) + 1); }
     std::vector<std::pair<const Constraint_rows*, int> > local;
     for(int var : vars) {
-      for(std::size_t k = nr_start[var]; k < nr_start[var + 1]; ++k) local.emplace_back(&rs.node_rows, nr_row[k]);
-      for(std::size_t k = vr_start[var]; k < vr_start[var + 1]; ++k) local.emplace_back(&rows, vr_row[k]);
+      for(int row : var_node_rows[var]) local.emplace_back(&rs.node_rows, row);
+      for(int row : var_rows[var]) local.emplace_back(&rows, row);
     }
     std::sort(local.begin(), local.end());
     local.erase(std::unique(local.begin(), local.end()), local.end());
