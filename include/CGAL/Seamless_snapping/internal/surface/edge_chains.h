@@ -22,6 +22,7 @@
 // which is reported in `loop_starts` (for branches it becomes a node).
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 
 #include <cstddef>
 #include <vector>
@@ -43,16 +44,13 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
                                   const std::vector<char>& stop, Edge_chains& out)
 {
   out.chains.clear(); out.loop_starts.clear();
-  // outgoing set halfedges per vertex, in increasing halfedge index order: outgoing[first[v] .. first[v + 1])
-  // (a counting sort of the set halfedges by their source, stable)
-  std::vector<int> set_halfedges, first(std::size_t(cm.n_vertices) + 1, 0);
-  for(int h = 0; h < cm.n_halfedges; ++h)
-    if(in_set[cm.edge[h]]) { set_halfedges.push_back(h); ++first[std::size_t(cm.source(h)) + 1]; }
-  for(std::size_t v = 0; v < std::size_t(cm.n_vertices); ++v) first[v + 1] += first[v];
-  std::vector<int> outgoing(set_halfedges.size()), fill(first.begin(), first.end() - 1);
-  for(int h : set_halfedges) outgoing[std::size_t(fill[std::size_t(cm.source(h))]++)] = h;
-  auto degree = [&](int v) { return first[std::size_t(v) + 1] - first[std::size_t(v)]; };
-  auto outgoing_at = [&](int v, int i) { return outgoing[std::size_t(first[std::size_t(v)] + i)]; };
+  // outgoing set halfedges per vertex, in increasing halfedge index order
+  std::vector<int> set_halfedges;
+  for(int h = 0; h < cm.n_halfedges; ++h) if(in_set[cm.edge[h]]) set_halfedges.push_back(h);
+  Index_lists outgoing;
+  outgoing.build(cm.n_vertices, [&](auto emit) { for(int h : set_halfedges) emit(cm.source(h), h); });
+  auto degree = [&](int v) { return outgoing[v].size(); };
+  auto outgoing_at = [&](int v, int i) { return outgoing[v].begin()[i]; };
   std::vector<char> used(cm.n_edges, 0);
   auto is_stop = [&](int v) { return stop[v] || degree(v) != 2; };
 

@@ -32,6 +32,7 @@ struct Index_lists
     const int* begin() const { return first; }
     const int* end() const { return last; }
     bool empty() const { return first == last; }
+    int size() const { return int(last - first); }
   };
 
   // `each(emit)` calls emit(key, item) for every item, twice in the same order (once to count, once to place)

@@ -94,14 +94,7 @@ private:
   void build_local_system(const std::vector<int>& faces, int radius)
   {
     // sectors of the vertices within `radius` face rings of the faces
-    // the faces of each vertex v: face_of[first[v] .. first[v + 1]) (one array, not a vector per vertex)
-    std::vector<int> first(std::size_t(cm_.n_vertices) + 1, 0), face_of(3 * fc_.halfedge.size());
-    for(const std::array<int, 3>& hs : fc_.halfedge)
-      for(int h : hs) ++first[std::size_t(cm_.target[h]) + 1];
-    for(std::size_t v = 0; v < std::size_t(cm_.n_vertices); ++v) first[v + 1] += first[v];
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
-      for(int h : fc_.halfedge[f]) face_of[std::size_t(fill[std::size_t(cm_.target[h])]++)] = int(f);
+    const Index_lists faces_of = vertex_faces(cm_, fc_);
     std::vector<char> in(std::size_t(cm_.n_vertices), 0);
     std::vector<int> front;
     for(int f : faces)
@@ -110,8 +103,8 @@ private:
     for(int r = 0; r < radius; ++r) {
       std::vector<int> next;
       for(int v : front)
-        for(int i = first[std::size_t(v)]; i < first[std::size_t(v) + 1]; ++i)
-          for(int h : fc_.halfedge[std::size_t(face_of[std::size_t(i)])])
+        for(int f : faces_of[v])
+          for(int h : fc_.halfedge[std::size_t(f)])
             if(!in[std::size_t(cm_.target[h])]) { in[std::size_t(cm_.target[h])] = 1; next.push_back(cm_.target[h]); }
       front.swap(next);
     }

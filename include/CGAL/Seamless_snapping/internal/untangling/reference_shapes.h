@@ -23,6 +23,7 @@
 //   the scale gives (or the median UV area of the good faces).
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
 
@@ -52,6 +53,17 @@ struct Face_corners
     }
   }
 };
+
+// the faces of each vertex (the targets of their corners), in increasing face order
+inline Index_lists vertex_faces(const Corner_mesh& cm, const Face_corners& fc)
+{
+  Index_lists out;
+  out.build(cm.n_vertices, [&](auto emit) {
+    for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
+      for(int h : fc.halfedge[f]) emit(cm.target[h], int(f));
+  });
+  return out;
+}
 
 // twice the signed area and the thinness longest edge^2 / (2 area) of a triangle (2D)
 inline double twice_area_2(const double a[2], const double b[2], const double c[2])

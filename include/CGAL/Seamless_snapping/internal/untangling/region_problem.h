@@ -72,7 +72,7 @@ public:
   // Builds the problem of `regions` (vertex sets) at x; faces with `excluded` set are left out.
   Status build(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Variable_rows& incidence,
                const Face_corners& fc, const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded,
-               const std::vector<std::size_t>& vertex_faces_start, const std::vector<int>& vertex_faces,
+               const Index_lists& vertex_faces,
                const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
                const std::vector<double>* target, std::string& message)
   {
@@ -99,8 +99,7 @@ public:
     std::vector<int> touched;
     for(const std::vector<int>& region : regions)
       for(int v : region)
-        for(std::size_t k = vertex_faces_start[std::size_t(v)]; k < vertex_faces_start[std::size_t(v) + 1]; ++k)
-          touched.push_back(vertex_faces[k]);
+        for(int f : vertex_faces[v]) touched.push_back(f);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     std::vector<std::pair<int, int> > var_regions;

@@ -106,16 +106,8 @@ public:
   Untangler(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Face_corners& fc,
             const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded, const std::vector<int>& valence)
     : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded), valence_(valence),
-      incidence_(rows, 2 * std::size_t(st.n_sectors)), vertex_faces_start_(std::size_t(cm.n_vertices) + 1, 0)
-  {
-    for(const std::array<int, 3>& h : fc_.halfedge)
-      for(int m = 0; m < 3; ++m) ++vertex_faces_start_[std::size_t(cm_.target[h[m]]) + 1];
-    for(int v = 0; v < cm_.n_vertices; ++v) vertex_faces_start_[std::size_t(v) + 1] += vertex_faces_start_[std::size_t(v)];
-    vertex_faces_.resize(vertex_faces_start_.back());
-    std::vector<std::size_t> pos(vertex_faces_start_.begin(), vertex_faces_start_.end() - 1);
-    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f)
-      for(int m = 0; m < 3; ++m) vertex_faces_[pos[std::size_t(cm_.target[fc_.halfedge[f][m]])]++] = int(f);
-  }
+      incidence_(rows, 2 * std::size_t(st.n_sectors)), vertex_faces_(vertex_faces(cm, fc))
+  {}
 
   // Untangles x (2 values per sector, an exact solution of the rows on input) in place (see the header).
   // Two sweeps over the ring sizes: the first aims at the non-positive faces only, the second also at the
@@ -190,24 +182,20 @@ private:
     Map_state m = base;
     std::vector<char> seen(std::size_t(cm_.n_vertices), 0), done(fc_.halfedge.size(), 0);
     std::vector<int> changed, corners;
-    auto faces_of = [&](int v) {
-      return std::make_pair(vertex_faces_.begin() + std::ptrdiff_t(vertex_faces_start_[std::size_t(v)]),
-                            vertex_faces_.begin() + std::ptrdiff_t(vertex_faces_start_[std::size_t(v) + 1]));
-    };
     for(int v : moved)
-      for(auto r = faces_of(v); r.first != r.second; ++r.first)
-        for(int h : fc_.halfedge[std::size_t(*r.first)])
+      for(int f : vertex_faces_[v])
+        for(int h : fc_.halfedge[std::size_t(f)])
           if(!seen[std::size_t(cm_.target[h])]) { seen[std::size_t(cm_.target[h])] = 1; changed.push_back(cm_.target[h]); }
     for(int w : changed) {
       corners.clear();
-      for(auto r = faces_of(w); r.first != r.second; ++r.first)
-        for(int h : fc_.halfedge[std::size_t(*r.first)]) if(cm_.target[h] == w) corners.push_back(h);
+      for(int f : vertex_faces_[w])
+        for(int h : fc_.halfedge[std::size_t(f)]) if(cm_.target[h] == w) corners.push_back(h);
       std::sort(corners.begin(), corners.end());
       m.turns[std::size_t(w)] = vertex_quarter_turns_at(cm_, st_, y, w, corners);
     }
     for(int w : changed)
-      for(auto r = faces_of(w); r.first != r.second; ++r.first) {
-        const std::size_t f = std::size_t(*r.first);
+      for(int g : vertex_faces_[w]) {
+        const std::size_t f = std::size_t(g);
         if(!done[f]) { done[f] = 1; m.face[f] = face_state(f, y, m.turns); }
       }
     return m;
@@ -266,7 +254,7 @@ private:
   Status build(Region_problem& problem, const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
                const std::vector<double>* target, Untangle_statistics& stats, std::string& message) const
   {
-    Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, vertex_faces_start_, vertex_faces_,
+    Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, vertex_faces_,
                              regions, x, target, message);
     if(s != SUCCESS) { message = "untangling: null space of the region's constraint rows: " + message; return s; }
     ++stats.attempts;
@@ -293,8 +281,8 @@ private:
       for(std::size_t i = 0; i < faces.size(); ++i) {
         std::vector<int> next;
         for(int v : fronts[i])
-          for(std::size_t q = vertex_faces_start_[std::size_t(v)]; q < vertex_faces_start_[std::size_t(v) + 1]; ++q)
-            for(int h : fc_.halfedge[std::size_t(vertex_faces_[q])]) reach(cm_.target[h], i, next);
+          for(int f : vertex_faces_[v])
+            for(int h : fc_.halfedge[std::size_t(f)]) reach(cm_.target[h], i, next);
         fronts[i].swap(next);
       }
     std::vector<int> index(faces.size(), -1);
@@ -443,8 +431,7 @@ private:
   const std::vector<char>& excluded_;
   const std::vector<int>& valence_;
   Variable_rows incidence_;
-  std::vector<std::size_t> vertex_faces_start_;
-  std::vector<int> vertex_faces_;
+  Index_lists vertex_faces_;                                   // faces of each vertex
   double budget_ = 0;                                          // face evaluations of step 1 (run())
 };
 
