@@ -202,6 +202,11 @@ struct Snap_report
       o << "  \"" << k << "\": " << IO::internal::json_string(v) << (comma ? ",\n" : "\n");
     };
     auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
+    auto vertex_pairs = [&](const char* k, const std::vector<std::pair<std::size_t, std::size_t> >& v) {
+      o << "  \"" << k << "\": [";
+      for(std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << "[" << v[i].first << ", " << v[i].second << "]";
+      o << "],\n";
+    };
     o << "{\n";
     str("status", status_name(status));
     str("message", message);
@@ -231,14 +236,8 @@ struct Snap_report
     num("cones_on_integer_points_after", double(cones_on_integer_points_after));
     o << "  \"near_integer_grid_map\": " << (near_integer_grid_map ? "true" : "false") << ",\n";
     num("pinned_cones", double(pinned_cones)); num("not_field_cones", double(not_field_cones.size()));
-    o << "  \"merged_cone_pairs\": [";
-    for(std::size_t i = 0; i < merged_cone_pairs.size(); ++i)
-      o << (i ? ", " : "") << "[" << merged_cone_pairs[i].first << ", " << merged_cone_pairs[i].second << "]";
-    o << "],\n";
-    o << "  \"collapsed_cone_pairs\": [";
-    for(std::size_t i = 0; i < collapsed_cone_pairs.size(); ++i)
-      o << (i ? ", " : "") << "[" << collapsed_cone_pairs[i].first << ", " << collapsed_cone_pairs[i].second << "]";
-    o << "],\n";
+    vertex_pairs("merged_cone_pairs", merged_cone_pairs);
+    vertex_pairs("collapsed_cone_pairs", collapsed_cone_pairs);
     num("cancelling_collapsed_cone_pairs", double(cancelling_collapsed_cone_pairs));
     num("merged_cut_edges", double(merged_cut_edges)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));

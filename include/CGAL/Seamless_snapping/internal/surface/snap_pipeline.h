@@ -215,7 +215,6 @@ struct Snap_state
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
   std::string untangle_note;
-  std::string cone_pair_note;            // collapsed cone pairs next to the windings left, and what merges them (step 5b)
   std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
@@ -764,12 +763,6 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     report.collapsed_cone_pairs.emplace_back(std::size_t(c.first), std::size_t(c.second));
     report.cancelling_collapsed_cone_pairs += (K[std::size_t(c.first)] + K[std::size_t(c.second)]) % 4 == 0 ? 1 : 0;
   }
-  const std::size_t cancelling = report.cancelling_collapsed_cone_pairs;
-  if(!collapsed.empty())
-    S.cone_pair_note = "; " + std::to_string(collapsed.size()) + " cone pair(s) rounded onto one integer point lie next to " +
-                       "them (Snap_report::collapsed_cone_pairs), " + std::to_string(cancelling) + " with cancelling indices" +
-                       (opt.merge_cone_pairs || cancelling == 0 ? std::string()
-                                                                : std::string(" (merge_cone_pairs(true), --merge-cone-pairs, makes those regular points)"));
   if(faces.empty()) return;
   const Variable_rows incidence(S.full, S.x.size());
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
@@ -899,7 +892,13 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   }
   if(!report.winding_defects.empty())
     summary += "; not locally injective at " + std::to_string(report.winding_defects.size()) +
-               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)" + S.cone_pair_note;
+               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)";
+  const std::size_t cancelling = report.cancelling_collapsed_cone_pairs;
+  if(!report.collapsed_cone_pairs.empty())
+    summary += "; " + std::to_string(report.collapsed_cone_pairs.size()) + " cone pair(s) rounded onto one integer point " +
+               "lie next to them (Snap_report::collapsed_cone_pairs), " + std::to_string(cancelling) + " with cancelling indices" +
+               (opt.merge_cone_pairs || cancelling == 0 ? std::string()
+                                                        : std::string(" (merge_cone_pairs(true), --merge-cone-pairs, makes those regular points)"));
   return summary + S.flip_note + S.untangle_note;
 }
 
