@@ -24,6 +24,7 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 #include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
@@ -115,7 +116,6 @@ public:
     Status s = build_region_space(rows, incidence, vars, space, message);
     if(s != SUCCESS) return s;
 
-    std::vector<std::vector<int> > column_rows(space.dimension);   // per column b: its rows a >= b
     auto local = [&](int var) -> long {
       auto it = std::lower_bound(vars.begin(), vars.end(), var);
       return it != vars.end() && *it == var ? long(it - vars.begin()) : -1;
@@ -156,33 +156,15 @@ public:
         e.BM[4 * j + std::size_t(2 * c)] += r.q[m][0] * t.second.second;
         e.BM[4 * j + std::size_t(2 * c + 1)] += r.q[m][1] * t.second.second;
       }
-      for(std::size_t a = 0; a < n; ++a)
-        for(std::size_t b = 0; b <= a; ++b) column_rows[std::size_t(e.w[b])].push_back(e.w[a]);
       faces.push_back(std::move(e));
     }
     h2 = faces.empty() ? 1. : area_sum / double(faces.size());
     offset.clear();
     if(target != nullptr) {
       offset.resize(vars.size());
-      for(std::size_t l = 0; l < vars.size(); ++l) {
-        offset[l] = x[std::size_t(vars[l])] - (*target)[std::size_t(vars[l])];
-        for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a)
-          for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
-            if(space.w_index[b] <= space.w_index[a]) column_rows[std::size_t(space.w_index[b])].push_back(space.w_index[a]);
-      }
+      for(std::size_t l = 0; l < vars.size(); ++l) offset[l] = x[std::size_t(vars[l])] - (*target)[std::size_t(vars[l])];
     }
-    // the pattern of the lower triangle, with the diagonal
-    std::vector<Eigen::Triplet<double> > pattern;
-    for(std::size_t b = 0; b < space.dimension; ++b) {
-      std::vector<int>& rs = column_rows[b];
-      rs.push_back(int(b));
-      std::sort(rs.begin(), rs.end());
-      rs.erase(std::unique(rs.begin(), rs.end()), rs.end());
-      for(int a : rs) pattern.emplace_back(a, int(b), 0.);
-    }
-    H = Matrix(Eigen::Index(space.dimension), Eigen::Index(space.dimension));
-    H.setFromTriplets(pattern.begin(), pattern.end());
-    H.makeCompressed();
+    set_pattern();
     for(Face& e : faces) {
       const std::size_t n = e.w.size();
       e.slot.assign(n * n, -1);
@@ -315,6 +297,37 @@ public:
   }
 
 private:
+  // H's pattern: the lower triangle of the union of the cliques of the w that appear together in a face or, with a
+  // target, in the displacement of a variable (its proximity term), and the diagonal; the rows of each column are
+  // collected with a marker array (no list of duplicates to sort)
+  void set_pattern()
+  {
+    const bool proximity = !offset.empty();
+    const int n_groups = int(faces.size() + (proximity ? vars.size() : 0));
+    auto members = [&](int g, auto&& visit) {
+      if(g < int(faces.size())) { for(int a : faces[std::size_t(g)].w) visit(a); return; }
+      const std::size_t l = std::size_t(g) - faces.size();
+      for(std::size_t q = space.ptr[l]; q < space.ptr[l + 1]; ++q) visit(space.w_index[q]);
+    };
+    Index_lists groups_of;                                     // w -> the groups it appears in
+    groups_of.build(int(space.dimension), [&](auto emit) {
+      for(int g = 0; g < n_groups; ++g) members(g, [&](int a) { emit(a, g); });
+    });
+    std::vector<int> outer(1, 0), inner, mark(space.dimension, -1), column;
+    for(int b = 0; b < int(space.dimension); ++b) {
+      column.assign(1, b);
+      mark[std::size_t(b)] = b;
+      for(int g : groups_of[b])
+        members(g, [&](int a) { if(a > b && mark[std::size_t(a)] != b) { mark[std::size_t(a)] = b; column.push_back(a); } });
+      std::sort(column.begin(), column.end());
+      inner.insert(inner.end(), column.begin(), column.end());
+      outer.push_back(int(inner.size()));
+    }
+    const std::vector<double> zeros(inner.size(), 0.);
+    H = Eigen::Map<const Matrix>(Eigen::Index(space.dimension), Eigen::Index(space.dimension), Eigen::Index(inner.size()),
+                                 outer.data(), inner.data(), zeros.data());
+  }
+
   int slot(int a, int b) const   // index of (a, b), a >= b, in H's values
   {
     const int* first = H.innerIndexPtr() + H.outerIndexPtr()[b];
