@@ -56,15 +56,20 @@ public:
     int region;                // index of the region it touches (-1: none of its corners is in one)
     double area;               // of its reference triangle
     Eigen::Vector4d J0;
-    std::vector<int> w;        // the w it depends on, increasing
-    std::vector<double> BM;    // dJ / dw_f, 4 x |w|, column-major
-    std::vector<int> slot;     // per (a, b), b <= a: index of (w[a], w[b]) in the values of H
+    std::size_t first;         // its n w (increasing) are face_w[first, first + n), dJ / dw_f (4 x n, column-major)
+    std::size_t n;             // is face_BM[4 first, 4 (first + n)) and the index of (w[a], w[b]), b <= a, in the
+    std::size_t slots;         // values of H is face_slot[slots + a (a + 1) / 2 + b]
   };
 
   std::vector<int> vars;             // the regions' variables (2s + c), increasing
   std::vector<int> var_region;       // per variable: its region
   Region_space space;
   std::vector<Face> faces;
+  std::vector<int> face_w;           // the faces' w, BM and H slots, in one array each (see Face)
+  std::vector<double> face_BM;
+  std::vector<int> face_slot;
+  std::vector<int> proximity_slot;   // per (l, a, b) with w_index[b] <= w_index[a], in the loop order of derivatives():
+                                     // the index of (w_index[a], w_index[b]) in the values of H
   Matrix H;                          // lower triangle of N^T H N (+ the proximity's N^T N), pattern only
   std::vector<int> diagonal;         // per w: index of (w, w) in H's values
   std::vector<double> offset;        // per variable l: x0_l - target_l (proximity); empty without a target
@@ -121,7 +126,10 @@ public:
       return it != vars.end() && *it == var ? long(it - vars.begin()) : -1;
     };
     faces.clear();
+    face_w.clear();
+    face_BM.clear();
     double area_sum = 0;
+    std::vector<std::pair<int, std::pair<int, double> > > terms;   // (coordinate 2m + c, (w, coefficient))
     for(int f : touched) {
       if(excluded[std::size_t(f)]) continue;
       Face e;
@@ -131,7 +139,7 @@ public:
       e.area = r.area;
       area_sum += r.area;
       double p[3][2];
-      std::vector<std::pair<int, std::pair<int, double> > > terms;   // (coordinate 2m + c, (w, coefficient))
+      terms.clear();
       for(int m = 0; m < 3; ++m) {
         const int sec = st.sector_of[fc.halfedge[std::size_t(f)][m]];
         if(region_of[std::size_t(cm.target[fc.halfedge[std::size_t(f)][m]])] >= 0)
@@ -144,19 +152,22 @@ public:
             terms.push_back({2 * m + c, {space.w_index[q], space.coef[q]}});
         }
       }
-      for(const auto& t : terms) e.w.push_back(t.second.first);
-      std::sort(e.w.begin(), e.w.end());
-      e.w.erase(std::unique(e.w.begin(), e.w.end()), e.w.end());
-      const std::size_t n = e.w.size();
+      e.first = face_w.size();
+      for(const auto& t : terms) face_w.push_back(t.second.first);
+      std::sort(face_w.begin() + long(e.first), face_w.end());
+      face_w.erase(std::unique(face_w.begin() + long(e.first), face_w.end()), face_w.end());
+      e.n = face_w.size() - e.first;
       e.J0 = r.jacobian(p);
-      e.BM.assign(4 * n, 0.);
+      face_BM.resize(4 * face_w.size(), 0.);
+      const int* ws = face_w.data() + e.first;
+      double* bm = face_BM.data() + 4 * e.first;
       for(const auto& t : terms) {   // dJ/dx (untangling_energy.h) times the entry of N
-        const std::size_t j = std::size_t(std::lower_bound(e.w.begin(), e.w.end(), t.second.first) - e.w.begin());
+        const std::size_t j = std::size_t(std::lower_bound(ws, ws + e.n, t.second.first) - ws);
         const int m = t.first / 2, c = t.first % 2;
-        e.BM[4 * j + std::size_t(2 * c)] += r.q[m][0] * t.second.second;
-        e.BM[4 * j + std::size_t(2 * c + 1)] += r.q[m][1] * t.second.second;
+        bm[4 * j + std::size_t(2 * c)] += r.q[m][0] * t.second.second;
+        bm[4 * j + std::size_t(2 * c + 1)] += r.q[m][1] * t.second.second;
       }
-      faces.push_back(std::move(e));
+      faces.push_back(e);
     }
     h2 = faces.empty() ? 1. : area_sum / double(faces.size());
     offset.clear();
@@ -165,12 +176,18 @@ public:
       for(std::size_t l = 0; l < vars.size(); ++l) offset[l] = x[std::size_t(vars[l])] - (*target)[std::size_t(vars[l])];
     }
     set_pattern();
+    face_slot.clear();
     for(Face& e : faces) {
-      const std::size_t n = e.w.size();
-      e.slot.assign(n * n, -1);
-      for(std::size_t a = 0; a < n; ++a)
-        for(std::size_t b = 0; b <= a; ++b) e.slot[a * n + b] = slot(e.w[a], e.w[b]);
+      e.slots = face_slot.size();
+      const int* ws = face_w.data() + e.first;
+      for(std::size_t a = 0; a < e.n; ++a)
+        for(std::size_t b = 0; b <= a; ++b) face_slot.push_back(slot(ws[a], ws[b]));
     }
+    proximity_slot.clear();
+    for(std::size_t l = 0; l < offset.size(); ++l)
+      for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a)
+        for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
+          if(space.w_index[b] <= space.w_index[a]) proximity_slot.push_back(slot(space.w_index[a], space.w_index[b]));
     diagonal.resize(space.dimension);
     for(std::size_t i = 0; i < space.dimension; ++i) diagonal[i] = slot(int(i), int(i));
     return SUCCESS;
@@ -178,12 +195,14 @@ public:
 
   std::size_t dimension() const { return space.dimension; }
 
-  static Eigen::Vector4d jacobian(const Face& e, const std::vector<double>& w)
+  Eigen::Vector4d jacobian(const Face& e, const std::vector<double>& w) const
   {
     Eigen::Vector4d j = e.J0;
-    for(std::size_t a = 0; a < e.w.size(); ++a) {
-      const double wa = w[std::size_t(e.w[a])];
-      for(int r = 0; r < 4; ++r) j[r] += e.BM[4 * a + std::size_t(r)] * wa;
+    const int* ws = face_w.data() + e.first;
+    const double* bm = face_BM.data() + 4 * e.first;
+    for(std::size_t a = 0; a < e.n; ++a) {
+      const double wa = w[std::size_t(ws[a])];
+      for(int r = 0; r < 4; ++r) j[r] += bm[4 * a + std::size_t(r)] * wa;
     }
     return j;
   }
@@ -225,35 +244,40 @@ public:
       Eigen::Vector4d gj;
       Eigen::Matrix4d hj;
       untangling_energy(jacobian(e, w), eps, gj, hessian ? &hj : nullptr);
-      const std::size_t n = e.w.size();
+      const std::size_t n = e.n;
+      const int* ws = face_w.data() + e.first;
+      const double* BM = face_BM.data() + 4 * e.first;
       for(std::size_t a = 0; a < n; ++a) {
-        const double* bm = &e.BM[4 * a];
-        g[e.w[a]] += e.area * (bm[0] * gj[0] + bm[1] * gj[1] + bm[2] * gj[2] + bm[3] * gj[3]);
+        const double* bm = BM + 4 * a;
+        g[ws[a]] += e.area * (bm[0] * gj[0] + bm[1] * gj[1] + bm[2] * gj[2] + bm[3] * gj[3]);
       }
       if(!hessian) continue;
-      HB.assign(4 * n, 0.);                               // hj BM, column by column
+      HB.resize(4 * n);                                   // hj BM, column by column
       for(std::size_t a = 0; a < n; ++a) {
-        const double* bm = &e.BM[4 * a];
+        const double* bm = BM + 4 * a;
         for(int r = 0; r < 4; ++r)
           HB[4 * a + std::size_t(r)] = hj(r, 0) * bm[0] + hj(r, 1) * bm[1] + hj(r, 2) * bm[2] + hj(r, 3) * bm[3];
       }
+      const int* slots = face_slot.data() + e.slots;
       for(std::size_t a = 0; a < n; ++a)
         for(std::size_t b = 0; b <= a; ++b) {
-          const double* ba = &e.BM[4 * a];
+          const double* ba = BM + 4 * a;
           const double* hb = &HB[4 * b];
-          values[e.slot[a * n + b]] += e.area * (ba[0] * hb[0] + ba[1] * hb[1] + ba[2] * hb[2] + ba[3] * hb[3]);
+          values[*slots++] += e.area * (ba[0] * hb[0] + ba[1] * hb[1] + ba[2] * hb[2] + ba[3] * hb[3]);
         }
     }
-    if(weight_proximity > 0)
+    if(weight_proximity > 0) {
+      const int* slots = proximity_slot.data();
       for(std::size_t l = 0; l < offset.size(); ++l) {
         const double c = 2 * weight_proximity / h2, r = offset[l] + displacement(l, w);
         for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a) {
           g[space.w_index[a]] += c * r * space.coef[a];
           if(hessian)
             for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
-              if(space.w_index[b] <= space.w_index[a]) values[slot(space.w_index[a], space.w_index[b])] += c * space.coef[a] * space.coef[b];
+              if(space.w_index[b] <= space.w_index[a]) values[*slots++] += c * space.coef[a] * space.coef[b];
         }
       }
+    }
   }
 
   // the largest t such that every face positive at w stays positive on [w, w + t d] (det J is quadratic in t)
@@ -265,8 +289,10 @@ public:
       const double c = untangling_determinant(j);
       if(!(c > 0)) continue;
       Eigen::Vector4d k = Eigen::Vector4d::Zero();
-      for(std::size_t a = 0; a < e.w.size(); ++a)
-        for(int r = 0; r < 4; ++r) k[r] += e.BM[4 * a + std::size_t(r)] * d[e.w[a]];
+      const int* ws = face_w.data() + e.first;
+      const double* bm = face_BM.data() + 4 * e.first;
+      for(std::size_t a = 0; a < e.n; ++a)
+        for(int r = 0; r < 4; ++r) k[r] += bm[4 * a + std::size_t(r)] * d[ws[a]];
       const double qa = untangling_determinant(k), qb = j[0] * k[3] + k[0] * j[3] - j[1] * k[2] - k[1] * j[2];
       double root = HUGE_VAL;                             // the smallest positive root of qa t^2 + qb t + c
       if(qa == 0) { if(qb < 0) root = -c / qb; }
@@ -305,7 +331,11 @@ private:
     const bool proximity = !offset.empty();
     const int n_groups = int(faces.size() + (proximity ? vars.size() : 0));
     auto members = [&](int g, auto&& visit) {
-      if(g < int(faces.size())) { for(int a : faces[std::size_t(g)].w) visit(a); return; }
+      if(g < int(faces.size())) {
+        const Face& e = faces[std::size_t(g)];
+        for(std::size_t a = e.first; a < e.first + e.n; ++a) visit(face_w[a]);
+        return;
+      }
       const std::size_t l = std::size_t(g) - faces.size();
       for(std::size_t q = space.ptr[l]; q < space.ptr[l + 1]; ++q) visit(space.w_index[q]);
     };

@@ -373,7 +373,7 @@ private:
       if(done) break;
       if(det_min <= 0) {                                       // stalled: the region is too small for a fold-free map
         std::size_t bad = 0;
-        for(const Region_problem::Face& e : p.faces) bad += !(untangling_determinant(Region_problem::jacobian(e, w)) > 0);
+        for(const Region_problem::Face& e : p.faces) bad += !(untangling_determinant(p.jacobian(e, w)) > 0);
         if(bad < fewest_bad) { fewest_bad = bad; last_progress = outer; }
         else if(outer - last_progress >= opt.stall) break;
       }
