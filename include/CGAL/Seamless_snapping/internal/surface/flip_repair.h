@@ -82,6 +82,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/surface/face_orientations.h>
 #include <CGAL/Seamless_snapping/internal/projection/fixed_point_grid.h>
 #include <CGAL/Seamless_snapping/internal/surface/local_null_space.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
@@ -109,44 +110,9 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
-// Non-positive UV triangles of one UV map (exact orientation test).
-struct Orientation_counts
-{
-  std::size_t negative = 0;             // flipped: negative orientation
-  std::size_t degenerate = 0;           // zero area
-};
-
 // A face the repair works on, from its orientation now and in the input: worse than in the input
 // (introduced), or negative (inherited).
 inline bool is_repair_target(signed char now, signed char input) { return now < input || now == CGAL::NEGATIVE; }
-
-// Orientation of every face (CGAL::NEGATIVE, ZERO, POSITIVE), corner values from `x` (2 per sector).
-inline std::vector<signed char> face_orientations(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
-  std::vector<signed char> o(cm.n_faces, 0);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
-    const int s0 = st.sector_of[h], s1 = st.sector_of[cm.next[h]], s2 = st.sector_of[cm.prev[h]];
-    o[cm.face[h]] = static_cast<signed char>(CGAL::orientation(P(x[2 * s0], x[2 * s0 + 1]), P(x[2 * s1], x[2 * s1 + 1]),
-                                                              P(x[2 * s2], x[2 * s2 + 1])));
-  }
-  return o;
-}
-
-// Counts the non-positive faces of `o`; with `input`, only those that are positive in `input`
-// (the ones introduced since).
-inline Orientation_counts count_orientations(const std::vector<signed char>& o,
-                                             const std::vector<signed char>* input = nullptr)
-{
-  Orientation_counts c;
-  for(std::size_t f = 0; f < o.size(); ++f) {
-    if(input != nullptr && (*input)[f] != CGAL::POSITIVE) continue;
-    c.negative += o[f] == CGAL::NEGATIVE;
-    c.degenerate += o[f] == CGAL::ZERO;
-  }
-  return c;
-}
 
 struct Flip_repair_result
 {

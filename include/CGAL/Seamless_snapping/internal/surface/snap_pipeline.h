@@ -630,7 +630,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   if(!opt.untangle) return SUCCESS;
   const Face_corners fc(S.cm);
   std::vector<int> valence = target_valences(S, fc);
-  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, &orientations_of_x(S));
+  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
   for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
     for(int h : fc.halfedge[f])
@@ -739,7 +739,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
   const std::vector<int> valence = target_valences(S, fc);
-  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, &orientations_of_x(S));
+  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
   const Index_lists faces_of = vertex_faces(S.cm, fc);
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below

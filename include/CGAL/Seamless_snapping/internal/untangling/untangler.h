@@ -170,7 +170,7 @@ private:
   Map_state map_state(const std::vector<double>& x) const
   {
     Map_state m;
-    m.turns = vertex_quarter_turns(cm_, st_, x);
+    m.turns = vertex_quarter_turns(cm_, st_, x, face_orientations(cm_, st_, x));
     m.face.resize(fc_.halfedge.size());
     for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) m.face[f] = face_state(f, x, m.turns);
     return m;

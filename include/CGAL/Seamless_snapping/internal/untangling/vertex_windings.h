@@ -22,6 +22,7 @@
 // (every corner of a positive or negative triangle), else rounded from floating-point angles.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/face_orientations.h>
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
@@ -53,12 +54,10 @@ inline double corner_uv_angle(const double q[2], const double a[2], const double
 inline int quarter_turns_of_angle(double angle) { return int(std::lround(angle / (std::acos(-1.) / 2))); }
 
 // per vertex, the angle sum of the map x (2 values per sector) in quarter turns; border and isolated vertices: 4.
-// `orientations`: the exact orientation of every face of x (face_orientations() of flip_repair.h) when the caller
-// has them, else computed here
+// `orientations`: the exact orientation of every face of x (face_orientations())
 inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_topology& st, const std::vector<double>& x,
-                                             const std::vector<signed char>* orientations = nullptr)
+                                             const std::vector<signed char>& orientations)
 {
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
   struct Count { int turns = 0; char exact = 1, has_corner = 0; };   // one cache line access per corner
   std::vector<Count> count(std::size_t(cm.n_vertices));
   bool all_exact = true;
@@ -70,9 +69,7 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
       const std::size_t s = std::size_t(st.sector_of[corner[i]]);
       p[i][0] = x[2 * s]; p[i][1] = x[2 * s + 1];
     }
-    const CGAL::Orientation o = orientations != nullptr
-                                    ? CGAL::Orientation((*orientations)[std::size_t(cm.face[h])])
-                                    : CGAL::orientation(P(p[0][0], p[0][1]), P(p[1][0], p[1][1]), P(p[2][0], p[2][1]));
+    const CGAL::Orientation o = CGAL::Orientation(orientations[std::size_t(cm.face[h])]);
     for(int i = 0; i < 3; ++i) {
       const double* q = p[i];
       const double* a = p[(i + 1) % 3];
