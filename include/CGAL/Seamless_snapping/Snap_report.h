@@ -253,18 +253,15 @@ struct Snap_report
       const Fold_explanation& f = folds[i];
       o << (i ? ",\n    " : "\n    ") << "{\"face\": " << f.face << ", \"negative\": " << (f.negative ? "true" : "false")
         << ", \"reason\": \"" << fold_reason_name(f.reason) << "\", \"forced\": " << (f.forced() ? "true" : "false")
-        << ", \"vertices\": [" << f.vertices[0] << ", " << f.vertices[1] << ", " << f.vertices[2] << "], \"message\": \"";
-      for(char c : f.message) { if(c == '"' || c == '\\') o << '\\'; o << c; }
-      o << "\"}";
+        << ", \"vertices\": [" << f.vertices[0] << ", " << f.vertices[1] << ", " << f.vertices[2] << "], \"message\": "
+        << IO::internal::json_string(f.message) << "}";
     }
     o << (folds.empty() ? "],\n" : "\n  ],\n");
     o << "  \"winding_defects\": [";
     for(std::size_t i = 0; i < winding_defects.size(); ++i) {
       const Winding_defect& w = winding_defects[i];
       o << (i ? ",\n    " : "\n    ") << "{\"vertex\": " << w.vertex << ", \"angle_sum\": " << w.angle_sum << ", \"valence\": "
-        << w.valence << ", \"message\": \"";
-      for(char c : w.message) { if(c == '"' || c == '\\') o << '\\'; o << c; }
-      o << "\"}";
+        << w.valence << ", \"message\": " << IO::internal::json_string(w.message) << "}";
     }
     o << (winding_defects.empty() ? "],\n" : "\n  ],\n");
     o << "  \"untangle_refused\": " << (untangle_refused ? "true" : "false") << ",\n";
