@@ -1055,6 +1055,14 @@ static void test_json_strings()
   r.message = "file\tname\x01";
   const std::string j = r.to_json();
   CHECK(j.find("\"message\": \"file\\tname\\u0001\"") != std::string::npos, "Snap_report::to_json escapes its message");
+  r.folds.emplace_back();
+  r.folds.back().vertices = {0, 1, 2};
+  r.folds.back().message = "fold \"a\"\n";
+  r.winding_defects.emplace_back();
+  r.winding_defects.back().message = "winding\\\x02";
+  const std::string k = r.to_json();
+  CHECK(k.find("\"message\": \"fold \\\"a\\\"\\n\"}") != std::string::npos, "Snap_report::to_json escapes fold messages");
+  CHECK(k.find("\"message\": \"winding\\\\\\u0002\"}") != std::string::npos, "Snap_report::to_json escapes winding messages");
 }
 
 int main(int argc, char** argv)
