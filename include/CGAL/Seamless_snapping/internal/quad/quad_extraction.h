@@ -114,8 +114,7 @@ inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::v
   }
   std::string clause;
   const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  const Face_corners fc(cm);
-  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, vertex_faces(cm, fc), st.ubar, v, coincident_cone_rings))
+  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, Face_corners(cm), st.ubar, v, coincident_cone_rings))
     clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(c.first) + " and " + std::to_string(c.second);
   if(clause.empty()) return clause;
   return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +

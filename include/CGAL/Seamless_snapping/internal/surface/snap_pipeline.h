@@ -741,7 +741,6 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> valence = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
-  const Index_lists faces_of = vertex_faces(S.cm, fc);
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
   for(int v = 0; v < S.cm.n_vertices; ++v) {
     if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
@@ -752,7 +751,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
                 " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
     if(opt.integer_grid_map)
-      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, faces_of, S.x, v, coincident_cone_rings)) {
+      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings)) {
         d.message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
                      " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
         collapsed.insert(std::minmax(c.first, c.second));

@@ -94,7 +94,6 @@ private:
   void build_local_system(const std::vector<int>& faces, int radius)
   {
     // sectors of the vertices within `radius` face rings of the faces
-    const Index_lists faces_of = vertex_faces(cm_, fc_);
     std::vector<char> in(std::size_t(cm_.n_vertices), 0);
     std::vector<int> front;
     for(int f : faces)
@@ -103,7 +102,7 @@ private:
     for(int r = 0; r < radius; ++r) {
       std::vector<int> next;
       for(int v : front)
-        for(int f : faces_of[v])
+        for(int f : fc_.vertex_faces[v])
           for(int h : fc_.halfedge[std::size_t(f)])
             if(!in[std::size_t(cm_.target[h])]) { in[std::size_t(cm_.target[h])] = 1; next.push_back(cm_.target[h]); }
       front.swap(next);

@@ -39,10 +39,11 @@ namespace internal {
 constexpr double reference_max_aspect = 10;
 
 // The corners of every face, counter-clockwise: halfedges h, next(h), next(next(h)) (the corner of
-// target(h) in face(h)), from the smallest halfedge of the face.
+// target(h) in face(h)), from the smallest halfedge of the face; and the faces of every vertex.
 struct Face_corners
 {
   std::vector<std::array<int, 3> > halfedge;   // per face
+  Index_lists vertex_faces;                    // per vertex: the faces of its corners, in increasing face order
 
   explicit Face_corners(const Corner_mesh& cm) : halfedge(std::size_t(cm.n_faces), std::array<int, 3>{{-1, -1, -1}})
   {
@@ -51,19 +52,12 @@ struct Face_corners
       if(f < 0 || halfedge[std::size_t(f)][0] >= 0) continue;
       halfedge[std::size_t(f)] = {{h, cm.next[h], cm.next[cm.next[h]]}};
     }
+    vertex_faces.build(cm.n_vertices, [&](auto emit) {
+      for(std::size_t f = 0; f < halfedge.size(); ++f)
+        for(int h : halfedge[f]) emit(cm.target[h], int(f));
+    });
   }
 };
-
-// the faces of each vertex (the targets of their corners), in increasing face order
-inline Index_lists vertex_faces(const Corner_mesh& cm, const Face_corners& fc)
-{
-  Index_lists out;
-  out.build(cm.n_vertices, [&](auto emit) {
-    for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
-      for(int h : fc.halfedge[f]) emit(cm.target[h], int(f));
-  });
-  return out;
-}
 
 // twice the signed area and the thinness longest edge^2 / (2 area) of a triangle (2D)
 inline double twice_area_2(const double a[2], const double b[2], const double c[2])

@@ -78,7 +78,6 @@ public:
   // Builds the problem of `regions` (vertex sets) at x; faces with `excluded` set are left out.
   Status build(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Variable_rows& incidence,
                const Face_corners& fc, const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded,
-               const Index_lists& vertex_faces,
                const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
                const std::vector<double>* target, std::string& message)
   {
@@ -105,7 +104,7 @@ public:
     std::vector<int> touched;
     for(const std::vector<int>& region : regions)
       for(int v : region)
-        for(int f : vertex_faces[v]) touched.push_back(f);
+        for(int f : fc.vertex_faces[v]) touched.push_back(f);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     std::vector<std::pair<int, int> > var_regions;

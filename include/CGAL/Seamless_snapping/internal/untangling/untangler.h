@@ -108,7 +108,7 @@ public:
   Untangler(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Face_corners& fc,
             const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded, const std::vector<int>& valence)
     : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded), valence_(valence),
-      incidence_(rows, 2 * std::size_t(st.n_sectors)), vertex_faces_(vertex_faces(cm, fc))
+      incidence_(rows, 2 * std::size_t(st.n_sectors))
   {}
 
   // Untangles x (2 values per sector, an exact solution of the rows on input) in place (see the header).
@@ -185,18 +185,18 @@ private:
     std::vector<char> seen(std::size_t(cm_.n_vertices), 0), done(fc_.halfedge.size(), 0);
     std::vector<int> changed, corners;
     for(int v : moved)
-      for(int f : vertex_faces_[v])
+      for(int f : fc_.vertex_faces[v])
         for(int h : fc_.halfedge[std::size_t(f)])
           if(!seen[std::size_t(cm_.target[h])]) { seen[std::size_t(cm_.target[h])] = 1; changed.push_back(cm_.target[h]); }
     for(int w : changed) {
       corners.clear();
-      for(int f : vertex_faces_[w])
+      for(int f : fc_.vertex_faces[w])
         for(int h : fc_.halfedge[std::size_t(f)]) if(cm_.target[h] == w) corners.push_back(h);
       std::sort(corners.begin(), corners.end());
       m.turns[std::size_t(w)] = vertex_quarter_turns_at(cm_, st_, y, w, corners);
     }
     for(int w : changed)
-      for(int g : vertex_faces_[w]) {
+      for(int g : fc_.vertex_faces[w]) {
         const std::size_t f = std::size_t(g);
         if(!done[f]) { done[f] = 1; m.face[f] = face_state(f, y, m.turns); }
       }
@@ -256,8 +256,7 @@ private:
   Status build(Region_problem& problem, const std::vector<std::vector<int> >& regions, const std::vector<double>& x,
                const std::vector<double>* target, Untangle_statistics& stats, std::string& message) const
   {
-    Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, vertex_faces_,
-                             regions, x, target, message);
+    Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, regions, x, target, message);
     if(s != SUCCESS) { message = "untangling: null space of the region's constraint rows: " + message; return s; }
     ++stats.attempts;
     stats.dimension = (std::max)(stats.dimension, problem.dimension());
@@ -283,7 +282,7 @@ private:
       for(std::size_t i = 0; i < faces.size(); ++i) {
         std::vector<int> next;
         for(int v : fronts[i])
-          for(int f : vertex_faces_[v])
+          for(int f : fc_.vertex_faces[v])
             for(int h : fc_.halfedge[std::size_t(f)]) reach(cm_.target[h], i, next);
         fronts[i].swap(next);
       }
@@ -433,7 +432,6 @@ private:
   const std::vector<char>& excluded_;
   const std::vector<int>& valence_;
   Variable_rows incidence_;
-  Index_lists vertex_faces_;                                   // faces of each vertex
   double budget_ = 0;                                          // face evaluations of step 1 (run())
 };
 

@@ -20,7 +20,6 @@
 
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
@@ -54,14 +53,14 @@ struct Chart_map
 
 // The cone pairs that one of the `rings` face rings around vertex v maps onto one UV point, in the chart of
 // a face of v (transitions composed along the faces reached first, breadth first). The cones are those of the
-// field: K[w] > 0 (field_rotation_sums()). `faces_of`: the faces of each vertex (vertex_faces()).
+// field: K[w] > 0 (field_rotation_sums()).
 inline std::vector<std::pair<int, int> > coincident_cones_near(const Corner_mesh& cm, const Seam_topology& st,
                                                                const Cut_rotations& rot, const std::vector<int>& K,
-                                                               const Face_corners& fc, const Index_lists& faces_of,
-                                                               const std::vector<double>& x, int v, int rings)
+                                                               const Face_corners& fc, const std::vector<double>& x,
+                                                               int v, int rings)
 {
-  if(faces_of[v].empty()) return {};
-  const int start = *faces_of[v].begin();
+  if(fc.vertex_faces[v].empty()) return {};
+  const int start = *fc.vertex_faces[v].begin();
   std::map<int, Chart_map> to_start;             // face -> its chart in the start face's chart
   std::vector<int> front;
   to_start[start] = Chart_map();
@@ -117,9 +116,8 @@ inline std::vector<int> vertices_near_collapsed_cones(const Corner_mesh& cm, con
   std::vector<char> near(std::size_t(cm.n_vertices), 0);
   std::vector<int> front;
   const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  const Index_lists faces_of = vertex_faces(cm, fc);
   for(int v : seeds)
-    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, faces_of, x, v, coincident_cone_rings))
+    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, x, v, coincident_cone_rings))
       for(int w : {c.first, c.second})
         if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; front.push_back(w); }
   std::vector<int> out = front;
