@@ -72,6 +72,7 @@
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
 
 #include <CGAL/Gmpq.h>
@@ -952,6 +953,41 @@ static void test_untangling_energy()
             << " Jacobians agree with central differences (largest relative differences " << worst_grad << ", " << worst_hess << ")\n";
 }
 
+// The flip-free step bound of the polish (Region_problem::positive_step()): along d, det J of every face that starts
+// above the floor reaches the floor (not 0) at the returned step and stays above it before; a face already at or
+// below the floor gives no bound. Two faces, J affine in two reduced variables w.
+static void test_untangling_step_bound()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  SI::Region_problem p;
+  p.face_w = {0, 1, 0, 1};
+  p.face_BM = {-1, 0, 0, 0,  0, 0, 0, -1,     // face 0: J = (1 - w0, 0, 0, 1 - w1), det = (1 - w0)(1 - w1)
+               0, 1, 0, 0,   0, 0, 1, 0};     // face 1: J = (1, w0, w1, 1), det = 1 - w0 w1
+  for(std::size_t f = 0; f < 2; ++f) {
+    SI::Region_problem::Face e;
+    e.face = int(f); e.region = 0; e.area = 1; e.J0 = Eigen::Vector4d(1, 0, 0, 1);
+    e.first = 2 * f; e.n = 2; e.slots = 0;
+    p.faces.push_back(e);
+  }
+  const std::vector<double> w = {0., 0.};
+  Eigen::VectorXd d(2);
+  d << 1., 1.;                                // det of face 0: (1 - t)^2, of face 1: 1 - t^2
+  for(double floor : {0., 1e-6, 0.25, 0.81}) {
+    const double t = p.positive_step(w, d, floor);
+    const double expected = 1 - std::sqrt(floor);   // face 0 reaches the floor first
+    assert(std::fabs(t - expected) <= 1e-12);
+    for(const SI::Region_problem::Face& e : p.faces) {
+      const std::vector<double> at = {t * d[0], t * d[1]}, before = {0.999 * t * d[0], 0.999 * t * d[1]};
+      assert(SI::untangling_determinant(p.jacobian(e, at)) >= floor - 1e-12);
+      assert(SI::untangling_determinant(p.jacobian(e, before)) > floor);
+    }
+  }
+  assert(p.positive_step(w, d, 1.) == HUGE_VAL);   // both faces start at det 1: no face above the floor
+  d << -1., -1.;                              // face 0 grows, face 1 shrinks: 1 - t^2 reaches 0.19 at t = 0.9
+  assert(std::fabs(p.positive_step(w, d, 0.19) - 0.9) <= 1e-12);
+  std::cout << "untangling: the polish's step bound keeps det J above its floor (0, 1e-6, 0.25, 0.81)\n";
+}
+
 static void test_untangling_analytic()
 {
   // an exact flat 8 x 8 torus (an IGM) with vertex (3, 3) dragged across its neighbour (4, 3): its triangles fold
@@ -1105,6 +1141,7 @@ int main(int argc, char** argv)
   if(!sanitizer_subset()) test_integer_grid_orbifold();
   test_integer_grid_data();
   test_untangling_energy();
+  test_untangling_step_bound();
   test_untangling_analytic();
   test_untangling_data();
   test_invalid();

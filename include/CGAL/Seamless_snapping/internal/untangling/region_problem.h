@@ -279,13 +279,14 @@ public:
     }
   }
 
-  // the largest t such that every face positive at w stays positive on [w, w + t d] (det J is quadratic in t)
-  double positive_step(const std::vector<double>& w, const Eigen::VectorXd& d) const
+  // the largest t such that every face with det J > floor at w keeps det J > floor on [w, w + t d] (det J is
+  // quadratic in t)
+  double positive_step(const std::vector<double>& w, const Eigen::VectorXd& d, double floor) const
   {
     double t_max = HUGE_VAL;
     for(const Face& e : faces) {
       const Eigen::Vector4d j = jacobian(e, w);
-      const double c = untangling_determinant(j);
+      const double c = untangling_determinant(j) - floor;
       if(!(c > 0)) continue;
       Eigen::Vector4d k = Eigen::Vector4d::Zero();
       const int* ws = face_w.data() + e.first;
