@@ -93,9 +93,10 @@ void region_basis_from_irref(const Irref<Int>& irref, Region_space& out)
   }
 }
 
-// The space of the variables `vars` (increasing) with the rows of `rows` that mention one of them.
+// The space of the variables `vars` (increasing) with the rows of `rows` that mention one of them. `order`: how the
+// IRREF takes its pivots (irref.h), which decides the basis N: the same space, but not as sparse with one as with another.
 inline Status build_region_space(const Constraint_rows& rows, const Variable_rows& incidence, const std::vector<int>& vars,
-                                 Region_space& out, std::string& message)
+                                 Pivot_order order, Region_space& out, std::string& message)
 {
   out = Region_space();
   out.vars = vars;
@@ -123,11 +124,11 @@ inline Status build_region_space(const Constraint_rows& rows, const Variable_row
   if(s != SUCCESS) return s;
   try {
     Irref<std::int64_t> irref;
-    s = compute_irref(sys, irref, message, PIVOT_RULE);
+    s = compute_irref(sys, irref, message, order);
     if(s == SUCCESS) region_basis_from_irref(irref, out);
   } catch(const Integer_overflow&) {
     Irref<CGAL::Gmpz> irref;
-    s = compute_irref(sys, irref, message, PIVOT_RULE);
+    s = compute_irref(sys, irref, message, order);
     if(s == SUCCESS) region_basis_from_irref(irref, out);
   }
   return s;
