@@ -327,8 +327,8 @@ private:
   // H's pattern: the lower triangle of the union of the cliques of the w that appear together in a face or, with a
   // target, in the displacement of a variable (its proximity term), and the diagonal; the rows of each column are
   // collected with a marker array (no list of duplicates to sort). And the faces' slots: once a column's rows are
-  // numbered, every face with that w reads there the slots of its pairs (no search; on the dragon's polish problem
-  // 1.4M slots, which a binary search each took 45 ms to find)
+  // numbered, every face with that w reads there the slots of its pairs (no search: the dragon's polish problem with
+  // the pivot rule's basis has 1.4M face slots, about 45 ms of binary searches per build)
   void set_pattern()
   {
     const bool proximity = !offset.empty();
