@@ -25,6 +25,9 @@
 //                               a polygon mesh, INVALID_INPUT), a non-integer period (not an IGM, INVALID_INPUT)
 //   quad: grid                  a planar grid: border on isolines (16 quads, valences 2/3/4), and shifted off
 //                               them (the 16 cells cut by the border dropped and counted, 9 quads)
+//   quad: collapsed face        a square whose diagonal carries a zero-area face (three distinct collinear corners):
+//                               collapsed onto its long side, a 2 x 2 grid whose cells on the diagonal cover it, the
+//                               middle corner on the integer point or not; two corners at one UV point: FOLD_OVERS
 //   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
 //                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
 //                               not a power of two; the output mesh is unchanged on every refusal
@@ -36,7 +39,9 @@
 //   quad: shared data           every shared map up to 1 MB (600 kB under --sanitizer-subset) snapped with
 //                               integer_grid_map(true): fold-free ones give a checked quad mesh (the horse also
 //                               at grid scale 2), the ones with fold-overs FOLD_OVERS listing the snap report's
-//                               flipped and zero-area faces
+//                               flipped and zero-area faces (but zero-area faces with three distinct corners: the
+//                               knight's forced one is collapsed), maps with a cone of 90 degrees (the knight)
+//                               INVALID_INPUT
 //   quad: collapsed cone pairs  libQEx's fandisk and duck_miq_8 (IGM, untangled, fold-free): refused, the message
 //                               naming a cone pair the integer translations put onto one point, as the snap report does
 
@@ -389,6 +394,50 @@ static void test_grid()
   }
 }
 
+// The square [0, 2]^2 with a zero-area face (A, C, c) on its diagonal: A = (0, 0), C = (2, 2) and c = (t, t) between
+// them in UV (lifted off the plane in 3D), the face (A, B, C) below the diagonal, (c, C, D) and (A, c, D) above it.
+// Collapsed onto its long side A-C, it is covered by the cells that side runs through; the quad mesh is the 2 x 2
+// grid: c on the integer point (1, 1) is the quad vertex there (t = 1); elsewhere (t = 1.5, 0.5) the point (1, 1) lies
+// on the long side and on a short side, one quad vertex. Two corners at one UV point (t = 0: c onto A) are refused.
+static void test_collapsed_faces()
+{
+  for(double t : {1., 1.5, 0.5, 0.}) {
+    Mesh m;
+    const vertex_descriptor A = m.add_vertex(Point_3(0, 0, 0)), B = m.add_vertex(Point_3(2, 0, 0)),
+                            C = m.add_vertex(Point_3(2, 2, 0)), D = m.add_vertex(Point_3(0, 2, 0)),
+                            c = m.add_vertex(Point_3(t, t, 0.5));
+    m.add_face(A, B, C);
+    const face_descriptor thin = m.add_face(A, C, c);
+    m.add_face(c, C, D);
+    m.add_face(A, c, D);
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x(), m.point(m.target(h)).y()));
+    assert(SS::is_exact_integer_grid_map(m, uv));
+    const std::string what = "collapsed face, middle corner at (" + std::to_string(t).substr(0, 3) + ", " +
+                             std::to_string(t).substr(0, 3) + ")";
+    if(t == 0) {                                 // faces (A, C, c) and (A, c, D) have two corners at (0, 0)
+      const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "two corners at one UV point", what);
+      assert(r.fold_overs.empty() && r.zero_area_faces.size() == 2);
+      assert(SS::quad_valences(m, uv).status == SS::FOLD_OVERS);
+      continue;
+    }
+    Quad_result r;
+    extract(m, uv, 1, r);
+    check_quad_mesh(m, uv, 1, r, what);
+    assert(r.report.quads == 4 && r.report.quad_vertices == 9 && r.report.covers_map());
+    assert(r.report.zero_area_faces == std::vector<std::size_t>(1, std::size_t(thin)) && r.report.fold_overs.empty());
+    assert(r.report.valence_histogram[2] == 4 && r.report.valence_histogram[3] == 4 && r.report.valence_histogram[4] == 1);
+    assert(SS::quad_valences(m, uv).valence[std::size_t(c)] == 4);
+    std::size_t covering = 0;                    // the cells the long side runs through: [0, 1]^2 and [1, 2]^2
+    for(face_descriptor q : r.q.faces()) {
+      const std::vector<face_descriptor>& f = get(r.covered, q);
+      covering += std::find(f.begin(), f.end(), thin) != f.end() ? 1 : 0;
+    }
+    assert(covering == 2);
+  }
+}
+
 // a fan of 3 triangles around an interior vertex c spanning 90 degrees in UV: a cone of valence 1 at (0, 0),
 // the cut edge c-w0 with k = 1 and translation 0
 static void make_quarter_turn_cone(Mesh& m, UV_map& uv)
@@ -519,7 +568,7 @@ static void test_shared_data()
 {
   std::vector<fs::path> files;
   if(!shared_obj_files_or_skip("quad: shared data", files)) return;
-  std::size_t extracted = 0, folded = 0;
+  std::size_t extracted = 0, folded = 0, quarter_cones = 0;
   for(const fs::path& p : files) {
     if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_quad
     Mesh m;
@@ -531,10 +580,25 @@ static void test_shared_data()
       std::cout << "quad: " << name << ": not snapped to an integer-grid map (" << SS::status_name(s.status) << ")\n";
       continue;
     }
-    if(s.flips_after_repair + s.degenerate_after_repair > 0) {
+    std::size_t coincident = 0;                  // zero-area faces with two corners at one UV point
+    for(face_descriptor f : m.faces()) {
+      const halfedge_descriptor h = m.halfedge(f);
+      const std::array<Q, 2> a = exact_uv(uv, m.prev(h)), b = exact_uv(uv, h), c = exact_uv(uv, m.next(h));
+      coincident += CGAL::is_zero(cross(a, b, c)) && (a == b || b == c || c == a) ? 1 : 0;
+    }
+    if(s.flips_after_repair > 0 || coincident > 0) {
       const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "untangle", name);
       assert(r.fold_overs.size() == s.flips_after_repair && r.zero_area_faces.size() == s.degenerate_after_repair);
       ++folded;
+      continue;
+    }
+    const SS::Quad_valences qv = SS::quad_valences(m, uv);
+    assert(qv.status == SS::SUCCESS);
+    bool quarter_cone = false;                   // a cone of 90 degrees (Directional's knight has one)
+    for(vertex_descriptor v : m.vertices()) quarter_cone = quarter_cone || (!m.is_border(v) && qv.valence[std::size_t(v)] == 1);
+    if(quarter_cone) {
+      check_refused(m, uv, 1, SS::INVALID_INPUT, "valence 1", name);
+      ++quarter_cones;
       continue;
     }
     for(double S : {1., 2.}) {
@@ -545,7 +609,8 @@ static void test_shared_data()
       ++extracted;
     }
   }
-  std::cout << "quad: shared data: " << extracted << " quad meshes checked, " << folded << " maps with fold-overs refused\n";
+  std::cout << "quad: shared data: " << extracted << " quad meshes checked, " << folded << " maps with fold-overs refused, "
+            << quarter_cones << " with a cone of 90 degrees refused\n";
   assert(extracted >= 3);
 }
 
@@ -669,6 +734,7 @@ int main(int argc, char** argv)
   test_torus();
   test_output_meshes();
   test_grid();
+  test_collapsed_faces();
   test_refusals();
   test_branch_points();
   if(!sanitizer_subset()) test_bear_orbifold();

@@ -57,8 +57,13 @@ struct Quad_vertex_origin
  * - it must be an exact integer-grid map at `grid_scale` (`is_exact_integer_grid_map()`; e.g. the output of
  *   `snap_seamless_parameterization()` with `integer_grid_map(true)`), else `INVALID_INPUT` naming the edge or cone
  *   that is not exact or not integer;
- * - every UV triangle must be positively oriented, else `FOLD_OVERS` with the fold-overs and zero-area triangles
- *   listed in `Quad_mesh_report::fold_overs` and `Quad_mesh_report::zero_area_faces`;
+ * - no UV triangle may be negatively oriented or have two corners at one UV point, else `FOLD_OVERS` with the
+ *   fold-overs and zero-area triangles listed in `Quad_mesh_report::fold_overs` and
+ *   `Quad_mesh_report::zero_area_faces`. A zero-area triangle with three distinct (collinear) corners, e.g. one whose
+ *   corners are cones that the constraints put onto collinear integer points, is the limit of a thin positive
+ *   triangle: it is collapsed onto its longest side, where the faces on its two sides meet (the cells its long side
+ *   runs through are glued across it and cover it, `Quad_mesh_report::zero_area_faces` lists it, and its middle
+ *   corner counts 180 degrees in `quad_valences()`);
  * - every interior vertex whose quad valence (`quad_valences()`) is not 4 must lie on an integer point (the cones of
  *   the field do in an integer-grid map; a vertex with an angle sum of 8 quarter turns might not), and no cone may
  *   have valence 1 (a 90-degree cone: the cell at it would have two sides glued into one edge, which no polygon mesh

@@ -35,7 +35,7 @@ struct Quad_valences
   std::vector<int> valence;                ///< per vertex, in the order of `vertices(tm)`: the number of integer-grid directions leaving it (see `quad_valences()`)
   std::vector<std::size_t> border;         ///< border vertices (their valence counts the directions of their closed fan)
   std::vector<std::size_t> fold_overs;     ///< `FOLD_OVERS`: the faces (ranks in `faces(tm)`) whose UV triangle is negatively oriented
-  std::vector<std::size_t> zero_area_faces;///< `FOLD_OVERS`: the faces whose UV triangle has zero area
+  std::vector<std::size_t> zero_area_faces;///< `FOLD_OVERS`: the faces whose UV triangle has zero area (all of them, when one has two corners at one UV point)
 };
 
 /*!
@@ -53,9 +53,12 @@ struct Quad_valences
  * corner's angle sweeps (the quadrants of the two edge vectors from exact comparisons, the sense of the turn from
  * the exact orientation predicate); around a vertex of an exactly seamless map these counts telescope, exactly.
  *
- * Maps with fold-overs or zero-area UV triangles are refused (`FOLD_OVERS`, the faces listed): there the angle sum
- * is a signed winding number (each flipped triangle winds its corners back by 360 degrees in all), which no quad
- * mesh has, and a quad extractor that trusts it leaves holes. `extract_quad_mesh()` refuses the same maps.
+ * Maps with fold-overs are refused (`FOLD_OVERS`, the faces listed): there the angle sum is a signed winding number
+ * (each flipped triangle winds its corners back by 360 degrees in all), which no quad mesh has, and a quad extractor
+ * that trusts it leaves holes. A zero-area UV triangle whose three corners are distinct (collinear) is counted as the
+ * limit of a thin positively oriented triangle (its middle corner 180 degrees, its others 0), as
+ * `extract_quad_mesh()` collapses it onto its longest side; one with two corners at one UV point is refused too.
+ * `extract_quad_mesh()` refuses the same maps.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
  * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
@@ -66,7 +69,8 @@ struct Quad_valences
  *
  * \return the valences; `INVALID_INPUT` (nothing computed) if the map is not exactly seamless
  *         (`is_exactly_seamless()`), is empty, has a face that is not a triangle or a non-finite UV; `FOLD_OVERS`
- *         (nothing computed) if a UV triangle is negatively oriented or has zero area.
+ *         (nothing computed) if a UV triangle is negatively oriented or has two corners at one UV point (all the
+ *         zero-area triangles are listed then).
  *
  * \sa `snap_seamless_parameterization()` with `integer_grid_map(true)`, `extract_quad_mesh()`, `IO::write_VVAL()`
  */
@@ -85,7 +89,7 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
     return r;
   }
   const internal::Fold_overs folds = internal::find_fold_overs(cm);
-  if(!folds.empty()) {
+  if(folds.blocks_quads()) {
     r.status = FOLD_OVERS;
     r.message = "the map has " + folds.describe() + ": no quad mesh has the signed angle sums next to them; make the map "
                 "fold-free first";

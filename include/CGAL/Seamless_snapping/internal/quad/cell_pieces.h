@@ -93,6 +93,14 @@ inline void candidate_cells(const Uv_point t[3], std::int64_t& i0, std::int64_t&
   j0 = std::int64_t(std::floor(v0)); j1 = std::int64_t(std::ceil(v1)) - 1;
 }
 
+// The u and v ranges of the open segment pq overlap those of the open cell strictly (the segment runs through the
+// open cell if, in addition, the cell has corners strictly on both sides of its line).
+inline bool ranges_overlap_open_cell(const Uv_point& p, const Uv_point& q, const Grid_point& cell)
+{
+  return (std::max)(p.x(), q.x()) > double(cell.u) && (std::min)(p.x(), q.x()) < double(cell.u + 1) &&
+         (std::max)(p.y(), q.y()) > double(cell.v) && (std::min)(p.y(), q.y()) < double(cell.v + 1);
+}
+
 // The sign of the orientation of (a, b, q) for many grid points q and one side (a, b), exactly: the
 // determinant (b - a) x (q - a) in double with Shewchuk's first error bound for this formula (orient2d's
 // errboundA, valid without underflow), the exact predicate where the bound does not decide.
@@ -131,8 +139,10 @@ inline Corner_place corner_place(unsigned left, unsigned right)
   }
 }
 
-// The pieces of face f (first halfedge h0), appended to `out`; `mask` is scratch space.
-inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& out, std::vector<unsigned char>& mask)
+// The pieces of face f (first halfedge h0), appended to `out`; `mask` is scratch space; `collapsed`: per face, a
+// collapsed face (collapsed_faces.h: no pieces of its own; every side through a cell glued towards it).
+inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, const std::vector<char>& collapsed, Cell_pieces& out,
+                            std::vector<unsigned char>& mask)
 {
   const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
   const Uv_point t[3] = {corner_point(cm, c[0]), corner_point(cm, c[1]), corner_point(cm, c[2])};
@@ -165,24 +175,21 @@ inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, Cell_pieces& o
       out.corner.push_back(place);
       char cut = 0;
       for(int s = 0; s < 3; ++s) {                // side s: from t[s] to t[s+1], the halfedge c[s+1]
-        const Uv_point& p = t[s];
-        const Uv_point& q = t[(s + 1) % 3];
-        if(!(right & (1u << s)) || (std::max)(p.x(), q.x()) <= double(cell.u) || (std::min)(p.x(), q.x()) >= double(cell.u + 1) ||
-           (std::max)(p.y(), q.y()) <= double(cell.v) || (std::min)(p.y(), q.y()) >= double(cell.v + 1))
-          continue;
+        if(!(right & (1u << s)) || !ranges_overlap_open_cell(t[s], t[(s + 1) % 3], cell)) continue;
         const int h = c[(s + 1) % 3], o = cm.opp[h];
         if(cm.is_border_halfedge(o)) cut = 1;
-        else if(h < o) out.glue.push_back(Cell_pieces::Glue{x, h});
+        else if(h < o || collapsed[std::size_t(cm.face[o])]) out.glue.push_back(Cell_pieces::Glue{x, h});
       }
       out.cut.push_back(cut);
     }
 }
 
-// Collects the pieces of every face. Preconditions: the map is fold-free, its UVs are in grid units
-// with |u|, |v| < 2^30. RANGE_EXCEEDED (nothing collected) when the bounding boxes of the faces hold
-// more than `max_candidates` cells in all.
+// Collects the pieces of every face but the collapsed ones. Preconditions: the map is fold-free (its zero-area
+// faces collapsed), its UVs are in grid units with |u|, |v| < 2^30. RANGE_EXCEEDED (nothing collected) when the
+// bounding boxes of the faces hold more than `max_candidates` cells in all.
 inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
-                                  std::size_t max_candidates, Cell_pieces& out, std::string& message)
+                                  const std::vector<char>& collapsed, std::size_t max_candidates, Cell_pieces& out,
+                                  std::string& message)
 {
   out = Cell_pieces();
   std::size_t candidates = 0;
@@ -205,7 +212,7 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
   std::vector<unsigned char> mask;
   for(int f = 0; f < cm.n_faces; ++f) {
     out.first.push_back(out.cell.size());
-    add_face_pieces(cm, f, face_halfedge[std::size_t(f)], out, mask);
+    if(!collapsed[std::size_t(f)]) add_face_pieces(cm, f, face_halfedge[std::size_t(f)], collapsed, out, mask);
   }
   out.first.push_back(out.cell.size());
   return SUCCESS;

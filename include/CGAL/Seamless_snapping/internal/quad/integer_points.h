@@ -17,7 +17,8 @@
 //   ON_EDGE    p lies inside a side: the edge and p in the chart of the edge's canonical face, the face of
 //              its edge_halfedge (the other one on the border), reached through the edge's transition;
 //   IN_FACE    otherwise: the face and p in its chart.
-// Integer_point_index numbers the distinct names in the order they are first seen.
+// Integer_point_index numbers the distinct names in the order they are first seen; names that denote one
+// point of a collapsed face (collapsed_faces.h) are aliases of one of them.
 
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
 #include <CGAL/Seamless_snapping/internal/quad/grid_transform.h>
@@ -84,9 +85,18 @@ public:
     face_id_.assign(width_ * std::size_t(v1 - v0 + 1), -1);
   }
 
+  // `name` (at a vertex or on an edge) is the point `same` (at a vertex or on an edge, not itself an alias)
+  void alias(const Integer_point& name, const Integer_point& same) { aliases_[alias_key(name)] = same; }
+
   // the number of the point (a new one if its name was not seen yet)
-  int id(const Integer_point& p)
+  int id(const Integer_point& name)
   {
+    const Integer_point* aliased = nullptr;
+    if(!aliases_.empty() && name.kind != IN_FACE) {
+      const auto it = aliases_.find(alias_key(name));
+      if(it != aliases_.end()) aliased = &it->second;
+    }
+    const Integer_point& p = aliased ? *aliased : name;
     int* slot;
     if(p.kind == AT_VERTEX) slot = &vertex_id_[std::size_t(p.element)];
     else if(p.kind == IN_FACE) {
@@ -117,7 +127,13 @@ private:
       return std::size_t(h);
     }
   };
+  // a point on an edge by its name, a vertex by -1 - its index
+  static Key alias_key(const Integer_point& p)
+  {
+    return p.kind == AT_VERTEX ? Key{-1 - p.element, 0, 0} : Key{p.element, p.uv.u, p.uv.v};
+  }
   std::unordered_map<Key, int, Key_hash> ids_;
+  std::unordered_map<Key, Integer_point, Key_hash> aliases_;
   std::vector<int> vertex_id_, face_id_;
   int face_ = -1;
   std::int64_t u0_ = 0, v0_ = 0;

@@ -17,6 +17,8 @@
 //      chart of each set's first piece; a cycle that closes with another transition than the identity
 //      means a cell that is no disk (a guard: a cycle inside an open cell would need a cone inside it).
 //      A border edge through the open cell of a piece cuts the cell: incomplete, dropped and counted.
+//      Across a collapsed face (collapsed_faces.h) the piece is glued to the pieces beyond the sides of that
+//      face that run through the same open cell (glue_across()), and the cell covers the collapsed face.
 //   2. corners: every corner of a piece's cell that lies in the closed UV triangle of its face is an
 //      integer point of the surface (integer_points.h); mapped into the chart of the cell's first piece
 //      it is one of the four corners of that chart's cell. Each corner of a complete cell must be
@@ -27,12 +29,15 @@
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
 #include <CGAL/Seamless_snapping/internal/quad/chart_union_find.h>
+#include <CGAL/Seamless_snapping/internal/quad/collapsed_faces.h>
 #include <CGAL/Seamless_snapping/internal/quad/integer_points.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>   // vertex_pair_name()
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -56,38 +61,89 @@ inline std::string cell_name(const Grid_point& c, int f)
          std::to_string(c.v + 1) + "] of face " + std::to_string(f);
 }
 
+// Where glue_across() went: the collapsed faces it crossed and the border sides it met, per piece.
+struct Collapsed_crossings
+{
+  std::vector<std::pair<std::size_t, int> > faces;    // (piece, collapsed face whose sides run through its open cell)
+  std::vector<std::size_t> cut;                       // pieces whose open cell a border side of a collapsed face cuts
+};
+
+// Unites piece x with the piece of face f in the cell that T (the chart of x's face to f's) maps x's cell to,
+// reached across edge g.
+inline Status glue_to(const Corner_mesh& cm, const Cell_pieces& pieces, std::size_t x, int f, const Grid_transform& T,
+                      int g, Chart_union_find& uf, std::string& message)
+{
+  const Grid_point& c = pieces.cell[x];
+  const long y = pieces.find(f, T.apply_to_cell(c));
+  if(y < 0) {
+    message = "internal error: the " + cell_name(c, pieces.face[x]) + " has no piece in face " + std::to_string(f) +
+              " across edge " + vertex_pair_name(cm, g);
+    return EXACTNESS_CHECK_FAILED;
+  }
+  if(!uf.unite(int(x), int(y), T)) {
+    message = "the " + cell_name(c, pieces.face[x]) + " closes around the surface (its pieces are joined through a "
+              "non-trivial transition, last across edge " + vertex_pair_name(cm, g) + "): it is not a disk, so the "
+              "cells are no quads; the integer grid is too coarse for the surface (use a larger grid_scale)";
+    return INVALID_INPUT;
+  }
+  return SUCCESS;
+}
+
+// The same where the face across g is collapsed: x is glued to the pieces beyond those sides of that face that run
+// through the same open cell (on the line of g: they do iff their u and v ranges overlap the cell's), and so on
+// through neighbouring collapsed faces, each crossed once.
+inline Status glue_across(const Corner_mesh& cm, const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
+                          const Collapsed_faces& collapsed, std::size_t x, int g, Chart_union_find& uf,
+                          Collapsed_crossings& crossings, std::string& message)
+{
+  struct Step { int h; Grid_transform T; };           // into face(h) across h; T: the chart of x's face to face(h)'s
+  std::vector<Step> todo(1, Step{cm.opp[g], transition[std::size_t(g)]});
+  const std::size_t crossed_before = crossings.faces.size();
+  while(!todo.empty()) {
+    const Step step = todo.back();
+    todo.pop_back();
+    const int f = cm.face[step.h];
+    if(!collapsed.is_collapsed[std::size_t(f)]) {
+      const Status s = glue_to(cm, pieces, x, f, step.T, g, uf, message);
+      if(s != SUCCESS) return s;
+      continue;
+    }
+    const auto first = crossings.faces.begin() + std::ptrdiff_t(crossed_before);
+    if(std::find(first, crossings.faces.end(), std::make_pair(x, f)) != crossings.faces.end()) continue;
+    crossings.faces.emplace_back(x, f);
+    const Grid_point c = step.T.apply_to_cell(pieces.cell[x]);
+    for(int h : {cm.next[step.h], cm.prev[step.h]}) {  // the other two sides of f: from corner prev(h) to corner h
+      if(!ranges_overlap_open_cell(corner_point(cm, cm.prev[h]), corner_point(cm, h), c)) continue;
+      if(cm.is_border_halfedge(cm.opp[h])) crossings.cut.push_back(x);
+      else todo.push_back(Step{cm.opp[h], compose(transition[std::size_t(h)], step.T)});
+    }
+  }
+  return SUCCESS;
+}
+
 // Stage 1: glues the pieces into cells.
 inline Status glue_pieces(const Corner_mesh& cm, const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
-                          Chart_union_find& uf, std::string& message)
+                          const Collapsed_faces& collapsed, Chart_union_find& uf, Collapsed_crossings& crossings,
+                          std::string& message)
 {
   for(const Cell_pieces::Glue& glue : pieces.glue) {
-    const std::size_t x = glue.piece;
-    const int g = glue.halfedge, o = cm.opp[g];
-    const Grid_point& c = pieces.cell[x];
-    const Grid_transform& T = transition[std::size_t(g)];
-    const long y = pieces.find(cm.face[o], T.apply_to_cell(c));
-    if(y < 0) {
-      message = "internal error: the " + cell_name(c, pieces.face[x]) + " has no piece in face " +
-                std::to_string(cm.face[o]) + " across edge " + vertex_pair_name(cm, g);
-      return EXACTNESS_CHECK_FAILED;
-    }
-    if(!uf.unite(int(x), int(y), T)) {
-      message = "the " + cell_name(c, pieces.face[x]) + " closes around the surface (its pieces are joined through a "
-                "non-trivial transition, last across edge " + vertex_pair_name(cm, g) + "): it is not a disk, so the "
-                "cells are no quads; the integer grid is too coarse for the surface (use a larger grid_scale)";
-      return INVALID_INPUT;
-    }
+    const int g = glue.halfedge, f = cm.face[cm.opp[g]];
+    const Status s = collapsed.is_collapsed[std::size_t(f)]
+                         ? glue_across(cm, transition, pieces, collapsed, glue.piece, g, uf, crossings, message)
+                         : glue_to(cm, pieces, glue.piece, f, transition[std::size_t(g)], g, uf, message);
+    if(s != SUCCESS) return s;
   }
   return SUCCESS;
 }
 
 inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
                            const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
-                           Quad_cells& out, std::string& message)
+                           const Collapsed_faces& collapsed, Quad_cells& out, std::string& message)
 {
   out = Quad_cells();
   Chart_union_find uf(int(pieces.size()));
-  const Status s = glue_pieces(cm, transition, pieces, uf, message);
+  Collapsed_crossings crossings;
+  const Status s = glue_pieces(cm, transition, pieces, collapsed, uf, crossings, message);
   if(s != SUCCESS) return s;
 
   // cells, numbered by their first piece (the representative); incomplete ones marked
@@ -101,16 +157,20 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
     cell_of[x] = cell_of[std::size_t(r)];
   }
   std::vector<char> complete(roots.size(), 1);
+  auto drop = [&](std::size_t x) {
+    if(!complete[std::size_t(cell_of[x])]) return;
+    complete[std::size_t(cell_of[x])] = 0;
+    ++out.incomplete;
+    if(out.first_incomplete_face < 0) out.first_incomplete_face = pieces.face[x];
+  };
   for(std::size_t x = 0; x < pieces.size(); ++x)
-    if(pieces.cut[x] && complete[std::size_t(cell_of[x])]) {
-      complete[std::size_t(cell_of[x])] = 0;
-      ++out.incomplete;
-      if(out.first_incomplete_face < 0) out.first_incomplete_face = pieces.face[x];
-    }
+    if(pieces.cut[x]) drop(x);
+  for(std::size_t x : crossings.cut) drop(x);
 
   // corners
   Integer_point_index index(cm.n_vertices);
   index.reserve(roots.size() + roots.size() / 8 + 16);   // about one point per cell on a closed surface
+  add_collapsed_aliases(cm, face_halfedge, collapsed, transition, index);
   std::vector<int> corner(4 * roots.size(), -1);
   out.faces_first.assign(1, 0);
   for(int f = 0; f < cm.n_faces; ++f) {
@@ -151,13 +211,16 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
       }
     }
   }
-  // the faces per cell: pieces are ordered by face, so each cell's list comes out ascending
+  // the faces per cell: pieces are ordered by face, so each cell's list comes out ascending; the collapsed faces
+  // crossed are added and sorted in
   std::vector<std::size_t> count(roots.size() + 1, 0);
   for(std::size_t x = 0; x < pieces.size(); ++x) ++count[std::size_t(cell_of[x]) + 1];
+  for(const std::pair<std::size_t, int>& c : crossings.faces) ++count[std::size_t(cell_of[c.first]) + 1];
   for(std::size_t k = 0; k < roots.size(); ++k) count[k + 1] += count[k];
-  std::vector<int> faces_of_cell(pieces.size());      // the pieces' faces, grouped by cell
+  std::vector<int> faces_of_cell(count.back());       // the pieces' faces, grouped by cell
   std::vector<std::size_t> fill(count.begin(), count.end() - 1);
   for(std::size_t x = 0; x < pieces.size(); ++x) faces_of_cell[fill[std::size_t(cell_of[x])]++] = pieces.face[x];
+  for(const std::pair<std::size_t, int>& c : crossings.faces) faces_of_cell[fill[std::size_t(cell_of[c.first])]++] = c.second;
   for(std::size_t cell = 0; cell < roots.size(); ++cell) {
     if(!complete[cell]) continue;
     std::array<int, 4> q;
@@ -172,10 +235,12 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
     }
     out.quads.push_back(q);
     const auto b = faces_of_cell.begin() + std::ptrdiff_t(count[cell]), e = faces_of_cell.begin() + std::ptrdiff_t(count[cell + 1]);
+    if(!crossings.faces.empty()) std::sort(b, e);
     out.faces.insert(out.faces.end(), b, std::unique(b, e));
     out.faces_first.push_back(out.faces.size());
   }
   out.points = index.points();
+  if(!collapsed.faces.empty()) name_outside_collapsed_faces(cm, transition, collapsed, out.points);
   return SUCCESS;
 }
 

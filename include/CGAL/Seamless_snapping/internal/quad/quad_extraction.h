@@ -12,7 +12,8 @@
 
 // Quad mesh extraction from an exact, fold-free integer-grid map (extract_quad_mesh()), in three stages:
 //   1. check_quad_input(): an exact IGM (is_exact_integer_grid_map_impl(), which also gives the rotation k
-//      of every cut edge), no fold-overs or zero-area triangles, the UVs in grid units (multiplied by the
+//      of every cut edge), no fold-overs, no zero-area triangles but collinear ones with three distinct
+//      corners (collapsed onto their long side: collapsed_faces.h), the UVs in grid units (multiplied by the
 //      grid scale, exactly) and within 2^30, every vertex whose quad valence is not 4 (quad_valences(): a
 //      cone) on an integer point and not of valence 1; the map's Euler characteristic, border loops and
 //      exact UV area, for the verification;
@@ -147,7 +148,7 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
 
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
 inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<int>& edge_k, Map_facts& facts,
-                               Quad_mesh_report& r)
+                               std::vector<int>& collinear, Quad_mesh_report& r)
 {
   r.faces = std::size_t(cm.n_faces);
   std::string why;
@@ -156,13 +157,15 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
     return INVALID_INPUT;
   }
   const Fold_overs folds = find_fold_overs(cm);
-  if(!folds.empty()) {
-    r.fold_overs.assign(folds.negative.begin(), folds.negative.end());
-    r.zero_area_faces.assign(folds.degenerate.begin(), folds.degenerate.end());
-    r.message = "the map has " + folds.describe() + ": its integer isolines do not form quads there; make the map "
-                "fold-free (untangle it) first";
+  r.fold_overs.assign(folds.negative.begin(), folds.negative.end());
+  r.zero_area_faces.assign(folds.degenerate.begin(), folds.degenerate.end());
+  if(folds.blocks_quads()) {
+    r.message = "the map has " + folds.describe() + (folds.collinear.size() < folds.degenerate.size() ?
+                "; " + std::to_string(folds.degenerate.size() - folds.collinear.size()) + " of them with two corners at one UV point" : "") +
+                ": its integer isolines do not form quads there; make the map fold-free (untangle it) first";
     return FOLD_OVERS;
   }
+  collinear = folds.collinear;
   const int exponent = -scale_exponent;
   const Status s = normalize_uv_scale(cm, r.message, &exponent);
   if(s != SUCCESS) return s;
@@ -232,8 +235,8 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
   auto t0 = std::chrono::steady_clock::now();
   Corner_mesh& cm = out.cm;
   Map_facts facts;
-  std::vector<int> edge_k;
-  Status s = check_quad_input(cm, scale_exponent, edge_k, facts, r);
+  std::vector<int> edge_k, collinear;
+  Status s = check_quad_input(cm, scale_exponent, edge_k, facts, collinear, r);
   r.check_ms = ms_since(t0);
   if(s != SUCCESS) return s;
 
@@ -242,9 +245,10 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
   for(int h = 0; h < cm.n_halfedges; ++h)
     if(!cm.is_border_halfedge(h) && face_halfedge[std::size_t(cm.face[h])] < 0) face_halfedge[std::size_t(cm.face[h])] = h;
   const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
+  const Collapsed_faces collapsed(cm.n_faces, collinear);
   Cell_pieces pieces;
-  s = collect_cell_pieces(cm, face_halfedge, max_candidate_cells, pieces, r.message);
-  if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, out.cells, r.message);
+  s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, max_candidate_cells, pieces, r.message);
+  if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, out.cells, r.message);
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
   r.incomplete_cells = out.cells.incomplete;

@@ -13,8 +13,10 @@
 // The faces that keep a corner UV map from being locally injective: fold-overs (negatively oriented
 // UV triangles) and zero-area UV triangles, found with the exact orientation predicate on the corner
 // UVs (CGAL's filtered predicate on doubles: exact). Quad extraction and quad valences need a map
-// without them (extract_quad_mesh(), quad_valences()): each face of a fold-free map covers its UV
-// triangle once, counter-clockwise.
+// without fold-overs (extract_quad_mesh(), quad_valences()): each face of a fold-free map covers its UV
+// triangle once, counter-clockwise. Of the zero-area triangles they accept those with three distinct
+// (collinear) corners, the limit of a thin positively oriented triangle, collapsed onto their longest
+// side (quad/collapsed_faces.h); not those with two corners at one UV point.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
@@ -32,8 +34,11 @@ struct Fold_overs
 {
   std::vector<int> negative;     // faces (Corner_mesh numbering) whose UV triangle is negatively oriented
   std::vector<int> degenerate;   // faces whose UV triangle has zero area
+  std::vector<int> collinear;    // those of them with three distinct corners (no side of length zero)
 
   bool empty() const { return negative.empty() && degenerate.empty(); }
+  // a fold-over, or a zero-area triangle with two corners at one UV point: no quad mesh follows the map
+  bool blocks_quads() const { return !negative.empty() || collinear.size() < degenerate.size(); }
 
   // "N fold-overs (faces a b c ...) and M zero-area UV triangles (faces ...)", at most 10 faces each
   std::string describe() const
@@ -57,12 +62,15 @@ inline Fold_overs find_fold_overs(const Corner_mesh& cm)
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
     const int a = cm.prev[h], c = cm.next[h];
-    o[std::size_t(cm.face[h])] = static_cast<signed char>(
-        CGAL::orientation(P(cm.u[a], cm.v[a]), P(cm.u[h], cm.v[h]), P(cm.u[c], cm.v[c])));
+    const P pa(cm.u[a], cm.v[a]), ph(cm.u[h], cm.v[h]), pc(cm.u[c], cm.v[c]);
+    signed char& of = o[std::size_t(cm.face[h])];
+    of = static_cast<signed char>(CGAL::orientation(pa, ph, pc));
+    if(of == CGAL::ZERO && pa != ph && ph != pc && pc != pa) of = 2;   // zero area, three distinct corners
   }
   for(int f = 0; f < cm.n_faces; ++f) {
     if(o[std::size_t(f)] == CGAL::NEGATIVE) r.negative.push_back(f);
-    else if(o[std::size_t(f)] == CGAL::ZERO) r.degenerate.push_back(f);
+    else if(o[std::size_t(f)] == CGAL::ZERO || o[std::size_t(f)] == 2) r.degenerate.push_back(f);
+    if(o[std::size_t(f)] == 2) r.collinear.push_back(f);
   }
   return r;
 }

@@ -34,7 +34,10 @@
 // direction (its first edge is exactly axis-parallel). On a fold-free map (every corner of angle in
 // (0, 180) degrees) every count is determined; a corner of 180 degrees or a zero-length edge (only in a
 // zero-area triangle) leaves it undetermined, and fold-overs make the sum a signed winding number that
-// no quad mesh has (quad_valences() refuses such maps).
+// no quad mesh has (quad_valences() refuses such maps). A zero-area triangle with three distinct
+// corners is taken as the limit of a thin positive one (as the quad extraction collapses it,
+// quad/collapsed_faces.h): its middle corner turns by +180 degrees, which crosses exactly 2 quadrant
+// boundaries from any direction, its two others by 0.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
@@ -94,8 +97,8 @@ inline bool corner_quarter_crossings(const Corner_mesh& cm, int h, int& crossing
   return corner_quarter_crossings(q, pa, pb, crossings);
 }
 
-// Precondition: the corner UVs of `cm` form an exactly seamless map without fold-overs and zero-area
-// triangles (find_fold_overs() is empty).
+// Precondition: the corner UVs of `cm` form an exactly seamless map without fold-overs and without
+// zero-area triangles that have two corners at one UV point (find_fold_overs().blocks_quads() is false).
 inline Quad_valence_result quad_valences(const Corner_mesh& cm)
 {
   Quad_valence_result r;
@@ -104,9 +107,11 @@ inline Quad_valence_result quad_valences(const Corner_mesh& cm)
     if(cm.is_border_halfedge(h)) continue;
     const int v = cm.target[h];
     int c = 0;
-    const bool determined = corner_quarter_crossings(cm, h, c);
-    CGAL_assertion(determined);
-    CGAL_USE(determined);
+    if(!corner_quarter_crossings(cm, h, c)) {        // the middle corner of collinear ones (no zero-length edge)
+      CGAL_assertion((cm.u[h] != cm.u[cm.next[h]] || cm.v[h] != cm.v[cm.next[h]]) &&
+                     (cm.u[h] != cm.u[cm.prev[h]] || cm.v[h] != cm.v[cm.prev[h]]));
+      c = 2;
+    }
     r.valence[v] += c;
     const int a = cm.next[h];                        // v -> target(a): the first edge of a border fan
     if(cm.is_border_halfedge(cm.opp[a]) && (cm.u[a] == cm.u[h] || cm.v[a] == cm.v[h])) ++r.valence[v];
