@@ -14,7 +14,8 @@
 //                                 every trace traced back from its end returns to its cone exactly
 //   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
 //   trace: shared data, snapped   the same properties on every snapped shared map without fold-overs
-//                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset)
+//                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset); the maps
+//                                 with fold-overs (the knight) untangled first: fold-free, a valid layout
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -529,7 +530,7 @@ static void test_shared_data()
 {
   std::vector<fs::path> files;
   if(!shared_obj_files_or_skip("trace: shared data", files)) return;
-  std::size_t exact_maps = 0, input_failures = 0, inexact_inputs = 0, inputs_seen_inexact = 0;
+  std::size_t exact_maps = 0, untangled_maps = 0, input_failures = 0, inexact_inputs = 0, inputs_seen_inexact = 0;
   for(const fs::path& p : files) {
     if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_trace
     Mesh m;
@@ -538,7 +539,22 @@ static void test_shared_data()
     std::size_t crossings = 0;
     print_inexact_graph(m, uv, p.filename().string(), input_failures, crossings);
     if(!SS::is_exactly_seamless(m, uv)) { ++inexact_inputs; inputs_seen_inexact += crossings > 0 ? 1 : 0; }
+    const Mesh input = m;
     SS::Snap_report r = SS::snap_seamless_parameterization(m, uv);
+    if(r.status == SS::SUCCESS && r.flips_before > 0) {
+      // fold-overs in the input: the snap keeps them, the untangling removes them (the knight's 3); then the
+      // map is locally injective and its layout valid
+      m = input;
+      uv = uv_of(m);
+      r = SS::snap_seamless_parameterization(m, uv, SS::parameters::untangle(true));
+      if(r.status == SS::SUCCESS && r.flips_after_repair + r.degenerate_after_repair == 0 && r.winding_defects.empty()) {
+        const SS::Motorcycle_graph<Mesh> g = check_exact_graph(m, uv, p.filename().string() + ", untangled");
+        assert(!CGAL::is_closed(m) || g.layout.is_valid());
+        ++exact_maps;
+        ++untangled_maps;
+        continue;
+      }
+    }
     if(r.status != SS::SUCCESS || r.flips_before > 0) {
       std::cout << "trace: " << p.filename().string() << ": snapped map not checked (" << SS::status_name(r.status)
                 << ", " << r.flips_before << " fold-overs in the input)\n";
@@ -547,7 +563,8 @@ static void test_shared_data()
     check_exact_graph(m, uv, p.filename().string() + ", snapped");
     ++exact_maps;
   }
-  std::cout << "trace: shared data: " << exact_maps << " snapped maps checked; inexact inputs: " << input_failures
+  std::cout << "trace: shared data: " << exact_maps << " snapped maps checked (" << untangled_maps
+            << " untangled first); inexact inputs: " << input_failures
             << " failed separatrices; " << inputs_seen_inexact << " of " << inexact_inputs
             << " inexact inputs show inexact cut crossings\n";
   assert(exact_maps >= 3);
