@@ -186,7 +186,7 @@ inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, const std::vec
 
 // Collects the pieces of every face but the collapsed ones. Preconditions: the map is fold-free (its zero-area
 // faces collapsed), its UVs are in grid units with |u|, |v| < 2^30. RANGE_EXCEEDED (nothing collected) when the
-// bounding boxes of the faces hold more than `max_candidates` cells in all.
+// bounding boxes of the faces hold more than `max_candidates` cells in all (grid points for the collapsed faces).
 inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
                                   const std::vector<char>& collapsed, std::size_t max_candidates, Cell_pieces& out,
                                   std::string& message)
@@ -198,7 +198,15 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
     const Uv_point t[3] = {corner_point(cm, h0), corner_point(cm, cm.next[h0]), corner_point(cm, cm.prev[h0])};
     std::int64_t i0, i1, j0, j1;
     candidate_cells(t, i0, i1, j0, j1);
-    candidates += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
+    if(collapsed[std::size_t(f)]) {               // the grid points of the box, which add_collapsed_aliases() visits
+      const std::int64_t ni = std::int64_t(std::floor((std::max)({t[0].x(), t[1].x(), t[2].x()}))) -
+                              std::int64_t(std::ceil((std::min)({t[0].x(), t[1].x(), t[2].x()}))) + 1;
+      const std::int64_t nj = std::int64_t(std::floor((std::max)({t[0].y(), t[1].y(), t[2].y()}))) -
+                              std::int64_t(std::ceil((std::min)({t[0].y(), t[1].y(), t[2].y()}))) + 1;
+      candidates += std::size_t((std::max)(ni, std::int64_t(0))) * std::size_t((std::max)(nj, std::int64_t(0)));
+    } else {
+      candidates += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
+    }
     if(candidates > max_candidates) {
       message = "the faces' UV bounding boxes hold more than " + std::to_string(max_candidates) + " unit cells of the " +
                 "integer grid (reached at face " + std::to_string(f) + "): the quad mesh would be too large; use a " +

@@ -59,7 +59,8 @@ struct Collapsed_faces
 // Names every integer point of the long side of each collapsed face (UVs in grid units) by one name: a mesh vertex
 // where the point is one (the smallest), else its point on the edge of smallest index that is a side of a face not
 // collapsed (if any); every other name of the point becomes an alias of it in `index`. Points shared by neighbouring
-// collapsed faces are one point for all of them.
+// collapsed faces are one point for all of them. Visits the grid points of each collapsed face's UV bounding box
+// (counted in collect_cell_pieces()'s bound).
 inline void add_collapsed_aliases(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
                                   const Collapsed_faces& collapsed, const std::vector<Grid_transform>& transition,
                                   Integer_point_index& index)
