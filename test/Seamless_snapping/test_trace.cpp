@@ -15,7 +15,10 @@
 //   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
 //   trace: shared data, snapped   the same properties on every snapped shared map without fold-overs
 //                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset); the maps
-//                                 with fold-overs (the knight) untangled first: fold-free, a valid layout
+//                                 with fold-overs (the knight) untangled first: fold-free, a valid layout; in
+//                                 integer-grid mode (a forced zero-area face): traced through, the layout refused
+//   trace: collapsed face         a zero-area face with three distinct corners is crossed exactly, also from its
+//                                 middle corner
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -311,8 +314,10 @@ static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Me
 }
 
 // Checks the properties of the motorcycle graph of an exactly seamless map without fold-overs and
-// returns the graph. `what` names the map in the output.
-static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, const std::string& what)
+// returns the graph. `what` names the map in the output. `collapsed_faces`: the map has zero-area faces with three
+// distinct corners, which the traces cross, and the layout must be refused.
+static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, const std::string& what,
+                                                    bool collapsed_faces = false)
 {
   auto t0 = std::chrono::steady_clock::now();
   Tracer tracer(m, uv);
@@ -371,7 +376,11 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
               " graph %.0f ms, back %.0f ms\n", what.c_str(), g.cones, g.border_corners, g.separatrices.size(),
               g.ends[int(SS::Trace_end::CONE)], g.ends[int(SS::Trace_end::BORDER)],
               g.ends[int(SS::Trace_end::EARLIER_TRACE)], traced_back, graph_ms, ms_since(t0));
-  check_layout(m, uv, g, what);
+  if(!collapsed_faces) check_layout(m, uv, g, what);
+  else {                                 // zero-area faces: traced through, but no layout (reported)
+    assert(g.layout.status != SS::SUCCESS && g.layout.message.find("degenerate") != std::string::npos);
+    std::printf("trace: %-40s layout refused: %s\n", what.c_str(), g.layout.message.c_str());
+  }
   return g;
 }
 
@@ -526,11 +535,59 @@ static void test_cycle_closes()
   assert(target(loop.segments.back().target.halfedge, m) == vs[0]);
 }
 
+// every zero-area UV triangle of the map has three distinct corners (exactly)
+static bool zero_area_faces_collinear(const Mesh& m, UV_map uv)
+{
+  for(face_descriptor f : m.faces()) {
+    const halfedge_descriptor h = m.halfedge(f);
+    const Point_2 a = get(uv, m.prev(h)), b = get(uv, h), c = get(uv, m.next(h));
+    if(CGAL::orientation(a, b, c) == CGAL::COLLINEAR && (a == b || b == c || c == a)) return false;
+  }
+  return true;
+}
+
+// A zero-area face with three distinct corners is crossed: the square [0, 2]^2 with the face (A, C, c) on its
+// diagonal, c = (t, t) between A = (0, 0) and C = (2, 2) (test_quad's collapsed face). From (3/2, 1/4) along +v the
+// isoline crosses the diagonal at (3/2, 3/2): through the collapsed face into (c, C, D) for t = 1, through the vertex c
+// for t = 3/2; from c into the face's own wedge along -v it leaves through the long side: the border at (t, 0).
+static void test_collapsed_face()
+{
+  for(const CGAL::Gmpq& t : {CGAL::Gmpq(1), CGAL::Gmpq(3, 2)}) {
+    Mesh m;
+    const double td = CGAL::to_double(t);
+    const vertex_descriptor A = m.add_vertex(Point_3(0, 0, 0)), B = m.add_vertex(Point_3(2, 0, 0)),
+                            C = m.add_vertex(Point_3(2, 2, 0)), D = m.add_vertex(Point_3(0, 2, 0)),
+                            c = m.add_vertex(Point_3(td, td, 0.5));
+    const face_descriptor below = m.add_face(A, B, C);
+    m.add_face(A, C, c);
+    m.add_face(c, C, D);
+    m.add_face(A, c, D);
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(m.point(target(h, m)).x(), m.point(target(h, m)).y()));
+    Tracer tracer(m, uv);
+    assert(tracer.status() == SS::SUCCESS);
+    const Trace up = tracer.trace_from_point(below, CGAL::Gmpq(3, 2), CGAL::Gmpq(1, 4), SS::Trace_direction::PLUS_V);
+    assert(up.end == SS::Trace_end::BORDER && up.inexact_transfers == 0);
+    assert(up.segments.back().target.u == CGAL::Gmpq(3, 2) && up.segments.back().target.v == CGAL::Gmpq(2));
+    for(const auto& s : up.segments) assert(s.source.u == CGAL::Gmpq(3, 2) && s.target.u == CGAL::Gmpq(3, 2));
+    const Trace back = trace_back(m, tracer, up);
+    assert(back.end == SS::Trace_end::TARGET && back.segments.size() == up.segments.size());
+    assert(back.segments.back().target.u == CGAL::Gmpq(3, 2) && back.segments.back().target.v == CGAL::Gmpq(1, 4));
+    const halfedge_descriptor corner = CGAL::halfedge(C, c, m).first;     // c in the collapsed face
+    const Trace down = tracer.trace_from_vertex(corner, SS::Trace_direction::MINUS_V);
+    assert(down.end == SS::Trace_end::BORDER && down.inexact_transfers == 0);
+    assert(down.segments.back().target.u == t && down.segments.back().target.v == CGAL::Gmpq(0));
+  }
+  std::cout << "trace: collapsed face: crossed exactly (middle corner on and off the isoline)\n";
+}
+
 static void test_shared_data()
 {
   std::vector<fs::path> files;
   if(!shared_obj_files_or_skip("trace: shared data", files)) return;
-  std::size_t exact_maps = 0, untangled_maps = 0, input_failures = 0, inexact_inputs = 0, inputs_seen_inexact = 0;
+  std::size_t exact_maps = 0, untangled_maps = 0, collapsed_maps = 0, input_failures = 0, inexact_inputs = 0,
+              inputs_seen_inexact = 0;
   for(const fs::path& p : files) {
     if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_trace
     Mesh m;
@@ -552,6 +609,16 @@ static void test_shared_data()
         assert(!CGAL::is_closed(m) || g.layout.is_valid());
         ++exact_maps;
         ++untangled_maps;
+        // integer-grid mode: the knight keeps a forced zero-area face with three distinct (collinear) corners; the
+        // separatrices cross it (two start into it at its middle corner), the layout is refused
+        Mesh mi = input;
+        UV_map uvi = uv_of(mi);
+        const SS::Snap_report ri = SS::snap_seamless_parameterization(mi, uvi, SS::parameters::integer_grid_map(true));
+        if(ri.status == SS::SUCCESS && ri.flips_after_repair == 0 && ri.degenerate_after_repair > 0 &&
+           ri.winding_defects.empty() && zero_area_faces_collinear(mi, uvi)) {
+          check_exact_graph(mi, uvi, p.filename().string() + ", IGM, collapsed faces", true);
+          ++collapsed_maps;
+        }
         continue;
       }
     }
@@ -564,7 +631,8 @@ static void test_shared_data()
     ++exact_maps;
   }
   std::cout << "trace: shared data: " << exact_maps << " snapped maps checked (" << untangled_maps
-            << " untangled first); inexact inputs: " << input_failures
+            << " untangled first), " << collapsed_maps << " integer-grid maps with collapsed faces traced; inexact inputs: "
+            << input_failures
             << " failed separatrices; " << inputs_seen_inexact << " of " << inexact_inputs
             << " inexact inputs show inexact cut crossings\n";
   assert(exact_maps >= 3);
@@ -602,6 +670,7 @@ int main(int argc, char** argv)
   test_grid();
   test_torus_closed_loops();
   test_cycle_closes();
+  test_collapsed_face();
   if(!sanitizer_subset()) test_bear_orbifold();
   if(!sanitizer_subset()) test_connections_realized();
   test_shared_data();

@@ -215,7 +215,9 @@ public:
     if(r.finished) return;
     const Corner_mesh& M = cm();
     const int f = M.face[r.face_h];
-    if(face_orientation(M, r.face_h) <= 0)
+    const int orientation = face_orientation(M, r.face_h);
+    if(orientation == 0 && pass_collapsed_face(r)) return;
+    if(orientation <= 0)
       return finish(r, Trace_end::FOLDED_FACE, "face " + std::to_string(f) + " is flipped or degenerate in UV");
     const Face_exit ex = cross_face(M, r.face_h, r.p, r.m);
     if(ex.kind == NO_PROGRESS) {
@@ -279,13 +281,19 @@ public:
     r.at_start = false;
 
     if(ex.kind == EXIT_VERTEX) return arrive_at_vertex(r, ex.h, r.m);
-    const int o = M.opp[ex.h];
+    cross_edge(r, ex.h, ex.point, ex.lambda);
+  }
+
+  // The trace leaves face(h) at x inside the side of h (edge parameter lambda from source(h)), direction r.m.
+  void cross_edge(Trace_run& r, int h, const Exact_uv& x, const FT& lambda) const
+  {
+    const Corner_mesh& M = cm();
+    const int o = M.opp[h];
     if(M.is_border_halfedge(o))
-      return finish(r, r.along_border ? Trace_end::FELL_OFF_BORDER : Trace_end::BORDER,
-                    "border edge " + vertex_pair_name(M, ex.h));
-    const Edge_transfer tr = transfer_through_edge(M, map.rot, ex.h, ex.point, ex.lambda, r.m);
+      return finish(r, r.along_border ? Trace_end::FELL_OFF_BORDER : Trace_end::BORDER, "border edge " + vertex_pair_name(M, h));
+    const Edge_transfer tr = transfer_through_edge(M, map.rot, h, x, lambda, r.m);
     if(tr.kind == TRANSFER_MISSED)
-      return finish(r, Trace_end::MISSED_AT_CUT, "behind the cut edge " + vertex_pair_name(M, ex.h) +
+      return finish(r, Trace_end::MISSED_AT_CUT, "behind the cut edge " + vertex_pair_name(M, h) +
                                                  ", the isoline misses the edge in face " + std::to_string(M.face[o]));
     if(!tr.exact) ++r.inexact_transfers;
     r.along_border = false;
@@ -294,6 +302,36 @@ public:
     r.face_h = o;
     r.loc = Raw_point{ON_EDGE, o, tr.point};
     if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
+  }
+
+  // A face of zero UV area with three distinct corners (collinear: the limit of a thin positive triangle, the face
+  // beyond its long side on one side of its line, those beyond its short sides on the other, as the quad extraction
+  // collapses it) is crossed without advancing: from r.p on its line through the side that holds r.p inside and has
+  // the direction on its outer side (not the side the trace came in through), or, arrived at its middle corner, on
+  // from that vertex. False (nothing done) where that does not apply: a side of length zero, a direction along the
+  // line, no such side.
+  bool pass_collapsed_face(Trace_run& r) const
+  {
+    const Corner_mesh& M = cm();
+    const int c[3] = {r.face_h, M.next[r.face_h], M.next[M.next[r.face_h]]};
+    for(int i = 0; i < 3; ++i)
+      if(corner_uv(M, c[i]) == corner_uv(M, c[(i + 1) % 3])) return false;
+    const int entry = r.loc.kind == ON_EDGE ? r.loc.h : -1;
+    const Exact_uv d = advance(Exact_uv{FT(0), FT(0)}, r.m, FT(1));
+    for(int g : c) {                               // the side of g: from corner prev(g) to corner g
+      const Exact_uv A = corner_uv(M, M.prev[g]), B = corner_uv(M, g);
+      if(g == entry || r.p == A || r.p == B) continue;
+      const FT lambda = lerp_parameter(A, B, r.p);
+      if(!(CGAL::is_positive(lambda) && lambda < FT(1))) continue;
+      if(!CGAL::is_negative((B.u - A.u) * d.v - (B.v - A.v) * d.u)) continue;   // not to the right of A -> B
+      ++r.steps;
+      cross_edge(r, g, r.p, lambda);
+      return true;
+    }
+    if(entry >= 0)
+      for(int g : c)
+        if(corner_uv(M, g) == r.p) { ++r.steps; r.face_h = g; arrive_at_vertex(r, g, r.m); return true; }
+    return false;
   }
 
   void run_to_end(Trace_run& r) const { while(!r.finished) step(r); }
