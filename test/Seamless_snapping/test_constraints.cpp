@@ -988,6 +988,48 @@ static void test_untangling_step_bound()
   std::cout << "untangling: the polish's step bound keeps det J above its floor (0, 1e-6, 0.25, 0.81)\n";
 }
 
+// The independent parts of an untangling problem (Region_problem::components(), independent_parts.h): two faces
+// that share no reduced variable are two parts, each with its own flip-free step bound and energy; a face over
+// variables of both joins them into one part. The per-part values sum to the whole problem's.
+static void test_untangling_parts()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  SI::Region_problem p;
+  p.space.dimension = 4;
+  p.face_w = {0, 1, 2, 3};
+  p.face_BM = {-1, 0, 0, 0,  0, 0, 0, -1,     // face 0: J = (1 - w0, 0, 0, 1 - w1), det = (1 - w0)(1 - w1)
+               0, 1, 0, 0,   0, 0, 1, 0};     // face 1: J = (1, w2, w3, 1), det = 1 - w2 w3
+  for(std::size_t f = 0; f < 2; ++f) {
+    SI::Region_problem::Face e;
+    e.face = int(f); e.region = int(f); e.area = 1; e.J0 = Eigen::Vector4d(1, 0, 0, 1);
+    e.first = 2 * f; e.n = 2; e.slots = 0;
+    p.faces.push_back(e);
+  }
+  std::vector<int> of_w, of_face, of_var;
+  assert(p.components(of_w, of_face, of_var) == 2);
+  assert((of_w == std::vector<int>{0, 0, 1, 1}) && (of_face == std::vector<int>{0, 1}) && of_var.empty());
+  const std::vector<double> w = {0.2, 0.2, 0., 0.};
+  Eigen::VectorXd d(4);
+  d << 1., 1., 1., 1.;
+  std::vector<double> t(2, HUGE_VAL);
+  const double floor = 0.36;
+  p.group_positive_steps(w, d, floor, of_face, t);
+  // face 0: (0.8 - t)^2 = 0.36 first at t = 0.2; face 1: 1 - t^2 = 0.36 at t = 0.8
+  assert(std::fabs(t[0] - 0.2) <= 1e-12 && std::fabs(t[1] - 0.8) <= 1e-12);
+  assert(p.positive_step(w, d, floor) == (std::min)(t[0], t[1]));
+  std::vector<double> E(2, 0.), D(2, HUGE_VAL), E1(1, 0.), D1(1, HUGE_VAL);
+  std::vector<std::size_t> bad(2, 0);
+  const std::vector<double> eps(1, 1e-3);
+  p.group_values(w, eps, 0, of_face, of_var, E, D, &bad);
+  p.group_values(w, eps, 0, std::vector<int>(2, 0), of_var, E1, D1);
+  assert(std::fabs(D[0] - 0.64) <= 1e-15 && D[1] == 1 && D1[0] == (std::min)(D[0], D[1]));
+  assert(std::fabs(E[0] + E[1] - E1[0]) <= 1e-12 * E1[0] && bad[0] == 0 && bad[1] == 0);
+  p.face_w[2] = 0; p.face_w[3] = 2;          // face 1 now over w0 and w2: both faces one part, w3 (in no face) another
+  assert(p.components(of_w, of_face, of_var) == 2 && of_w[0] == of_w[2] && of_w[1] == of_w[0] && of_w[3] != of_w[0]);
+  assert(of_face[0] == of_face[1]);
+  std::cout << "untangling: independent parts found, each with its own step bound (0.2, 0.8) and energy\n";
+}
+
 static void test_untangling_analytic()
 {
   // an exact flat 8 x 8 torus (an IGM) with vertex (3, 3) dragged across its neighbour (4, 3): its triangles fold
@@ -1142,6 +1184,7 @@ int main(int argc, char** argv)
   test_integer_grid_data();
   test_untangling_energy();
   test_untangling_step_bound();
+  test_untangling_parts();
   test_untangling_analytic();
   test_untangling_data();
   test_invalid();

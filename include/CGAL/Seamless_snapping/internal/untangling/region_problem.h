@@ -215,35 +215,75 @@ public:
     return d;
   }
 
-  // sum_f area f_eps(J_f) (+ weight_proximity * proximity), and the smallest det J
-  double value(const std::vector<double>& w, double eps, double weight_proximity, double& det_min) const
+  // The energy per group g of faces and variables (group_of_face[i] of faces[i], group_of_var[l] of variable l;
+  // -1: left out): E[g] += sum_f area f_eps[g](J_f) (+ weight_proximity * proximity) over its faces and variables,
+  // D[g] min= their smallest det J, and with `non_positive`, (*non_positive)[g] += its faces with det J <= 0.
+  // eps: one per group, or one for all
+  void group_values(const std::vector<double>& w, const std::vector<double>& eps, double weight_proximity,
+                    const std::vector<int>& group_of_face, const std::vector<int>& group_of_var, std::vector<double>& E,
+                    std::vector<double>& D, std::vector<std::size_t>* non_positive = nullptr) const
   {
-    double E = 0;
-    det_min = HUGE_VAL;
-    for(const Face& e : faces) {
-      const Eigen::Vector4d j = jacobian(e, w);
-      det_min = (std::min)(det_min, untangling_determinant(j));
-      E += e.area * untangling_energy(j, eps);
+    for(std::size_t i = 0; i < faces.size(); ++i) {
+      const int g = group_of_face[i];
+      if(g < 0) continue;
+      const Eigen::Vector4d j = jacobian(faces[i], w);
+      const double det = untangling_determinant(j);
+      D[std::size_t(g)] = (std::min)(D[std::size_t(g)], det);
+      if(non_positive != nullptr) (*non_positive)[std::size_t(g)] += !(det > 0);
+      E[std::size_t(g)] += faces[i].area * untangling_energy(j, eps[eps.size() == 1 ? 0 : std::size_t(g)]);
     }
     if(weight_proximity > 0)
       for(std::size_t l = 0; l < offset.size(); ++l) {
+        const int g = group_of_var[l];
+        if(g < 0) continue;
         const double r = offset[l] + displacement(l, w);
-        E += weight_proximity * r * r / h2;
+        E[std::size_t(g)] += weight_proximity * r * r / h2;
       }
-    return E;
   }
 
-  // the gradient g and, with `hessian`, the PSD Hessian (into the values of H) of value()
-  void derivatives(const std::vector<double>& w, double eps, double weight_proximity, Eigen::VectorXd& g, bool hessian = true)
+  // The independent parts of the problem: groups of w that no face and no variable's displacement couple (the
+  // energy is a sum over them). Returns their number; per w, face and variable its group (-1: a face or a
+  // variable with no w, a constant term)
+  int components(std::vector<int>& group_of_w, std::vector<int>& group_of_face, std::vector<int>& group_of_var) const
+  {
+    Union_find uf(int(space.dimension));
+    for(const Face& e : faces)
+      for(std::size_t a = 1; a < e.n; ++a) uf.unite(face_w[e.first], face_w[e.first + a]);
+    for(std::size_t l = 0; l < vars.size(); ++l)
+      for(std::size_t q = space.ptr[l] + 1; q < space.ptr[l + 1]; ++q) uf.unite(space.w_index[space.ptr[l]], space.w_index[q]);
+    std::vector<int> id(space.dimension, -1);
+    int n = 0;
+    group_of_w.resize(space.dimension);
+    for(std::size_t i = 0; i < space.dimension; ++i) {
+      int& r = id[std::size_t(uf.find(int(i)))];
+      if(r < 0) r = n++;
+      group_of_w[i] = r;
+    }
+    group_of_face.resize(faces.size());
+    for(std::size_t i = 0; i < faces.size(); ++i) group_of_face[i] = faces[i].n > 0 ? group_of_w[std::size_t(face_w[faces[i].first])] : -1;
+    group_of_var.resize(vars.size());
+    for(std::size_t l = 0; l < vars.size(); ++l)
+      group_of_var[l] = space.ptr[l] < space.ptr[l + 1] ? group_of_w[std::size_t(space.w_index[space.ptr[l]])] : -1;
+    return n;
+  }
+
+  // the gradient g and, with `hessian`, the PSD Hessian (into the values of H) of the energy of the groups that
+  // are not -1 (group_values()); the other entries of g and H are 0
+  void derivatives(const std::vector<double>& w, const std::vector<double>& eps, double weight_proximity,
+                   const std::vector<int>& group_of_face, const std::vector<int>& group_of_var, Eigen::VectorXd& g,
+                   bool hessian)
   {
     g.setZero();
     double* values = H.valuePtr();
     if(hessian) std::fill(values, values + H.nonZeros(), 0.);
     std::vector<double> HB;
-    for(const Face& e : faces) {
+    for(std::size_t i = 0; i < faces.size(); ++i) {
+      const Face& e = faces[i];
+      const int group = group_of_face[i];
+      if(group < 0) continue;
       Eigen::Vector4d gj;
       Eigen::Matrix4d hj;
-      untangling_energy(jacobian(e, w), eps, gj, hessian ? &hj : nullptr);
+      untangling_energy(jacobian(e, w), eps[eps.size() == 1 ? 0 : std::size_t(group)], gj, hessian ? &hj : nullptr);
       const std::size_t n = e.n;
       const int* ws = face_w.data() + e.first;
       const double* BM = face_BM.data() + 4 * e.first;
@@ -269,6 +309,12 @@ public:
     if(weight_proximity > 0) {
       const int* slots = proximity_slot.data();
       for(std::size_t l = 0; l < offset.size(); ++l) {
+        if(group_of_var[l] < 0) {                            // its slots, skipped
+          if(hessian)
+            for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a)
+              for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b) slots += space.w_index[b] <= space.w_index[a] ? 1 : 0;
+          continue;
+        }
         const double c = 2 * weight_proximity / h2, r = offset[l] + displacement(l, w);
         for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a) {
           g[space.w_index[a]] += c * r * space.coef[a];
@@ -284,8 +330,19 @@ public:
   // quadratic in t)
   double positive_step(const std::vector<double>& w, const Eigen::VectorXd& d, double floor) const
   {
-    double t_max = HUGE_VAL;
-    for(const Face& e : faces) {
+    std::vector<double> t(1, HUGE_VAL);
+    group_positive_steps(w, d, floor, std::vector<int>(faces.size(), 0), t);
+    return t[0];
+  }
+
+  // the same per group of faces (t[g] min=; group_of_face as in group_values())
+  void group_positive_steps(const std::vector<double>& w, const Eigen::VectorXd& d, double floor,
+                            const std::vector<int>& group_of_face, std::vector<double>& t) const
+  {
+    for(std::size_t i = 0; i < faces.size(); ++i) {
+      const int g = group_of_face[i];
+      if(g < 0) continue;
+      const Face& e = faces[i];
       const Eigen::Vector4d j = jacobian(e, w);
       const double c = untangling_determinant(j) - floor;
       if(!(c > 0)) continue;
@@ -304,9 +361,8 @@ public:
           for(double r : {q / qa, q != 0 ? c / q : HUGE_VAL}) if(r > 0) root = (std::min)(root, r);
         }
       }
-      t_max = (std::min)(t_max, root);
+      t[std::size_t(g)] = (std::min)(t[std::size_t(g)], root);
     }
-    return t_max;
   }
 
   // per region: the faces that are not positive at w and the smallest det J

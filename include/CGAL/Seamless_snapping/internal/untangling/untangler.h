@@ -16,8 +16,9 @@
 // cone position and pin keeps holding (up to rounding; the exact snap follows).
 //
 // 1. Untangling. The fold-overs are grouped into clusters (faces sharing a vertex); each cluster gets the
-//    region of the vertices within k face rings of it (overlapping regions merge). All regions are
-//    optimized together on the energy sum area(ref) f_eps(J) of the faces touching them (Garanzha et al.
+//    region of the vertices within k face rings of it (overlapping regions merge). All regions form one
+//    problem, each of its independent parts (independent_parts.h) optimized on its own (its own eps, steps
+//    and stopping test; see untangle()) on the energy sum area(ref) f_eps(J) of the faces touching them (Garanzha et al.
 //    2021, untangling_energy.h; references: reference_shapes.h; faces proven non-positive in every
 //    solution, forced_folds.h, are left out) by Newton's method on the reduced variables (element
 //    Hessians projected onto the PSD cone, N^T H N factored by a sparse LDL^T with one symbolic analysis, once
@@ -35,7 +36,9 @@
 //    than the references), so every region made fold-free is then pulled back towards the exact snap of
 //    the input: minimize sum_l (x_l - target_l)^2 / h^2 + lambda sum area f_eps(J) / mean area, with a tiny
 //    eps (a barrier: f grows like 1 / det J), lambda = 1e-3, over the moved vertices and 2 rings around
-//    them, by Newton steps whose line search never lets a face go below det J = polish_min_det (Smith and
+//    them, each independent part of that region set on its own (independent_parts.h: its own steps and
+//    stopping test; the 302K-face bunny's polish 2.0 -> 1.2 s in one run), by Newton steps whose line search never lets a
+//    face go below det J = polish_min_det (Smith and
 //    Schaefer's flip-free step bound, shifted): every iterate stays fold-free, and the change shrinks to
 //    what keeps the faces positive with a margin (this follows the study in ../research/untangling_study.md);
 //    until a step lowers the energy by less than a relative Untangle_options::polish_tolerance. The
@@ -51,6 +54,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/untangling/independent_parts.h>
 #include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_space.h>
@@ -307,85 +311,60 @@ private:
     return out;
   }
 
-  // one Newton direction for value(w, eps, weight) into d; false if none (no descent). refactor = false: the
-  // factorization of the previous call is used if it gives a descent direction (a fixed positive definite matrix:
-  // the line search still decreases the energy), and the Hessian is not even assembled; else the Hessian is
-  // factored as with refactor = true
-  static bool newton_direction(Region_problem& p, Eigen::SimplicialLDLT<Region_problem::Matrix>& ldlt,
-                               const std::vector<double>& w, double eps, double weight, Eigen::VectorXd& g, Eigen::VectorXd& d,
-                               bool refactor = true)
-  {
-    const bool reuse = !refactor && ldlt.info() == Eigen::Success;
-    p.derivatives(w, eps, weight, g, !reuse);
-    if(reuse) {
-      d = ldlt.solve(-g);
-      if(d.allFinite() && g.dot(d) < 0) return true;
-      p.derivatives(w, eps, weight, g);                       // no descent: the Hessian after all
-    }
-    double trace = 0;
-    for(int k : p.diagonal) trace += p.H.valuePtr()[k];
-    const double shift = 1e-10 * (trace > 0 ? trace / double(w.size()) : 1.);
-    double added = 0;
-    for(double mu = shift; mu <= 1e10 * shift; mu *= 100) {   // a small shift makes the PSD matrix definite
-      for(int k : p.diagonal) p.H.valuePtr()[k] += mu - added;
-      added = mu;
-      ldlt.factorize(p.H);
-      if(ldlt.info() == Eigen::Success) { d = ldlt.solve(-g); if(d.allFinite()) return g.dot(d) < 0; }
-    }
-    d = -g;                                                   // steepest descent
-    return g.dot(d) < 0;
-  }
-
-  // backtracking (Armijo) from step t along d; w moves if the energy decreases enough
-  static bool line_search(const Region_problem& p, std::vector<double>& w, const Eigen::VectorXd& g, const Eigen::VectorXd& d,
-                          double t, double eps, double weight, double& E, double& det_min, double& work)
-  {
-    std::vector<double> trial(w.size());
-    const double slope = g.dot(d);
-    for(int ls = 0; ls < 40; ++ls, t *= 0.5) {
-      work += double(p.faces.size());
-      for(std::size_t i = 0; i < w.size(); ++i) trial[i] = w[i] + t * d[Eigen::Index(i)];
-      double dm;
-      const double E_new = p.value(trial, eps, weight, dm);
-      if(E_new <= E + 1e-4 * t * slope) { w.swap(trial); E = E_new; det_min = dm; return true; }
-    }
-    return false;
-  }
-
-  // 1. Newton's method with the eps continuation
+  // 1. Newton's method with the eps continuation, per independent part (independent_parts.h): each part has its
+  // own eps, steps and stopping test, and gives up when neither it nor the whole problem has had fewer non-positive
+  // faces for `stall` updates (a part giving up on its own progress alone left duck_qc_8, IGM, with 12 negative
+  // triangles instead of 2). Against one eps and one step for all regions (bench_snap --untangle): the 302K-face
+  // bunny's untangling 4.6-5.0 -> 3.2-4.0 s with 16 wound vertices left instead of 18; the dragon (full-seamless,
+  // default mode) with a change of max 2.9 / RMS 0.083 grid cells instead of 12.8 / 0.54, 52 wound vertices instead
+  // of 64; duck_qc_8 (default) 4 wound vertices instead of 2, its IGM 30 % slower; the other shared maps the same
+  // defects (the manual's untangling table)
   void untangle(Region_problem& p, const Untangle_options& opt, std::vector<double>& w, Untangle_statistics& stats) const
   {
     if(p.dimension() == 0 || p.faces.empty()) return;
-    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
-    ldlt.analyzePattern(p.H);
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(w.size())), d;
-    double eps = opt.eps0, det_min = 0;
-    double E_prev = p.value(w, eps, 0, det_min);
-    std::size_t fewest_bad = p.faces.size() + 1;
-    int last_progress = 0;
-    for(int outer = 0; outer < opt.max_outer; ++outer) {
+    Independent_parts parts(p);
+    const std::size_t n = std::size_t(parts.n);
+    std::vector<char> active(n, 1);
+    std::vector<double> eps(n, opt.eps0), E_prev, D, E, slope, t;
+    std::vector<std::size_t> bad, last_bad(n, 0), fewest_bad(n, p.faces.size() + 1);
+    std::vector<int> last_progress(n, 0);
+    std::size_t fewest_total = p.faces.size() + 1;
+    int last_total = 0;
+    Eigen::VectorXd d;
+    parts.values(p, w, eps, 0, active, E_prev, D);
+    for(int outer = 0; outer < opt.max_outer && parts.any(active); ++outer) {
       if(stats.work > budget_) { stats.budget_spent = true; break; }
       ++stats.outer_iterations;
-      double E = E_prev;
-      for(int it = 0; it < opt.max_newton; ++it) {
+      E = E_prev;
+      std::vector<char> stepping = active;
+      for(int it = 0; it < opt.max_newton && parts.any(stepping); ++it) {
         ++stats.newton_steps;
-        const double before = E;
-        stats.work += double(p.faces.size());
-        if(!newton_direction(p, ldlt, w, eps, 0, g, d, it == 0) || !line_search(p, w, g, d, 1., eps, 0, E, det_min, stats.work)) break;
-        if(before - E <= 1e-9 * std::fabs(E)) break;
+        stats.work += parts.work(stepping);
+        parts.newton_directions(p, w, eps, 0, it == 0, stepping, d, slope);
+        t.assign(n, 1.);
+        stats.work += parts.line_search(p, w, d, slope, t, eps, 0, 1e-9, stepping, E, D);
       }
-      const double sigma = (std::max)(1 - E / E_prev, opt.sigma_min);
-      const double mu = (1 - sigma) * untangling_chi(det_min, eps);
-      const bool done = det_min > 0 && std::fabs(E_prev - E) <= 1e-5 * std::fabs(E);
-      eps = det_min < mu ? (std::max)(1e-9, 2 * std::sqrt(mu * (mu - det_min))) : 1e-9;
-      E_prev = p.value(w, eps, 0, det_min);
-      if(done) break;
-      if(det_min <= 0) {                                       // stalled: the region is too small for a fold-free map
-        std::size_t bad = 0;
-        for(const Region_problem::Face& e : p.faces) bad += !(untangling_determinant(p.jacobian(e, w)) > 0);
-        if(bad < fewest_bad) { fewest_bad = bad; last_progress = outer; }
-        else if(outer - last_progress >= opt.stall) break;
+      std::vector<double> E_at_w;
+      parts.values(p, w, eps, 0, active, E_at_w, D, &bad);  // D and the faces not positive at w
+      std::size_t total_bad = 0;                             // of all parts (those stopped: when they stopped)
+      for(std::size_t c = 0; c < n; ++c) {
+        if(active[c]) last_bad[c] = bad[c];
+        total_bad += last_bad[c];
       }
+      if(total_bad < fewest_total) { fewest_total = total_bad; last_total = outer; }
+      for(std::size_t c = 0; c < n; ++c) {
+        if(!active[c]) continue;
+        const double sigma = (std::max)(1 - E[c] / E_prev[c], opt.sigma_min);
+        const double mu = (1 - sigma) * untangling_chi(D[c], eps[c]);
+        const bool done = D[c] > 0 && std::fabs(E_prev[c] - E[c]) <= 1e-5 * std::fabs(E[c]);
+        eps[c] = D[c] < mu ? (std::max)(1e-9, 2 * std::sqrt(mu * (mu - D[c]))) : 1e-9;
+        if(done) active[c] = 0;
+        else if(D[c] <= 0) {                                    // stalled: the region is too small for a fold-free map
+          if(bad[c] < fewest_bad[c]) { fewest_bad[c] = bad[c]; last_progress[c] = outer; }
+          else if(outer - last_progress[c] >= opt.stall && outer - last_total >= opt.stall) active[c] = 0;
+        }
+      }
+      parts.values(p, w, eps, 0, active, E_prev, D);
     }
   }
 
@@ -415,23 +394,23 @@ private:
     double area = 0;
     for(const Region_problem::Face& e : p.faces) area += e.area;
     const double lambda = opt.polish_lambda * double(p.faces.size()) / area;   // per unit of mean area
-    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
-    ldlt.analyzePattern(p.H);
     std::vector<double> w(p.dimension(), 0.);
-    Eigen::VectorXd g = Eigen::VectorXd::Zero(Eigen::Index(w.size())), d;
-    // the energy is lambda-weighted f (barrier) + proximity; value() weighs proximity, so scale by 1 / lambda
-    const double weight = 1 / lambda, eps = 1e-12;
-    double det_min = 0;
-    double E = p.value(w, eps, weight, det_min);
-    if(!(det_min > 0)) return SUCCESS;                           // not fold-free: nothing to polish
-    for(int it = 0; it < opt.polish_iterations; ++it) {
+    // the energy is lambda-weighted f (barrier) + proximity; group_values() weighs proximity, so scale by 1 / lambda
+    const std::vector<double> eps(1, 1e-12);
+    const double weight = 1 / lambda;
+    Independent_parts parts(p);                                  // each part steps and stops on its own
+    std::vector<char> active(std::size_t(parts.n), 1);
+    std::vector<double> E, D, slope, t;
+    Eigen::VectorXd d;
+    parts.values(p, w, eps, weight, active, E, D);
+    for(int c = 0; c < parts.n; ++c) active[std::size_t(c)] = D[std::size_t(c)] > 0;   // not fold-free: stays
+    for(int it = 0; it < opt.polish_iterations && parts.any(active); ++it) {
       ++stats.polish_steps;
-      const double before = E;
-      if(!newton_direction(p, ldlt, w, eps, weight, g, d, it % 2 == 0)) break;   // odd steps: the last factorization
-      const double t = (std::min)(1., 0.8 * p.positive_step(w, d, opt.polish_min_det));
-      double work = 0;
-      if(!line_search(p, w, g, d, t, eps, weight, E, det_min, work)) break;
-      if(before - E <= opt.polish_tolerance * std::fabs(E)) break;
+      parts.newton_directions(p, w, eps, weight, it % 2 == 0, active, d, slope);   // odd steps: the last factorizations
+      t.assign(std::size_t(parts.n), HUGE_VAL);
+      p.group_positive_steps(w, d, opt.polish_min_det, parts.masked(parts.of_face, active), t);
+      for(double& tc : t) tc = (std::min)(1., 0.8 * tc);
+      parts.line_search(p, w, d, slope, t, eps, weight, opt.polish_tolerance, active, E, D);
     }
     for(std::size_t l = 0; l < p.vars.size(); ++l) x[std::size_t(p.vars[l])] += p.displacement(l, w);
     return SUCCESS;

@@ -1,0 +1,228 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_INDEPENDENT_PARTS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_INDEPENDENT_PARTS_H
+
+// The independent parts of an untangling problem (region_problem.h). Its regions are often far apart (the
+// shared 302K-face bunny's polish: 144 parts, 63K reduced variables): no face and no variable couples two parts,
+// so the energy is a sum over them and N^T H N is block diagonal. Each part is then its own problem (untangler.h):
+// its own block factored, its own eps continuation, flip-free step bound, backtracking and stopping test. Solved
+// together, one step would be bounded by the part nearest its barrier, one eps would serve every part, and every
+// part would take as many steps as the slowest (the bunny's polish: 50 steps, the cap, for all 144 parts); and a
+// part that has stopped is neither factored nor evaluated again.
+
+#include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+
+// d = -(M + mu I)^-1 g for the smallest mu = s, 100 s, ..., 1e10 s (s = 1e-10 times the mean diagonal) for
+// which the LDL^T of M + mu I succeeds (a small shift makes a PSD matrix definite); M holds the PSD Hessian
+// (lower triangle, its diagonal entries at `diagonal`) and keeps the shift. Steepest descent if none factors.
+// True if d is a descent direction.
+inline bool shifted_newton_solve(Eigen::SimplicialLDLT<Region_problem::Matrix>& ldlt, Region_problem::Matrix& M,
+                                 const std::vector<int>& diagonal, const Eigen::VectorXd& g, Eigen::VectorXd& d)
+{
+  double trace = 0;
+  for(int k : diagonal) trace += M.valuePtr()[k];
+  const double shift = 1e-10 * (trace > 0 ? trace / double(g.size()) : 1.);
+  double added = 0;
+  for(double mu = shift; mu <= 1e10 * shift; mu *= 100) {
+    for(int k : diagonal) M.valuePtr()[k] += mu - added;
+    added = mu;
+    ldlt.factorize(M);
+    if(ldlt.info() == Eigen::Success) { d = ldlt.solve(-g); if(d.allFinite()) return g.dot(d) < 0; }
+  }
+  d = -g;
+  return g.dot(d) < 0;
+}
+
+class Independent_parts
+{
+public:
+  std::vector<int> of_w, of_face, of_var;   // Region_problem::components()
+  int n = 0;
+  std::vector<std::size_t> faces;           // per part: its number of faces
+
+  // the parts of p, each with the pattern of its block of p.H analysed once
+  explicit Independent_parts(const Region_problem& p)
+  {
+    n = p.components(of_w, of_face, of_var);
+    faces.assign(std::size_t(n), 0);
+    for(int c : of_face) if(c >= 0) ++faces[std::size_t(c)];
+    std::vector<int> local(of_w.size());
+    for(int c = 0; c < n; ++c) blocks_.emplace_back(new Block);
+    for(std::size_t i = 0; i < of_w.size(); ++i) {
+      Block& b = *blocks_[std::size_t(of_w[i])];
+      local[i] = int(b.w.size());
+      b.w.push_back(int(i));
+    }
+    std::vector<std::vector<int> > outer(std::size_t(n), std::vector<int>(1, 0));
+    std::vector<std::vector<int> > inner((std::size_t(n)));
+    const Region_problem::Matrix& H = p.H;
+    for(Eigen::Index col = 0; col < H.outerSize(); ++col) {   // the columns of a part keep their order, so do its rows
+      const std::size_t c = std::size_t(of_w[std::size_t(col)]);
+      Block& b = *blocks_[c];
+      for(int k = H.outerIndexPtr()[col]; k < H.outerIndexPtr()[col + 1]; ++k) {
+        const int row = H.innerIndexPtr()[k];
+        if(row == col) b.diagonal.push_back(int(inner[c].size()));
+        inner[c].push_back(local[std::size_t(row)]);
+        b.source.push_back(k);
+      }
+      outer[c].push_back(int(inner[c].size()));
+    }
+    for(std::size_t c = 0; c < std::size_t(n); ++c) {
+      Block& b = *blocks_[c];
+      const std::vector<double> zeros(inner[c].size(), 0.);
+      const Eigen::Index m = Eigen::Index(b.w.size());
+      b.M = Eigen::Map<const Region_problem::Matrix>(m, m, Eigen::Index(zeros.size()), outer[c].data(), inner[c].data(), zeros.data());
+      b.ldlt.analyzePattern(b.M);
+    }
+  }
+
+  static bool any(const std::vector<char>& flags) { return std::find(flags.begin(), flags.end(), 1) != flags.end(); }
+
+  // the face evaluations of one pass over the parts with `which` set
+  double work(const std::vector<char>& which) const
+  {
+    double w = 0;
+    for(std::size_t c = 0; c < std::size_t(n); ++c) w += which[c] ? double(faces[c]) : 0.;
+    return w;
+  }
+
+  // the energy (Region_problem::group_values()) of the parts with `which` set, per part
+  void values(const Region_problem& p, const std::vector<double>& w, const std::vector<double>& eps, double weight,
+              const std::vector<char>& which, std::vector<double>& E, std::vector<double>& D,
+              std::vector<std::size_t>* non_positive = nullptr) const
+  {
+    E.assign(std::size_t(n), 0.);
+    D.assign(std::size_t(n), HUGE_VAL);
+    if(non_positive != nullptr) non_positive->assign(std::size_t(n), 0);
+    p.group_values(w, eps, weight, masked(of_face, which), masked(of_var, which), E, D, non_positive);
+  }
+
+  // One Newton direction d of the energy per part with `which` set (0 elsewhere), and per part its slope g.d;
+  // a part with no descent is unset in `which`. refactor = false: each part's last factorization is used where it
+  // gives a descent (a fixed positive definite matrix: the line search still decreases the energy), and the
+  // Hessian is assembled and factored only for the parts where it does not
+  void newton_directions(Region_problem& p, const std::vector<double>& w, const std::vector<double>& eps, double weight,
+                         bool refactor, std::vector<char>& which, Eigen::VectorXd& d, std::vector<double>& slope)
+  {
+    Eigen::VectorXd g(Eigen::Index(w.size()));
+    d = Eigen::VectorXd::Zero(Eigen::Index(w.size()));
+    slope.assign(std::size_t(n), 0.);
+    std::vector<int> todo;
+    const std::vector<int> face_groups = masked(of_face, which), var_groups = masked(of_var, which);
+    p.derivatives(w, eps, weight, face_groups, var_groups, g, refactor);
+    for(int c = 0; c < n; ++c) {
+      if(!which[std::size_t(c)]) continue;
+      Block& b = *blocks_[std::size_t(c)];
+      if(!refactor && b.factored) {
+        const Eigen::VectorXd dc = b.ldlt.solve(-gather(b, g));
+        if(dc.allFinite() && gather(b, g).dot(dc) < 0) { scatter(b, dc, d); continue; }
+      }
+      todo.push_back(c);
+    }
+    if(!refactor && !todo.empty()) p.derivatives(w, eps, weight, face_groups, var_groups, g, true);   // the Hessian after all
+    for(int c : todo) {
+      Block& b = *blocks_[std::size_t(c)];
+      for(std::size_t k = 0; k < b.source.size(); ++k) b.M.valuePtr()[k] = p.H.valuePtr()[b.source[k]];
+      Eigen::VectorXd dc;
+      b.factored = shifted_newton_solve(b.ldlt, b.M, b.diagonal, gather(b, g), dc) && b.ldlt.info() == Eigen::Success;
+      scatter(b, dc, d);
+    }
+    for(std::size_t i = 0; i < of_w.size(); ++i) slope[std::size_t(of_w[i])] += g[Eigen::Index(i)] * d[Eigen::Index(i)];
+    for(int c = 0; c < n; ++c) if(!(slope[std::size_t(c)] < 0)) which[std::size_t(c)] = 0;
+  }
+
+  // Armijo backtracking of every part c with `which` set from its step t[c] along d; a part moves if its energy
+  // E[c] decreases enough (E[c] and D[c], its smallest det J, are then those at the new w), and is unset in
+  // `which` when it cannot or when the decrease is at most `tolerance` (relative). Returns the face evaluations.
+  double line_search(const Region_problem& p, std::vector<double>& w, const Eigen::VectorXd& d, const std::vector<double>& slope,
+                     std::vector<double> t, const std::vector<double>& eps, double weight, double tolerance,
+                     std::vector<char>& which, std::vector<double>& E, std::vector<double>& D)
+  {
+    std::vector<char> pending = which, accepted;
+    std::vector<double> trial(w.size()), E_new, D_new;
+    double evaluations = 0;
+    for(int ls = 0; ls < 40 && any(pending); ++ls) {
+      for(std::size_t i = 0; i < w.size(); ++i) {
+        const std::size_t c = std::size_t(of_w[i]);
+        trial[i] = pending[c] ? w[i] + t[c] * d[Eigen::Index(i)] : w[i];
+      }
+      evaluations += work(pending);
+      values(p, trial, eps, weight, pending, E_new, D_new);
+      accepted.assign(std::size_t(n), 0);
+      for(std::size_t c = 0; c < std::size_t(n); ++c) {
+        if(!pending[c]) continue;
+        if(E_new[c] <= E[c] + 1e-4 * t[c] * slope[c]) {
+          pending[c] = 0;
+          accepted[c] = 1;
+          if(E[c] - E_new[c] <= tolerance * std::fabs(E_new[c])) which[c] = 0;
+          E[c] = E_new[c];
+          D[c] = D_new[c];
+        } else {
+          t[c] *= 0.5;
+        }
+      }
+      for(std::size_t i = 0; i < w.size(); ++i) if(accepted[std::size_t(of_w[i])]) w[i] = trial[i];
+    }
+    for(std::size_t c = 0; c < std::size_t(n); ++c) if(pending[c]) which[c] = 0;   // no decrease found
+    return evaluations;
+  }
+
+  // the groups of the parts with `keep` set (-1 elsewhere), for Region_problem's group functions
+  std::vector<int> masked(const std::vector<int>& group, const std::vector<char>& keep) const
+  {
+    std::vector<int> m(group.size());
+    for(std::size_t i = 0; i < group.size(); ++i) m[i] = group[i] >= 0 && keep[std::size_t(group[i])] ? group[i] : -1;
+    return m;
+  }
+
+private:
+  struct Block
+  {
+    std::vector<int> w;                 // the part's w, increasing
+    std::vector<int> source;            // per value of M: its index in the values of Region_problem::H
+    std::vector<int> diagonal;          // per w: index of (w, w) in M's values
+    Region_problem::Matrix M;           // the part's block of H
+    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
+    bool factored = false;
+  };
+
+  static Eigen::VectorXd gather(const Block& b, const Eigen::VectorXd& v)
+  {
+    Eigen::VectorXd out(Eigen::Index(b.w.size()));
+    for(std::size_t i = 0; i < b.w.size(); ++i) out[Eigen::Index(i)] = v[b.w[i]];
+    return out;
+  }
+  static void scatter(const Block& b, const Eigen::VectorXd& v, Eigen::VectorXd& out)
+  {
+    for(std::size_t i = 0; i < b.w.size(); ++i) out[b.w[i]] = v[Eigen::Index(i)];
+  }
+
+  std::vector<std::unique_ptr<Block> > blocks_;
+};
+
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_UNTANGLING_INDEPENDENT_PARTS_H
