@@ -14,7 +14,8 @@
 // variables w of the constraint space (region_space.h): x = x0 + N w. For every face with a corner in a
 // region (and not excluded), J = J0 + B N_f w_f is affine in the few w it depends on; the problem holds
 // J0 and B N_f per face, and the pattern of the lower triangle of N^T H N once, so that a Newton step
-// only writes numbers into a fixed sparse matrix (one symbolic factorization per problem).
+// only writes numbers into a fixed sparse matrix (one symbolic factorization per independent part of it,
+// independent_parts.h).
 //
 //   distortion(w, eps) = sum_f area(ref_f) f_eps(J_f)                          (untangling_energy.h)
 //   proximity(w)       = sum_l (x_l(w) - target_l)^2 / h^2,  l over the regions' variables
@@ -71,7 +72,6 @@ public:
   std::vector<int> proximity_slot;   // per (l, a, b) with w_index[b] <= w_index[a], in the loop order of derivatives():
                                      // the index of (w_index[a], w_index[b]) in the values of H
   Matrix H;                          // lower triangle of N^T H N (+ the proximity's N^T N), pattern only
-  std::vector<int> diagonal;         // per w: index of (w, w) in H's values
   std::vector<double> offset;        // per variable l: x0_l - target_l (proximity); empty without a target
   double h2 = 1;                     // h^2
 
@@ -188,8 +188,6 @@ public:
       for(std::size_t a = space.ptr[l]; a < space.ptr[l + 1]; ++a)
         for(std::size_t b = space.ptr[l]; b < space.ptr[l + 1]; ++b)
           if(space.w_index[b] <= space.w_index[a]) proximity_slot.push_back(slot(space.w_index[a], space.w_index[b]));
-    diagonal.resize(space.dimension);
-    for(std::size_t i = 0; i < space.dimension; ++i) diagonal[i] = slot(int(i), int(i));
     return SUCCESS;
   }
 
