@@ -953,7 +953,16 @@ static void test_untangling_energy()
             << " Jacobians agree with central differences (largest relative differences " << worst_grad << ", " << worst_hess << ")\n";
 }
 
-// The flip-free step bound of the polish (Region_problem::positive_step()): along d, det J of every face that starts
+// the polish's flip-free step bound over all faces of p (Region_problem::group_positive_steps() with one group)
+static double positive_step(const CGAL::Seamless_snapping::internal::Region_problem& p, const std::vector<double>& w,
+                            const Eigen::VectorXd& d, double floor)
+{
+  std::vector<double> t(1, HUGE_VAL);
+  p.group_positive_steps(w, d, floor, std::vector<int>(p.faces.size(), 0), t);
+  return t[0];
+}
+
+// The flip-free step bound of the polish (Region_problem::group_positive_steps()): along d, det J of every face that starts
 // above the floor reaches the floor (not 0) at the returned step and stays above it before; a face already at or
 // below the floor gives no bound. Two faces, J affine in two reduced variables w.
 static void test_untangling_step_bound()
@@ -973,7 +982,7 @@ static void test_untangling_step_bound()
   Eigen::VectorXd d(2);
   d << 1., 1.;                                // det of face 0: (1 - t)^2, of face 1: 1 - t^2
   for(double floor : {0., 1e-6, 0.25, 0.81}) {
-    const double t = p.positive_step(w, d, floor);
+    const double t = positive_step(p, w, d, floor);
     const double expected = 1 - std::sqrt(floor);   // face 0 reaches the floor first
     assert(std::fabs(t - expected) <= 1e-12);
     for(const SI::Region_problem::Face& e : p.faces) {
@@ -982,9 +991,9 @@ static void test_untangling_step_bound()
       assert(SI::untangling_determinant(p.jacobian(e, before)) > floor);
     }
   }
-  assert(p.positive_step(w, d, 1.) == HUGE_VAL);   // both faces start at det 1: no face above the floor
+  assert(positive_step(p, w, d, 1.) == HUGE_VAL);   // both faces start at det 1: no face above the floor
   d << -1., -1.;                              // face 0 grows, face 1 shrinks: 1 - t^2 reaches 0.19 at t = 0.9
-  assert(std::fabs(p.positive_step(w, d, 0.19) - 0.9) <= 1e-12);
+  assert(std::fabs(positive_step(p, w, d, 0.19) - 0.9) <= 1e-12);
   std::cout << "untangling: the polish's step bound keeps det J above its floor (0, 1e-6, 0.25, 0.81)\n";
 }
 
@@ -1016,7 +1025,7 @@ static void test_untangling_parts()
   p.group_positive_steps(w, d, floor, of_face, t);
   // face 0: (0.8 - t)^2 = 0.36 first at t = 0.2; face 1: 1 - t^2 = 0.36 at t = 0.8
   assert(std::fabs(t[0] - 0.2) <= 1e-12 && std::fabs(t[1] - 0.8) <= 1e-12);
-  assert(p.positive_step(w, d, floor) == (std::min)(t[0], t[1]));
+  assert(positive_step(p, w, d, floor) == (std::min)(t[0], t[1]));
   std::vector<double> E(2, 0.), D(2, HUGE_VAL), E1(1, 0.), D1(1, HUGE_VAL);
   std::vector<std::size_t> bad(2, 0);
   const std::vector<double> eps(1, 1e-3);

@@ -135,8 +135,8 @@ public:
       if(!which[std::size_t(c)]) continue;
       Block& b = *blocks_[std::size_t(c)];
       if(!refactor && b.factored) {
-        const Eigen::VectorXd dc = b.ldlt.solve(-gather(b, g));
-        if(dc.allFinite() && gather(b, g).dot(dc) < 0) { scatter(b, dc, d); continue; }
+        const Eigen::VectorXd gc = gather(b, g), dc = b.ldlt.solve(-gc);
+        if(dc.allFinite() && gc.dot(dc) < 0) { scatter(b, dc, d); continue; }
       }
       todo.push_back(c);
     }

@@ -324,16 +324,8 @@ public:
     }
   }
 
-  // the largest t such that every face with det J > floor at w keeps det J > floor on [w, w + t d] (det J is
-  // quadratic in t)
-  double positive_step(const std::vector<double>& w, const Eigen::VectorXd& d, double floor) const
-  {
-    std::vector<double> t(1, HUGE_VAL);
-    group_positive_steps(w, d, floor, std::vector<int>(faces.size(), 0), t);
-    return t[0];
-  }
-
-  // the same per group of faces (t[g] min=; group_of_face as in group_values())
+  // per group g of faces (group_of_face as in group_values()), t[g] min= the largest t such that every face of g with
+  // det J > floor at w keeps det J > floor on [w, w + t d] (det J is quadratic in t)
   void group_positive_steps(const std::vector<double>& w, const Eigen::VectorXd& d, double floor,
                             const std::vector<int>& group_of_face, std::vector<double>& t) const
   {

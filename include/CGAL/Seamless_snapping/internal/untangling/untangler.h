@@ -347,11 +347,16 @@ private:
         t.assign(n, 1.);
         stats.work += parts.line_search(p, w, d, slope, t, eps, 0, 1e-9, stepping, E, D);
       }
-      std::vector<double> E_at_w;
-      parts.values(p, w, eps, 0, active, E_at_w, D, &bad);  // D and the faces not positive at w
+      // D is at w (the line search's for the parts that moved, else that of E_prev's pass); the faces not positive at
+      // w are counted only in the parts with D <= 0 (none elsewhere)
+      std::vector<char> folded(n, 0);
+      for(std::size_t c = 0; c < n; ++c) folded[c] = active[c] && D[c] <= 0;
+      std::vector<double> E_unused, D_unused;
+      if(parts.any(folded)) parts.values(p, w, eps, 0, folded, E_unused, D_unused, &bad);
+      else bad.assign(n, 0);
       std::size_t total_bad = 0;                             // of all parts (those stopped: when they stopped)
       for(std::size_t c = 0; c < n; ++c) {
-        if(active[c]) last_bad[c] = bad[c];
+        if(active[c]) last_bad[c] = folded[c] ? bad[c] : 0;
         total_bad += last_bad[c];
       }
       if(total_bad < fewest_total) { fewest_total = total_bad; last_total = outer; }
