@@ -84,13 +84,29 @@ struct Cell_pieces
   }
 };
 
+// The UV bounding box of the triangle t: [u0, u1] x [v0, v1].
+inline void uv_box(const Uv_point t[3], double& u0, double& u1, double& v0, double& v1)
+{
+  u0 = (std::min)({t[0].x(), t[1].x(), t[2].x()}); u1 = (std::max)({t[0].x(), t[1].x(), t[2].x()});
+  v0 = (std::min)({t[0].y(), t[1].y(), t[2].y()}); v1 = (std::max)({t[0].y(), t[1].y(), t[2].y()});
+}
+
 // The cells of the bounding box of the triangle t that overlap it strictly: i in [i0, i1], j in [j0, j1].
 inline void candidate_cells(const Uv_point t[3], std::int64_t& i0, std::int64_t& i1, std::int64_t& j0, std::int64_t& j1)
 {
-  const double u0 = (std::min)({t[0].x(), t[1].x(), t[2].x()}), u1 = (std::max)({t[0].x(), t[1].x(), t[2].x()});
-  const double v0 = (std::min)({t[0].y(), t[1].y(), t[2].y()}), v1 = (std::max)({t[0].y(), t[1].y(), t[2].y()});
+  double u0, u1, v0, v1;
+  uv_box(t, u0, u1, v0, v1);
   i0 = std::int64_t(std::floor(u0)); i1 = std::int64_t(std::ceil(u1)) - 1;
   j0 = std::int64_t(std::floor(v0)); j1 = std::int64_t(std::ceil(v1)) - 1;
+}
+
+// The grid points of the bounding box of the triangle t (closed): i in [i0, i1], j in [j0, j1] (empty: i1 < i0 or j1 < j0).
+inline void box_grid_points(const Uv_point t[3], std::int64_t& i0, std::int64_t& i1, std::int64_t& j0, std::int64_t& j1)
+{
+  double u0, u1, v0, v1;
+  uv_box(t, u0, u1, v0, v1);
+  i0 = std::int64_t(std::ceil(u0)); i1 = std::int64_t(std::floor(u1));
+  j0 = std::int64_t(std::ceil(v0)); j1 = std::int64_t(std::floor(v1));
 }
 
 // The u and v ranges of the open segment pq overlap those of the open cell strictly (the segment runs through the
@@ -197,14 +213,11 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
     const int h0 = face_halfedge[std::size_t(f)];
     const Uv_point t[3] = {corner_point(cm, h0), corner_point(cm, cm.next[h0]), corner_point(cm, cm.prev[h0])};
     std::int64_t i0, i1, j0, j1;
-    candidate_cells(t, i0, i1, j0, j1);
     if(collapsed[std::size_t(f)]) {               // the grid points of the box, which add_collapsed_aliases() visits
-      const std::int64_t ni = std::int64_t(std::floor((std::max)({t[0].x(), t[1].x(), t[2].x()}))) -
-                              std::int64_t(std::ceil((std::min)({t[0].x(), t[1].x(), t[2].x()}))) + 1;
-      const std::int64_t nj = std::int64_t(std::floor((std::max)({t[0].y(), t[1].y(), t[2].y()}))) -
-                              std::int64_t(std::ceil((std::min)({t[0].y(), t[1].y(), t[2].y()}))) + 1;
-      candidates += std::size_t((std::max)(ni, std::int64_t(0))) * std::size_t((std::max)(nj, std::int64_t(0)));
+      box_grid_points(t, i0, i1, j0, j1);
+      candidates += std::size_t((std::max)(i1 - i0 + 1, std::int64_t(0))) * std::size_t((std::max)(j1 - j0 + 1, std::int64_t(0)));
     } else {
+      candidate_cells(t, i0, i1, j0, j1);
       candidates += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
     }
     if(candidates > max_candidates) {

@@ -33,7 +33,6 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <map>
 #include <tuple>
@@ -81,12 +80,12 @@ inline void add_collapsed_aliases(const Corner_mesh& cm, const std::vector<int>&
     const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
     const Uv_point t[3] = {corner_point(cm, c[0]), corner_point(cm, c[1]), corner_point(cm, c[2])};
     // the integer points of the closed long side: of its bounding box, those on its line
-    const double u0 = (std::min)({t[0].x(), t[1].x(), t[2].x()}), u1 = (std::max)({t[0].x(), t[1].x(), t[2].x()});
-    const double v0 = (std::min)({t[0].y(), t[1].y(), t[2].y()}), v1 = (std::max)({t[0].y(), t[1].y(), t[2].y()});
+    std::int64_t i0, i1, j0, j1;
+    box_grid_points(t, i0, i1, j0, j1);
     const Uv_point& a = (std::min)({t[0], t[1], t[2]});   // lexicographic: the ends of the long side
     const Uv_point& b = (std::max)({t[0], t[1], t[2]});
-    for(std::int64_t j = std::int64_t(std::ceil(v0)); double(j) <= v1; ++j)
-      for(std::int64_t i = std::int64_t(std::ceil(u0)); double(i) <= u1; ++i) {
+    for(std::int64_t j = j0; j <= j1; ++j)
+      for(std::int64_t i = i0; i <= i1; ++i) {
         const Uv_point q{double(i), double(j)};
         if(CGAL::orientation(a, b, q) != CGAL::COLLINEAR) continue;
         int first = -1;
