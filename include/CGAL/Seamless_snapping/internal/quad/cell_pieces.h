@@ -128,8 +128,7 @@ public:
   {
     const double l = dx_ * (qy - a_.y()), r = dy_ * (qx - a_.x()), det = l - r;
     const double bound = 3.3306690738754716e-16 * (std::fabs(l) + std::fabs(r));   // (3 + 16 eps) eps, eps = 2^-53
-    if(det > bound && bound > 0x1p-900) return 1;
-    if(-det > bound && bound > 0x1p-900) return -1;
+    if(std::fabs(det) > bound && bound > 0x1p-900) return static_cast<signed char>((det > 0) - (det < 0));   // no branch on the sign
     return static_cast<signed char>(CGAL::orientation(a_, b_, Uv_point(qx, qy)));
   }
 private:
@@ -172,7 +171,7 @@ inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, const std::vec
     for(std::size_t b = 0; b < nj; ++b)
       for(std::size_t a = 0; a < ni; ++a) {
         const signed char o = side(double(i0 + std::int64_t(a)), double(j0 + std::int64_t(b)));
-        mask[b * ni + a] |= static_cast<unsigned char>(o > 0 ? 1u << s : o < 0 ? 8u << s : 0u);
+        mask[b * ni + a] |= static_cast<unsigned char>((unsigned(o > 0) << s) | (unsigned(o < 0) << (s + 3)));
       }
   }
   for(std::size_t b = 0; b + 1 < nj; ++b)

@@ -70,7 +70,8 @@ inline Integer_point locate_integer_point(const Corner_mesh& cm, int h0, const G
 
 // Numbers the names: a mesh vertex by an array over the vertices, a point in a face by an array over the grid
 // points of that face's bounding box (its lookups come together: the pieces are ordered by face, see
-// stitch_cells()), a point on an edge by a hash table.
+// stitch_cells()), a point on an edge by a hash table. The same array remembers, for the face begun last, the
+// number of each of its points (id_in_face()).
 class Integer_point_index
 {
 public:
@@ -83,6 +84,16 @@ public:
   {
     face_ = f; u0_ = u0; v0_ = v0; width_ = std::size_t(u1 - u0 + 1);
     face_id_.assign(width_ * std::size_t(v1 - v0 + 1), -1);
+  }
+
+  // the number of the integer point p of the face begun last (within its box), named by locate() the first time p is
+  // asked for in that face: a point is named once per face, not once per cell around it
+  template <class Locate>
+  int id_in_face(const Grid_point& p, Locate locate)
+  {
+    const std::size_t i = std::size_t(p.v - v0_) * width_ + std::size_t(p.u - u0_);
+    if(face_id_[i] < 0) { const int k = id(locate()); face_id_[i] = k; }
+    return face_id_[i];
   }
 
   // `name` (at a vertex or on an edge) is the point `same` (at a vertex or on an edge, not itself an alias)

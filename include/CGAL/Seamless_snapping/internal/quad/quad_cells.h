@@ -199,7 +199,7 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
         int i = 0;
         while(i < 3 && !(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1])) ++i;
         CGAL_assertion(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1]);
-        const int id = index.id(locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition));
+        const int id = index.id_in_face(p, [&] { return locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition); });
         int& slot = corner[4 * cell + std::size_t(i)];
         if(slot >= 0 && slot != id) {
           message = "the " + cell_name(c, f) + " has two surface points at one corner (" + std::to_string(p.u) + ", " +
