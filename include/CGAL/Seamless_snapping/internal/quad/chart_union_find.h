@@ -38,6 +38,9 @@ public:
   // the representative of x, and in `to_root` the transition from the chart of x to the representative's
   int find(int x, Grid_transform& to_root)
   {
+    const int p = parent_[std::size_t(x)];
+    if(p == x) { to_root = Grid_transform(); return x; }                       // a root
+    if(parent_[std::size_t(p)] == p) { to_root = to_parent_[std::size_t(x)]; return p; }   // a child of the root
     int r = x;
     while(parent_[std::size_t(r)] != r) r = parent_[std::size_t(r)];
     path_.clear();
