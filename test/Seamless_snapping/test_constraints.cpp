@@ -1097,7 +1097,8 @@ static void test_untangling_analytic()
 // the shared maps with fold-overs, both modes: no negative triangle is left, every zero-area one is proven forced,
 // in integer-grid mode every vertex left not locally injective lies next to a cone pair collapsed onto one integer
 // point. duck_qc_8 in integer-grid mode keeps 2 negative triangles and 14 wound vertices, 12 next to such pairs; its
-// report names the pairs and merge_cone_pairs(true), with which it is fold-free.
+// report names the pairs (at the wound vertices and at the two triangles) and merge_cone_pairs(true), with which it
+// is fold-free.
 static void test_untangling_data()
 {
   struct Case { const char* file; bool igm; double grid_scale; bool merge; };
@@ -1135,8 +1136,12 @@ static void test_untangling_data()
         const std::string named = "the cones at vertices " + std::to_string(p.first) + " and " + std::to_string(p.second);
         bool found = false;
         for(const SS::Winding_defect& w : r.winding_defects) found = found || w.message.find(named) != std::string::npos;
+        for(const SS::Fold_explanation& f : r.folds) found = found || f.message.find(named) != std::string::npos;
         assert(found);
       }
+      // each negative triangle left is not proven forced and names the collapsed pair next to it (its likely cause)
+      for(const SS::Fold_explanation& f : r.folds)
+        assert(!f.forced() && f.negative && f.message.find("a cone pair the integer translations collapse") != std::string::npos);
       const std::string json = r.to_json();
       assert(json.find("\"collapsed_cone_pairs\": [[" + std::to_string(r.collapsed_cone_pairs.front().first) + ", ") != std::string::npos);
       continue;

@@ -742,6 +742,14 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
+  auto name_collapsed_pairs = [&](int v, std::string& message) {   // those within coincident_cone_rings of v
+    if(!opt.integer_grid_map) return;
+    for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings)) {
+      message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
+                 " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
+      collapsed.insert(std::minmax(c.first, c.second));
+    }
+  };
   for(int v = 0; v < S.cm.n_vertices; ++v) {
     if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
     Winding_defect d;
@@ -750,29 +758,26 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     d.valence = valence[std::size_t(v)];
     d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
                 " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
-    if(opt.integer_grid_map)
-      for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings)) {
-        d.message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
-                     " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
-        collapsed.insert(std::minmax(c.first, c.second));
-      }
+    name_collapsed_pairs(v, d.message);
     report.winding_defects.push_back(d);
+  }
+  if(!faces.empty()) {
+    const Variable_rows incidence(S.full, S.x.size());
+    Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
+    report.folds = prover.explain(faces, S.x);
+    for(Fold_explanation& e : report.folds) {
+      if(e.forced()) { ++report.folds_forced; continue; }
+      if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
+      else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
+      else if(report.untangle_budget_spent)
+        e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
+      name_collapsed_pairs(S.cm.target[fc.halfedge[e.face][0]], e.message);
+    }
   }
   // cone merging (cone_merging.h) makes the pairs whose cone indices cancel regular points of the field
   for(const std::pair<int, int>& c : collapsed) {
     report.collapsed_cone_pairs.emplace_back(std::size_t(c.first), std::size_t(c.second));
     report.cancelling_collapsed_cone_pairs += (K[std::size_t(c.first)] + K[std::size_t(c.second)]) % 4 == 0 ? 1 : 0;
-  }
-  if(faces.empty()) return;
-  const Variable_rows incidence(S.full, S.x.size());
-  Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
-  report.folds = prover.explain(faces, S.x);
-  for(Fold_explanation& e : report.folds) {
-    if(e.forced()) { ++report.folds_forced; continue; }
-    if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
-    else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
-    else if(report.untangle_budget_spent)
-      e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
   }
 }
 
@@ -896,7 +901,7 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   const std::size_t cancelling = report.cancelling_collapsed_cone_pairs;
   if(!report.collapsed_cone_pairs.empty())
     summary += "; " + std::to_string(report.collapsed_cone_pairs.size()) + " cone pair(s) rounded onto one integer point " +
-               "lie next to them (Snap_report::collapsed_cone_pairs), " + std::to_string(cancelling) + " with cancelling indices" +
+               "lie next to these defects (Snap_report::collapsed_cone_pairs), " + std::to_string(cancelling) + " with cancelling indices" +
                (opt.merge_cone_pairs || cancelling == 0 ? std::string()
                                                         : std::string(" (merge_cone_pairs(true), --merge-cone-pairs, makes those regular points)"));
   return summary + S.flip_note + S.untangle_note;
