@@ -3,7 +3,8 @@
 //   seamless_snap IN.obj OUT.obj [--weld | --no-weld] [--keep-layout] [--no-align-boundary] [--unreduced]
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
 //                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
-//                 [--untangle | --no-untangle] [--max-untangle-change C] [--merge-cone-pairs] [--quiet]
+//                 [--untangle | --no-untangle] [--max-untangle-change C] [--merge-cone-pairs]
+//                 [--separate-cone-pairs] [--quiet]
 //   seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
@@ -56,7 +57,8 @@ static const char* usage_text =
   "                     [--unreduced] [--fail-on-new-flips] [--integer-grid] [--grid-scale S]\n"
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
   "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
-  "                     [--max-untangle-change C] [--merge-cone-pairs] [--quiet]\n"
+  "                     [--max-untangle-change C] [--merge-cone-pairs] [--separate-cone-pairs]\n"
+  "                     [--quiet]\n"
   "       seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]\n";
 
 static const char* help_text =
@@ -130,6 +132,11 @@ static const char* help_text =
   "                       of the field: the rotations and translations of the cut edges between them change\n"
   "                       (where that cut runs within one grid cell of the point), as libQEx merges them.\n"
   "                       The report lists the pairs ('merged_cone_pairs'); seamless_quad does it by default\n"
+  "  --separate-cone-pairs  with --integer-grid: two cones that the rounded translations put onto one integer\n"
+  "                       point and that a cut within two grid cells of it joins are moved apart instead (after\n"
+  "                       --merge-cone-pairs, if given), each onto a neighbouring integer point nearest its input\n"
+  "                       position: the integer translations along that cut change, the field is kept. The report\n"
+  "                       lists the pairs ('separated_cone_pairs')\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --outdir DIR         several inputs: each IN.obj is snapped (with the same options) into DIR/IN.obj, its\n"
   "                       JSON report into DIR/IN.json (names by file stem: inputs must not share one), then a\n"
@@ -289,7 +296,7 @@ struct Options
 {
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
   bool align_boundary = true, reduced = true, quiet = false;
-  bool integer_grid = false, merge_cone_pairs = false;
+  bool integer_grid = false, merge_cone_pairs = false, separate_cone_pairs = false;
   int untangle = -1;                 // -1: the default (with --integer-grid)
   double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
@@ -378,7 +385,7 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)
                      .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change)
-                     .merge_cone_pairs(o.merge_cone_pairs);
+                     .merge_cone_pairs(o.merge_cone_pairs).separate_cone_pairs(o.separate_cone_pairs);
   t = Clock::now();
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
@@ -529,6 +536,7 @@ int main(int argc, char** argv)
     else if(a == "--untangle") untangle = untangle == 0 ? 2 : 1;
     else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
     else if(a == "--merge-cone-pairs") o.merge_cone_pairs = true;
+    else if(a == "--separate-cone-pairs") o.separate_cone_pairs = true;
     else if(a == "--max-untangle-change") {
       char* end = nullptr;
       if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
@@ -606,6 +614,10 @@ int main(int argc, char** argv)
   if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
   if(o.merge_cone_pairs && !integer_grid) {
     std::cerr << "seamless_snap: --merge-cone-pairs needs --integer-grid (cones are merged on integer points)\n" << usage_text;
+    return 2;
+  }
+  if(o.separate_cone_pairs && !integer_grid) {
+    std::cerr << "seamless_snap: --separate-cone-pairs needs --integer-grid (cones are moved between integer points)\n" << usage_text;
     return 2;
   }
 

@@ -95,7 +95,7 @@ def write_obj(path, V, F, UV, FUV):
 def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
          rotation_tolerance=1.0, alignment_tolerance=1e-3, minimal_change=True, integer_grid_map=False,
          grid_scale=1.0, untangle=None, max_untangle_change=float("inf"), merge_cone_pairs=False,
-         raise_on_failure=True):
+         separate_cone_pairs=False, raise_on_failure=True):
     """Snap the per-corner UV map (UV, FUV) of the triangle mesh (V, F) to an exactly seamless one.
 
     Returns (UV_out, FUV_out, report): FUV_out equals FUV and UV_out equals UV except for the moved rows
@@ -112,14 +112,17 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point regular points of
     the field (report["merged_cone_pairs"]), as libQEx merges them; without it such maps keep winding defects,
     and report["collapsed_cone_pairs"] lists the pairs found next to them ("cancelling_collapsed_cone_pairs" of
-    them are such 90/-90 degree pairs).
+    them are such 90/-90 degree pairs). `separate_cone_pairs=True` (with `integer_grid_map`) moves two cones that
+    the rounded translations put onto one integer point apart instead, where a cut within two grid cells of it joins
+    them: the integer translations along that cut change so that each cone lands on a neighbouring integer point
+    (report["separated_cone_pairs"]); the field is kept.
     """
     if untangle is None:
         untangle = integer_grid_map
     uv, fuv, text = _core.snap(*_mesh_arrays(V, F, UV, FUV), weld, repair_flips, align_boundary,
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
                                bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
-                               float(max_untangle_change), bool(merge_cone_pairs))
+                               float(max_untangle_change), bool(merge_cone_pairs), bool(separate_cone_pairs))
     report = json.loads(text)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

@@ -634,6 +634,20 @@ def test_extract_quad_mesh_shared_data(name, weld):
     assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]
 
 
+def test_separate_cone_pairs():
+    # libQEx's duck_qc_8 map: two cone pairs that its rounded translations put onto one integer point are joined by a
+    # cut near that point; separate_cone_pairs=True moves them apart (the field kept) and no negative triangle is left
+    path = os.path.join(SHARED, "libqex/duck_qc_8_param.obj")
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = ss.read_obj(path)
+    UV2, FUV2, r = ss.snap(V, F, UV, FUV, integer_grid_map=True, separate_cone_pairs=True)
+    assert len(r["separated_cone_pairs"]) > 0 and r["separated_cut_edges"] >= len(r["separated_cone_pairs"])
+    assert r["flips_after_repair"] == 0 and r["merged_cone_pairs"] == []
+    assert all(pair not in r["collapsed_cone_pairs"] for pair in r["separated_cone_pairs"])
+    assert ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
+
+
 def test_extract_quad_mesh_merged_cone_pairs():
     # libQEx's fandisk map puts a 90 and a -90 degree cone onto one integer point: without merging, its untangled
     # IGM winds wrongly there and is refused; merge_cone_pairs=True makes the pair regular and the quads follow

@@ -1101,12 +1101,14 @@ static void test_untangling_analytic()
 // is fold-free.
 static void test_untangling_data()
 {
-  struct Case { const char* file; bool igm; double grid_scale; bool merge; };
-  const Case cases[] = {{"directional/decimated-knight-param.obj", true, 1, false}, {"libqex/fandisk_param.obj", true, 1, false},
-                        {"libqex/duck_miq_8_param.obj", true, 8, false}, {"directional/decimated-knight-param.obj", false, 1, false},
-                        {"libqex/fandisk_param.obj", false, 1, false}, {"libqex/duck_miq_8_param.obj", false, 1, false},
-                        {"libqex/duck_qc_8_param.obj", false, 1, false}, {"libqex/duck_qc_8_param.obj", true, 1, false},
-                        {"libqex/duck_qc_8_param.obj", true, 1, true}};
+  struct Case { const char* file; bool igm; double grid_scale; bool merge; bool separate; };
+  const Case cases[] = {{"directional/decimated-knight-param.obj", true, 1, false, false}, {"libqex/fandisk_param.obj", true, 1, false, false},
+                        {"libqex/duck_miq_8_param.obj", true, 8, false, false}, {"directional/decimated-knight-param.obj", false, 1, false, false},
+                        {"libqex/fandisk_param.obj", false, 1, false, false}, {"libqex/duck_miq_8_param.obj", false, 1, false, false},
+                        {"libqex/duck_qc_8_param.obj", false, 1, false, false}, {"libqex/duck_qc_8_param.obj", true, 1, false, false},
+                        {"libqex/duck_qc_8_param.obj", true, 1, true, false}, {"libqex/duck_qc_8_param.obj", true, 1, false, true}};
+  std::vector<std::pair<std::size_t, std::size_t> > duck_qc_collapsed;   // without separating
+  std::size_t duck_qc_field_cones = 0;
   for(const Case& c : cases) {
     Mesh m;
     const fs::path path = fs::path(SS_SHARED_DATA_DIR) / c.file;
@@ -1115,11 +1117,13 @@ static void test_untangling_data()
     UV_map uv = uv_of(m);
     const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(c.igm)
                                                                     .grid_scale(c.grid_scale).untangle(true)
-                                                                    .merge_cone_pairs(c.merge));
+                                                                    .merge_cone_pairs(c.merge)
+                                                                    .separate_cone_pairs(c.separate));
     check_untangled(m, uv, r, c.igm, c.file);
+    assert(c.separate || r.separated_cone_pairs.empty());
     assert(r.flips_before > 0 && r.untangled);
     assert(r.degenerate_after_repair == r.folds_forced);
-    if(std::strcmp(c.file, "libqex/duck_qc_8_param.obj") == 0 && c.igm && !c.merge) {
+    if(std::strcmp(c.file, "libqex/duck_qc_8_param.obj") == 0 && c.igm && !c.merge && !c.separate) {
       // what is left is reported with the pairs next to it (most windings), and what merges them
       std::size_t near_pairs = 0;
       for(const SS::Winding_defect& w : r.winding_defects) near_pairs += w.message.find("cone pair") != std::string::npos ? 1 : 0;
@@ -1144,6 +1148,24 @@ static void test_untangling_data()
         assert(!f.forced() && f.negative && f.message.find("a cone pair the integer translations collapse") != std::string::npos);
       const std::string json = r.to_json();
       assert(json.find("\"collapsed_cone_pairs\": [[" + std::to_string(r.collapsed_cone_pairs.front().first) + ", ") != std::string::npos);
+      duck_qc_collapsed = r.collapsed_cone_pairs;
+      duck_qc_field_cones = r.field_cones;
+      continue;
+    }
+    if(c.separate) {
+      // the pairs that a cut near their point joins are moved apart, the field kept: every cone still on an integer
+      // point (check_untangled: an exact IGM), no negative triangle left, and the separated pairs are no longer
+      // collapsed (each was before, next to a defect)
+      assert(!r.separated_cone_pairs.empty() && r.separated_cut_edges >= r.separated_cone_pairs.size());
+      assert(r.field_cones == duck_qc_field_cones && r.cones_on_integer_points_after == r.field_cones);
+      assert(r.flips_after_repair == 0 && r.degenerate_after_repair == 0);
+      assert(r.collapsed_cone_pairs.size() < duck_qc_collapsed.size());
+      for(const std::pair<std::size_t, std::size_t>& p : r.separated_cone_pairs) {
+        assert(p.first < p.second);
+        assert(std::find(duck_qc_collapsed.begin(), duck_qc_collapsed.end(), p) != duck_qc_collapsed.end());
+        assert(std::find(r.collapsed_cone_pairs.begin(), r.collapsed_cone_pairs.end(), p) == r.collapsed_cone_pairs.end());
+        assert(r.message.find(std::to_string(p.first) + "|" + std::to_string(p.second)) != std::string::npos);
+      }
       continue;
     }
     if(c.igm) for(const SS::Winding_defect& w : r.winding_defects) assert(w.message.find("cone pair") != std::string::npos);

@@ -153,6 +153,8 @@ struct Snap_report
   std::size_t cancelling_collapsed_cone_pairs = 0; ///< of `collapsed_cone_pairs`, those whose rotations k sum to a multiple of 4 (a +90 and a -90 degree cone): `merge_cone_pairs(true)` makes such pairs regular points
   std::size_t merged_cut_edges = 0;            ///< `merge_cone_pairs`: cut edges whose rotation k (and translation) changed to merge them
   std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
+  std::vector<std::pair<std::size_t, std::size_t> > separated_cone_pairs; ///< `separate_cone_pairs`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, moved apart (each cone onto a neighbouring integer point); counted in `field_cones`
+  std::size_t separated_cut_edges = 0;         ///< `separate_cone_pairs`: cut edges whose integer translation changed to separate them
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
@@ -239,6 +241,8 @@ struct Snap_report
     vertex_pairs("merged_cone_pairs", merged_cone_pairs);
     vertex_pairs("collapsed_cone_pairs", collapsed_cone_pairs);
     num("cancelling_collapsed_cone_pairs", double(cancelling_collapsed_cone_pairs));
+    vertex_pairs("separated_cone_pairs", separated_cone_pairs);
+    num("separated_cut_edges", double(separated_cut_edges));
     num("merged_cut_edges", double(merged_cut_edges)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));
     o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";

@@ -293,6 +293,22 @@ namespace Seamless_snapping {
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::merge_cone_pairs()`; implemented in
  *                     `internal/surface/cone_merging.h`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{separate_cone_pairs}
+ *     \cgalParamDescription{with `integer_grid_map`: two cones (any indices) that the rounded translations put onto one
+ *                           integer point, joined by a path of cut edges whose vertices all lie within two grid cells of
+ *                           that point, are moved apart instead, after `merge_cone_pairs` if both are set: the side of that
+ *                           path on its left moves by an integer vector relative to the other (the integer translation of
+ *                           every cut edge of the path changes; every other vertex of it keeps the identity), chosen among
+ *                           those that put each cone on a neighbouring integer point, on no other cone's point, nearest its
+ *                           input position (beyond the paper: a local re-rounding; the field and its cones are kept). The
+ *                           pairs are listed in `Snap_report::separated_cone_pairs`; the untangling then moves the map to
+ *                           the new transitions, by up to about a grid cell near the pair. Pairs that no such cut path
+ *                           joins are kept (and reported in `Snap_report::collapsed_cone_pairs` where defects are left).}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::separate_cone_pairs()`; implemented in
+ *                     `internal/surface/cone_separation.h`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_point_map}
  *     \cgalParamDescription{the 3D positions of the vertices, for the reference shapes of the untangling (triangles flipped
  *                           or thin in the input and those around wrongly wound vertices take their 3D shape, scaled to the

@@ -35,6 +35,7 @@ enum vt_per_corner_t     { vt_per_corner };     // bool, OBJ writing: one vt per
 enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of that corner is kept bit-identical
 enum untangle_t          { untangle };          // bool: remove fold-overs inside the constraint space (default: integer_grid_map)
 enum merge_cone_pairs_t  { merge_cone_pairs };  // bool: integer-grid mode, merge +-90 degree cone pairs rounded onto one point (default false)
+enum separate_cone_pairs_t { separate_cone_pairs };  // bool: integer-grid mode, move cone pairs rounded onto one point apart (default false)
 enum max_untangle_change_t{ max_untangle_change };// double, grid cells: largest UV move the untangling may make (default: any)
 enum vertex_origin_map_t { vertex_origin_map }; // quad mesh vertex -> Quad_vertex_origin: where it lies on the map (extract_quad_mesh)
 enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector of the map's faces it covers (extract_quad_mesh)
@@ -61,6 +62,7 @@ enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector
   SS_NP(untangle_t,                untangle)                 \
   SS_NP(max_untangle_change_t,     max_untangle_change)      \
   SS_NP(merge_cone_pairs_t,        merge_cone_pairs)         \
+  SS_NP(separate_cone_pairs_t,     separate_cone_pairs)      \
   SS_NP(vertex_origin_map_t,       vertex_origin_map)        \
   SS_NP(face_origin_map_t,         face_origin_map)
 

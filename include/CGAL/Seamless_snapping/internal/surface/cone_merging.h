@@ -77,19 +77,22 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
 }
 
 // The shortest path of cut edges (of any edges: cut_edges_only = false) from field cone a to a field cone b with
-// K[a] + K[b] = 0 mod 4 that the rounded transitions carry onto a's integer point, every vertex of it within `reach`
+// K[a] + K[b] = 0 mod 4 (any b: cancelling_only = false) that the rounded transitions carry onto a's integer point, every vertex of it within `reach`
 // of that point; empty if none. Other cones on the point may lie on the path (the changes then keep their rotation
-// about that point); cones elsewhere may not. `corner_of`: first_corners(); `reached_from`: per vertex, the cone
-// whose search reached it last (-1: none; one search per cone, so no clearing between searches).
+// about that point); cones elsewhere may not. `corner_of`: first_corners(); `reached_from`: per vertex, the mark of
+// the search that reached it last (-1: none; no clearing between searches with different marks): `mark`, or a if
+// mark < 0 (one search per cone).
 inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
                                     const std::vector<char>& taken, const std::vector<int>& corner_of, int a,
-                                    double reach, bool cut_edges_only, std::vector<int>& reached_from)
+                                    double reach, bool cut_edges_only, std::vector<int>& reached_from,
+                                    bool cancelling_only = true, int mark = -1)
 {
+  if(mark < 0) mark = a;
   struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
   std::vector<State> states;
-  auto seen = [&](int v) { return reached_from[std::size_t(v)] == a; };
-  reached_from[std::size_t(a)] = a;
+  auto seen = [&](int v) { return reached_from[std::size_t(v)] == mark; };
+  reached_from[std::size_t(a)] = mark;
   // every cut halfedge leaving target(g_in) (except the one back along g_in), with a's point p carried from the
   // chart of face(g_in) to the chart of its face
   auto push_from = [&](int g_in, const long p[2], bool back_allowed, int parent) {
@@ -113,14 +116,14 @@ inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& 
     const State s = states[i];
     const int w = cm.target[s.h];
     if(seen(w) || cm.vertex_on_border[w]) continue;
-    reached_from[std::size_t(w)] = a;
+    reached_from[std::size_t(w)] = mark;
     const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
     if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > reach) continue;
     if(K[std::size_t(w)] > 0) {
       long q[2];
       if(!integer_cone_point(cm, st, rot, t, s.h, q) || q[0] != s.p[0] || q[1] != s.p[1])
         continue;                                    // a cone elsewhere: the path does not pass through it
-      if(taken[std::size_t(w)] || (K[std::size_t(a)] + K[std::size_t(w)]) % 4 != 0) {
+      if(taken[std::size_t(w)] || (cancelling_only && (K[std::size_t(a)] + K[std::size_t(w)]) % 4 != 0)) {
         push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
         continue;
       }

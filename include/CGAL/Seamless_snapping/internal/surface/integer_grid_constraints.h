@@ -294,11 +294,14 @@ inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, c
 // vertex (see the header comment) and appends the integer-grid rows to `rows`.
 // `ubar`: the input sector values in grid units; the right-hand sides are the integers times
 // 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
-// grid when corners are pinned, pinned_corners.h). On failure nothing is appended.
+// grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): cones that cone_separation.h
+// moved to a neighbouring integer point, whose input position is not compared with the point the translations force.
+// On failure nothing is appended.
 inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
                                     int rhs_shift, double tolerance, Constraint_rows& rows,
-                                    Integer_grid_rows_result& result, std::string& message)
+                                    Integer_grid_rows_result& result, std::string& message,
+                                    const std::vector<char>& moved_cones = std::vector<char>())
 {
   result = Integer_grid_rows_result();
   std::vector<long> isoline(cm.n_edges, 0);
@@ -346,7 +349,7 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       return INFEASIBLE;
     }
     const int s = st.sector_of[g0];
-    if(std::fabs(ubar[2 * s] - double(num[0] / 2)) > tolerance || std::fabs(ubar[2 * s + 1] - double(num[1] / 2)) > tolerance) {
+    if((moved_cones.empty() || !moved_cones[std::size_t(v)]) && (std::fabs(ubar[2 * s] - double(num[0] / 2)) > tolerance || std::fabs(ubar[2 * s + 1] - double(num[1] / 2)) > tolerance)) {
       message = "cone at vertex " + std::to_string(v) + " sits at " + point_name(ubar[2 * s], ubar[2 * s + 1]) +
                 " (face " + std::to_string(cm.face[g0]) + ") but its rounded transitions force it to (" +
                 std::to_string(num[0] / 2) + ", " + std::to_string(num[1] / 2) + "), farther than " + format_double(tolerance) +

@@ -39,6 +39,7 @@
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
+#include <CGAL/Seamless_snapping/internal/surface/cone_separation.h>
 #include <CGAL/Seamless_snapping/internal/surface/connection_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
@@ -94,6 +95,7 @@ struct Snap_options
   bool untangle = false;               // step 4b: remove fold-overs inside the constraint space (default: integer_grid_map)
   double max_untangle_change = HUGE_VAL;   // grid cells: an untangled map that moves a UV further is not used
   bool merge_cone_pairs = false;       // integer-grid mode: merge +-90 degree cone pairs rounded onto one point (cone_merging.h)
+  bool separate_cone_pairs = false;    // integer-grid mode: move cone pairs rounded onto one point apart (cone_separation.h)
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -322,7 +324,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.field_cones = before.field_cones;
   report.cones_on_integer_points_before = before.cones_on_integer_points;
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
-  std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging)
+  std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging, separating)
+  std::vector<char> moved;                   // per vertex: a cone that separating moved off its rounded point
   std::vector<char>& merged = S.merged_cones;
   merged.assign(S.cm.n_vertices, 0);
   if(opt.integer_grid_map) {
@@ -335,6 +338,15 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         merged[m.a] = merged[m.b] = 1;
         report.field_cones -= 2;
       }
+    if(opt.separate_cone_pairs) {
+      moved.assign(S.cm.n_vertices, 0);
+      for(const Cone_separation& c : separate_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid,
+                                                                   default_separate_cone_reach)) {
+        report.separated_cone_pairs.emplace_back(std::size_t((std::min)(c.a, c.b)), std::size_t((std::max)(c.a, c.b)));
+        report.separated_cut_edges += c.path.size();
+        moved[c.a] = moved[c.b] = 1;
+      }
+    }
   }
   build_full_system(S.cm, S.st, S.rot, S.al, S.full);
   S.first_connection_row = S.full.size();
@@ -344,7 +356,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   if(opt.integer_grid_map) {
     Integer_grid_rows_result igm;
     s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, translations, -(S.cm.uv_exponent + S.grid_exponent),
-                              opt.integer_grid_tolerance, S.full, igm, message);
+                              opt.integer_grid_tolerance, S.full, igm, message, moved);
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
       message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
@@ -870,6 +882,14 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
       for(std::size_t i = 0; i < report.merged_cone_pairs.size() && i < 10; ++i)
         summary += " " + std::to_string(report.merged_cone_pairs[i].first) + "+" + std::to_string(report.merged_cone_pairs[i].second);
       if(report.merged_cone_pairs.size() > 10) summary += " ...";
+    }
+    if(!report.separated_cone_pairs.empty()) {
+      summary += "; " + std::to_string(report.separated_cone_pairs.size()) + " cone pair(s) that the rounded translations put " +
+                 "onto one integer point moved apart, each cone onto a neighbouring integer point (" +
+                 std::to_string(report.separated_cut_edges) + " cut edges with a new translation):";
+      for(std::size_t i = 0; i < report.separated_cone_pairs.size() && i < 10; ++i)
+        summary += " " + std::to_string(report.separated_cone_pairs[i].first) + "|" + std::to_string(report.separated_cone_pairs[i].second);
+      if(report.separated_cone_pairs.size() > 10) summary += " ...";
     }
     if(!report.not_field_cones.empty()) {
       summary += "; not pinned: " + std::to_string(report.not_field_cones.size()) + " vertices whose UV angle sum is not " +
