@@ -115,7 +115,7 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     them are such 90/-90 degree pairs). `separate_cone_pairs=True` (with `integer_grid_map`) moves two cones that
     the rounded translations put onto one integer point apart instead, where a cut within two grid cells of it joins
     them: the integer translations along that cut change so that each cone lands on a neighbouring integer point
-    (report["separated_cone_pairs"]); the field is kept.
+    (report["separated_cone_pairs"]); the field is kept. A 90 and a -90 degree cone move as one: merge those.
     """
     if untangle is None:
         untangle = integer_grid_map

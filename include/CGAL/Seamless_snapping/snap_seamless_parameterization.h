@@ -303,7 +303,9 @@ namespace Seamless_snapping {
  *                           input position (beyond the paper: a local re-rounding; the field and its cones are kept). The
  *                           pairs are listed in `Snap_report::separated_cone_pairs`; the untangling then moves the map to
  *                           the new transitions, by up to about a grid cell near the pair. Pairs that no such cut path
- *                           joins are kept (and reported in `Snap_report::collapsed_cone_pairs` where defects are left).}
+ *                           joins are kept (and reported in `Snap_report::collapsed_cone_pairs` where defects are left), and
+ *                           so are pairs whose indices cancel (a 90 and a -90 degree cone move as one: `merge_cone_pairs`
+ *                           is for those).}
  *     \cgalParamType{Boolean}
  *     \cgalParamDefault{`false`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::separate_cone_pairs()`; implemented in

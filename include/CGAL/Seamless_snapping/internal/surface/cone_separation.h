@@ -25,7 +25,8 @@
 // point of another cone that a cut path near it reaches are tried, and the one that puts A and B nearest (sum of
 // squared distances, grid units) to their input positions is kept; in the order above on ties (deterministic). The
 // untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
-// collapsed where defects remain next to them). Measured effect: Seamless_snapping.txt, "Separating cone pairs".
+// collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
+// moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt, "Separating cone pairs".
 
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
