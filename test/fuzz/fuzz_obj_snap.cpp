@@ -14,9 +14,9 @@
 //  - a successful read gives a mesh with faces;
 //  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
 //  - on any other status, every halfedge UV is bit-identical to what was read;
-//  - the map as read, snapped with integer_grid_map(true) and merge_cone_pairs(true) (as seamless_quad does): on
-//    SUCCESS, is_exact_integer_grid_map() holds and extract_quad_mesh() either gives a valid
-//    polygon mesh of quads (as many as the exact UV area when no cell was dropped) or refuses with the output
+//  - the map as read, snapped with integer_grid_map(true), merge_cone_pairs(true) (as seamless_quad does) and
+//    separate_cone_pairs(true): on SUCCESS, is_exact_integer_grid_map() holds and extract_quad_mesh() either gives
+//    a valid polygon mesh of quads (as many as the exact UV area when no cell was dropped) or refuses with the output
 //    mesh left empty.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
 // The bit-for-bit check compares the UVs after a refused snap with those read in the same run: machine independent.
@@ -63,7 +63,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_REQUIRE(uv_bits(m, uv) == before, "the UV map is untouched on failure");
 
   UV_map guv = uv_of(grid);
-  if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true).merge_cone_pairs(true)).status !=
+  if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true).merge_cone_pairs(true)
+                                                              .separate_cone_pairs(true)).status !=
      SS::SUCCESS)
     return 0;
   FUZZ_REQUIRE(SS::is_exact_integer_grid_map(grid, guv), "an integer-grid SUCCESS is an exact integer-grid map");

@@ -294,8 +294,9 @@ inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, c
 // vertex (see the header comment) and appends the integer-grid rows to `rows`.
 // `ubar`: the input sector values in grid units; the right-hand sides are the integers times
 // 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
-// grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): cones that cone_separation.h
-// moved to a neighbouring integer point, whose input position is not compared with the point the translations force.
+// grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): the vertices of the paths along
+// which cone_separation.h moved cones (its ends, and cones on the point that it passes): their input position is not
+// compared with the point the translations force.
 // On failure nothing is appended.
 inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,

@@ -344,7 +344,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
                                                                    default_separate_cone_reach)) {
         report.separated_cone_pairs.emplace_back(std::size_t((std::min)(c.a, c.b)), std::size_t((std::max)(c.a, c.b)));
         report.separated_cut_edges += c.path.size();
-        moved[c.a] = moved[c.b] = 1;
+        moved[std::size_t(c.a)] = 1;
+        for(int h : c.path) moved[std::size_t(S.cm.target[h])] = 1;   // b, and cones on the point that the path passes
       }
     }
   }
