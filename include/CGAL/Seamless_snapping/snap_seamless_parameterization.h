@@ -299,7 +299,7 @@ namespace Seamless_snapping {
  *                           that point, are moved apart instead, after `merge_cone_pairs` if both are set: the side of that
  *                           path on its left moves by an integer vector relative to the other (the integer translation of
  *                           every cut edge of the path changes; every other vertex of it keeps the identity), chosen among
- *                           those that put each cone on a neighbouring integer point, on no other cone's point, nearest its
+ *                           those that put each cone on a neighbouring integer point, on no other cone's point near it, nearest its
  *                           input position (beyond the paper: a local re-rounding; the field and its cones are kept). The
  *                           pairs are listed in `Snap_report::separated_cone_pairs`; the untangling then moves the map to
  *                           the new transitions, by up to about a grid cell near the pair. Pairs that no such cut path

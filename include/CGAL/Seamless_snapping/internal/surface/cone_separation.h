@@ -22,8 +22,8 @@
 // identity at a regular vertex (add_integer_grid_rows() checks it exactly); A's and B's fixed points move. Of the
 // shifts e in {(+-1, +-1), (+-2, 0), (0, +-2)} (one of them moves a 90 or 180 degree cone to a neighbouring integer
 // point), those that leave every cone of the path on an integer point, A and B on different points and neither on the
-// point of another cone that a cut path near it reaches are tried, and the one that puts A and B nearest (sum of
-// squared distances, grid units) to their input positions is kept; in the order above on ties (deterministic). The
+// point of another cone that a path of edges (cut or not) near it reaches are tried, and the one that puts A and B
+// nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties. The
 // untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
 // collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
 // moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt, "Separating cone pairs".
@@ -130,8 +130,8 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
       shift_left_side(cm, st, rot, m.path, shifts[s], t);
       long qa[2], qb[2];
       bool ok = separated(cm, st, rot, t, m.path, qa, qb);
-      for(int c : {m.a, m.b})                          // neither cone now shares its point with another one near it
-        ok = ok && find_cone_partner(cm, st, rot, t, ubar, K, none, corner_of, c, reach, true, marks, false, mark++).path.empty();
+      for(int c : {m.a, m.b})                          // neither cone now on the point of another one near it (any edges)
+        ok = ok && find_cone_partner(cm, st, rot, t, ubar, K, none, corner_of, c, reach, false, marks, false, mark++).path.empty();
       shift_left_side(cm, st, rot, m.path, undo, t);
       if(!ok) continue;
       double d = 0;
