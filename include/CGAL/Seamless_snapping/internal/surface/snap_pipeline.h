@@ -629,6 +629,23 @@ inline std::vector<int> non_positive_faces(const std::vector<signed char>& o)
 // are made positive by moving the UVs near them inside the constraint space, in floating point
 // (untangler.h); the result is snapped exactly like the input (3.-4. from it) and checked like it.
 // Not used (S.x stays the snap of the input) when it moved a UV more than max_untangle_change grid cells.
+// " n_0 n_1 ... n_9 ...": the names of the first ten items, " ..." if there are more (report messages)
+template <class T, class Name>
+std::string first_ten(const std::vector<T>& items, Name name)
+{
+  std::string s;
+  for(std::size_t i = 0; i < items.size() && i < 10; ++i) s += " " + name(items[i]);
+  return items.size() > 10 ? s + " ..." : s;
+}
+
+// names a vertex pair "a<separator>b"
+inline auto pair_name(const char* separator)
+{
+  return [separator](const std::pair<std::size_t, std::size_t>& p) {
+    return std::to_string(p.first) + separator + std::to_string(p.second);
+  };
+}
+
 template <class TriangleMesh>
 Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
@@ -737,8 +754,7 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
     S.flip_note = "; " + std::to_string(fr.introduced_after.negative) + " flipped and " +
                   std::to_string(fr.introduced_after.degenerate) +
                   " degenerate UV triangle(s) introduced by snapping could not be repaired (faces";
-    for(std::size_t i = 0; i < fr.unrepaired_faces.size() && i < 10; ++i) S.flip_note += " " + std::to_string(fr.unrepaired_faces[i]);
-    S.flip_note += fr.unrepaired_faces.size() > 10 ? " ...)" : ")";
+    S.flip_note += first_ten(fr.unrepaired_faces, [](int f) { return std::to_string(f); }) + ")";
     S.flip_note += "; " + fr.reasons;
   }
 }
@@ -880,23 +896,18 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
       summary += "; " + std::to_string(report.merged_cone_pairs.size()) + " cone pair(s) that the rounded translations put " +
                  "onto one integer point merged into regular points of the field (" + std::to_string(report.merged_cut_edges) +
                  " cut edges with a new rotation, " + std::to_string(report.added_cut_edges) + " of them new):";
-      for(std::size_t i = 0; i < report.merged_cone_pairs.size() && i < 10; ++i)
-        summary += " " + std::to_string(report.merged_cone_pairs[i].first) + "+" + std::to_string(report.merged_cone_pairs[i].second);
-      if(report.merged_cone_pairs.size() > 10) summary += " ...";
+      summary += first_ten(report.merged_cone_pairs, pair_name("+"));
     }
     if(!report.separated_cone_pairs.empty()) {
       summary += "; " + std::to_string(report.separated_cone_pairs.size()) + " cone pair(s) that the rounded translations put " +
                  "onto one integer point moved apart, each cone onto a neighbouring integer point (" +
                  std::to_string(report.separated_cut_edges) + " cut edges with a new translation):";
-      for(std::size_t i = 0; i < report.separated_cone_pairs.size() && i < 10; ++i)
-        summary += " " + std::to_string(report.separated_cone_pairs[i].first) + "|" + std::to_string(report.separated_cone_pairs[i].second);
-      if(report.separated_cone_pairs.size() > 10) summary += " ...";
+      summary += first_ten(report.separated_cone_pairs, pair_name("|"));
     }
     if(!report.not_field_cones.empty()) {
       summary += "; not pinned: " + std::to_string(report.not_field_cones.size()) + " vertices whose UV angle sum is not " +
                  "2 pi but whose rotations compose to the identity (fold-overs next to them, not cones of the field):";
-      for(std::size_t i = 0; i < report.not_field_cones.size() && i < 10; ++i) summary += " " + std::to_string(report.not_field_cones[i]);
-      if(report.not_field_cones.size() > 10) summary += " ...";
+      summary += first_ten(report.not_field_cones, [](std::size_t v) { return std::to_string(v); });
     }
   }
   if(!S.pins.empty())
