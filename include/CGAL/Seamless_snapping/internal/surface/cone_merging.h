@@ -77,11 +77,11 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
 }
 
 // The shortest path of cut edges (of any edges: cut_edges_only = false) from field cone a to a field cone b with
-// K[a] + K[b] = 0 mod 4 (any b: cancelling_only = false) that the rounded transitions carry onto a's integer point, every vertex of it within `reach`
-// of that point; empty if none. Other cones on the point may lie on the path (the changes then keep their rotation
-// about that point); cones elsewhere may not. `corner_of`: first_corners(); `reached_from`: per vertex, the mark of
-// the search that reached it last (-1: none; no clearing between searches with different marks): `mark`, or a if
-// mark < 0 (one search per cone).
+// K[a] + K[b] = 0 mod 4 (any b: cancelling_only = false) that the rounded transitions carry onto a's integer point,
+// every vertex of it within `reach` of that point; empty if none. Other cones on the point may lie on the path (the
+// changes then keep their rotation about that point); cones elsewhere may not. `corner_of`: first_corners();
+// `reached_from`: per vertex, the mark of the search that reached it last (-1: none; no clearing between searches with
+// different marks): `mark`, or a if mark < 0 (one search per cone).
 inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
                                     const std::vector<char>& taken, const std::vector<int>& corner_of, int a,

@@ -26,7 +26,8 @@
 // nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties. The
 // untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
 // collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
-// moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt, "Separating cone pairs".
+// moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt,
+// "Separating cone pairs".
 
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>

@@ -350,7 +350,8 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       return INFEASIBLE;
     }
     const int s = st.sector_of[g0];
-    if((moved_cones.empty() || !moved_cones[std::size_t(v)]) && (std::fabs(ubar[2 * s] - double(num[0] / 2)) > tolerance || std::fabs(ubar[2 * s + 1] - double(num[1] / 2)) > tolerance)) {
+    if((moved_cones.empty() || !moved_cones[std::size_t(v)]) &&
+       (std::fabs(ubar[2 * s] - double(num[0] / 2)) > tolerance || std::fabs(ubar[2 * s + 1] - double(num[1] / 2)) > tolerance)) {
       message = "cone at vertex " + std::to_string(v) + " sits at " + point_name(ubar[2 * s], ubar[2 * s + 1]) +
                 " (face " + std::to_string(cm.face[g0]) + ") but its rounded transitions force it to (" +
                 std::to_string(num[0] / 2) + ", " + std::to_string(num[1] / 2) + "), farther than " + format_double(tolerance) +

@@ -325,7 +325,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.cones_on_integer_points_before = before.cones_on_integer_points;
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
   std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging, separating)
-  std::vector<char> moved;                   // per vertex: a cone that separating moved off its rounded point
+  std::vector<char> moved;                   // per vertex: on a path along which separating moved cones
   std::vector<char>& merged = S.merged_cones;
   merged.assign(S.cm.n_vertices, 0);
   if(opt.integer_grid_map) {
