@@ -41,7 +41,8 @@ namespace Seamless_snapping {
  *    the sector variable. The rotation `k` of each cut edge is given (`rotation_map`) or fitted:
  *    one `k` per seam arc (chain of cut edges between cones, border vertices and vertices whose
  *    number of cut edges is not 2), maximizing the sum of `dot(R^k d_i, d_j)` over the arc's edges,
- *    which is robust to near-zero-length cut edges. Cones are interior vertices whose UV angle
+ *    which is robust to near-zero-length cut edges; on an exactly seamless input, each cut edge keeps
+ *    the `k` for which its transition holds exactly. Cones are interior vertices whose UV angle
  *    sum, rounded to quarter turns, is not 2 pi.
  * 2. *Constraints.* Two rows of Eq. (4) per cut edge, `R^k (U_a^i - U_b^i) - (U_a^j - U_b^j) = 0`,
  *    and one row of Eq. (5) per align edge, `U_a|c - U_b|c = 0`.

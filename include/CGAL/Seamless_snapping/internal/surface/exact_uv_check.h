@@ -91,33 +91,6 @@ inline double max_abs_residual(const Constraint_rows& rows, const std::vector<do
   return abs_mpzf(std::size_t(best)).to_double();
 }
 
-// true iff x - y == z - w exactly (the differences of doubles need not be doubles): x - y - z + w == 0 in
-// integers (dyadic_sum.h), in rational arithmetic when the four values span too much
-inline bool same_difference(double x, double y, double z, double w)
-{
-  Dyadic_sum r;
-  r.add(1, x); r.add(-1, y); r.add(-1, z); r.add(1, w);
-  if(r.fits()) return r.is_zero();
-  return CGAL::Gmpq(x) - CGAL::Gmpq(y) == CGAL::Gmpq(z) - CGAL::Gmpq(w);
-}
-
-// true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).
-inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
-{
-  const int o = cm.opp[h];
-  const int ph = cm.prev[h], po = cm.prev[o];
-  // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o); (R^k d_i)_c = sign_c (d_i)_col_c
-  const Quarter_turn R(k);
-  for(int c = 0; c < 2; ++c) {
-    const std::vector<double>& in = R.col[c] == 0 ? cm.u : cm.v;
-    const std::vector<double>& out = c == 0 ? cm.u : cm.v;
-    const bool same = R.sign[c] > 0 ? same_difference(in[h], in[ph], out[po], out[o])
-                                    : same_difference(in[ph], in[h], out[po], out[o]);
-    if(!same) return false;
-  }
-  return true;
-}
-
 // The exact test behind is_exactly_seamless().
 // `seam_override[e]`: as in compute_seam_topology(); `given_k[e]`: k of halfedge(e) or empty (any k);
 // `aligned[e]`: edges that must be axis-parallel in UV, or empty. With `why`, a failure names the

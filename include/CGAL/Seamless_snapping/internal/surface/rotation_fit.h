@@ -23,7 +23,14 @@
 //   sum over the arc's edges of dot(R^k d_i, d_j)
 // (d_i, d_j: the edge's UV vector on either side, both oriented along the arc). Long edges
 // dominate, so near-zero-length cut edges, whose direction is noise, get the rotation of their arc
-// (cf. [EBCK13] for the per-edge version).
+// (cf. [EBCK13] for the per-edge version). Except in an exactly seamless map (every cut edge has a k
+// for which its transition holds exactly, exact_transition_holds()): there every cut edge keeps that k
+// where the arc's k does not hold exactly on it (a nonzero edge has one such k; an edge of UV length 0
+// holds for every k and keeps the arc's). Arcs run through cones whose UV angle sum is hidden (e.g. two
+// cones that an integer-grid snap put onto one point: the angles at a corner with a side of length 0
+// mean nothing), and the arc's k then misses a rotation change there; near-zero edges next to such
+// points hold exactly for another k than their arc's. Without this, the package's own exact output of
+// such a map was refused, or moved, when read again (the dragon's integer-grid map, test_constraints).
 //
 // Check: every non-degenerate cut edge must have |angle(R^k d_i, d_j)| <= rotation tolerance and
 // | |d_j| - |d_i| | <= tolerance (in radians) * max(|d_i|, |d_j|) (a rigid motion keeps lengths),
@@ -32,13 +39,17 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/surface/dyadic_sum.h>
 #include <CGAL/Seamless_snapping/internal/surface/edge_chains.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
+
+#include <CGAL/Gmpq.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -94,6 +105,33 @@ inline void transition_vectors(const Corner_mesh& cm, int h, double di[2], doubl
   dj[0] = -cm.du(o); dj[1] = -cm.dv(o);
 }
 
+// true iff x - y == z - w exactly (the differences of doubles need not be doubles): x - y - z + w == 0 in
+// integers (dyadic_sum.h), in rational arithmetic when the four values span too much
+inline bool same_difference(double x, double y, double z, double w)
+{
+  Dyadic_sum r;
+  r.add(1, x); r.add(-1, y); r.add(-1, z); r.add(1, w);
+  if(r.fits()) return r.is_zero();
+  return CGAL::Gmpq(x) - CGAL::Gmpq(y) == CGAL::Gmpq(z) - CGAL::Gmpq(w);
+}
+
+// true iff R^k d_i == d_j exactly (d = UV(target) - UV(source) on each side of the edge of h).
+inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
+{
+  const int o = cm.opp[h];
+  const int ph = cm.prev[h], po = cm.prev[o];
+  // d_i = uv[h] - uv[prev h] (face of h); d_j = uv[prev o] - uv[o] (face of o); (R^k d_i)_c = sign_c (d_i)_col_c
+  const Quarter_turn R(k);
+  for(int c = 0; c < 2; ++c) {
+    const std::vector<double>& in = R.col[c] == 0 ? cm.u : cm.v;
+    const std::vector<double>& out = c == 0 ? cm.u : cm.v;
+    const bool same = R.sign[c] > 0 ? same_difference(in[h], in[ph], out[po], out[o])
+                                    : same_difference(in[ph], in[h], out[po], out[o]);
+    if(!same) return false;
+  }
+  return true;
+}
+
 inline std::string format_double(double x, int precision = 6)
 {
   std::ostringstream s; s.precision(precision); s << x; return s.str();
@@ -146,6 +184,17 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
       for(int k = 1; k < 4; ++k) if(score[k] > score[best]) best = k;
       for(int h : arc) set_k(h, best);
     }
+    // an exactly seamless map keeps the rotation that each of its cut edges has exactly
+    std::vector<std::pair<int, int> > exact;
+    for(int e : st.cut_edges) {
+      const int h = cm.edge_halfedge[e];
+      if(exact_transition_holds(cm, h, rot.k[h])) continue;
+      int k = 0;
+      while(k < 4 && !exact_transition_holds(cm, h, k)) ++k;
+      if(k == 4) { exact.clear(); break; }          // not exactly seamless: the fitted rotations stay
+      exact.emplace_back(h, k);
+    }
+    for(const std::pair<int, int>& hk : exact) set_k(hk.first, hk.second);
   }
 
   // every non-degenerate transition must be a rotation by k * 90 degrees, up to the tolerance
