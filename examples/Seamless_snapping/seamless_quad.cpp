@@ -77,7 +77,8 @@ static const char* help_text =
   "  --keep-cone-pairs    keep every cone of the map's field: a valence-3 and a valence-5 cone that the\n"
   "                       map's integer translations put onto one integer point are not merged into\n"
   "                       regular vertices (the map then folds around them and is refused; libQEx\n"
-  "                       merges such pairs too). The snap report lists the merged pairs\n"
+  "                       merges such pairs too), and other pairs on one point are not joined into one\n"
+  "                       cone. The snap report lists the merged pairs\n"
   "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
@@ -166,8 +167,9 @@ int main(int argc, char** argv)
                 snap.merged_cone_pairs.size());
     for(std::size_t i = 0; i < snap.merged_cone_pairs.size() && i < 10; ++i)
       std::printf(" %zu+%zu", snap.merged_cone_pairs[i].first, snap.merged_cone_pairs[i].second);
-    std::printf("%s): regular vertices of the quad mesh now, the rotations of %zu cut edges changed (%zu of them new); "
-                "--keep-cone-pairs keeps them\n", snap.merged_cone_pairs.size() > 10 ? " ..." : "", snap.merged_cut_edges,
+    std::printf("%s): regular vertices of the quad mesh now (%zu pair(s) whose indices do not cancel: one vertex with "
+                "both), the rotations of %zu cut edges changed (%zu of them new); --keep-cone-pairs keeps them\n",
+                snap.merged_cone_pairs.size() > 10 ? " ..." : "", snap.joined_cone_pairs, snap.merged_cut_edges,
                 snap.added_cut_edges);
   }
 

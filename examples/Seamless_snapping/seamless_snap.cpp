@@ -131,6 +131,8 @@ static const char* help_text =
   "                       onto one integer point (no locally injective map has them) become regular points\n"
   "                       of the field: the rotations and translations of the cut edges between them change\n"
   "                       (where that cut runs within one grid cell of the point), as libQEx merges them.\n"
+  "                       Other pairs on one point are then joined: one cone takes both indices (two 90 degree\n"
+  "                       cones: valence 2, never less), the other becomes regular ('joined_cone_pairs').\n"
   "                       The report lists the pairs ('merged_cone_pairs'); seamless_quad does it by default\n"
   "  --separate-cone-pairs  with --integer-grid: two cones that the rounded translations put onto one integer\n"
   "                       point and that a cut within two grid cells of it joins are moved apart instead (after\n"

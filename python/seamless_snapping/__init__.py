@@ -110,7 +110,9 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     UV angle sum is not their valence); an untangled map that moves a UV by more than `max_untangle_change` grid
     cells is not used (report["untangle_refused"]). `merge_cone_pairs=True` (with `integer_grid_map`) makes each
     pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point regular points of
-    the field (report["merged_cone_pairs"]), as libQEx merges them; without it such maps keep winding defects,
+    the field (report["merged_cone_pairs"]), as libQEx merges them, and then joins other pairs on one point (one
+    cone takes both indices, never below valence 2, the other becomes regular: report["joined_cone_pairs"]);
+    without it such maps keep winding defects,
     and report["collapsed_cone_pairs"] lists the pairs found next to them ("cancelling_collapsed_cone_pairs" of
     them are such 90/-90 degree pairs). `separate_cone_pairs=True` (with `integer_grid_map`) moves two cones that
     the rounded translations put onto one integer point apart instead, where a cut within two grid cells of it joins

@@ -1099,6 +1099,33 @@ static void test_untangling_analytic()
   std::cout << "untangling: analytic cases OK (" << rp.folds.front().message << ")\n";
 }
 
+// merge_cone_pairs(true) on the dragon (full-seamless), after the cancelling pairs, joins pairs whose indices do not
+// cancel (one cone takes both, never below valence 2; its partner becomes regular): against the integer-grid map of
+// the caller's field, a tenth of the triangles are left not positive, every zero-area one proven forced, and the
+// result is an exact integer-grid map with the field cones counted as the pairs say
+static void test_joined_cone_pairs()
+{
+  const char* f = "directional/dragon-param-full-seamless.obj";
+  Mesh m0;
+  if(sanitizer_subset()) return;                                   // 2 x 2-3 s of untangling
+  if(!load_shared_or_skip(f, "untangling: joined cone pairs", m0)) return;
+  Mesh m1 = m0;
+  UV_map uv0 = uv_of(m0), uv1 = uv_of(m1);
+  const SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(true));
+  const SS::Snap_report r1 = SS::snap_seamless_parameterization(m1, uv1, SS::parameters::integer_grid_map(true).merge_cone_pairs(true));
+  std::printf("untangling: %s, integer grid: %zu negative, %zu zero-area left; pairs merged (%zu, %zu of them joined): "
+              "%zu negative, %zu zero-area (%zu forced)\n", f, r0.flips_after_repair, r0.degenerate_after_repair,
+              r1.merged_cone_pairs.size(), r1.joined_cone_pairs, r1.flips_after_repair, r1.degenerate_after_repair,
+              r1.folds_forced);
+  assert(r0.status == SS::SUCCESS && r1.status == SS::SUCCESS);
+  assert(SS::is_exact_integer_grid_map(m1, uv1) && r1.cones_on_integer_points_after == r1.field_cones);
+  assert(r1.joined_cone_pairs > 0 && r1.joined_cone_pairs < r1.merged_cone_pairs.size());
+  assert(r1.field_cones + 2 * r1.merged_cone_pairs.size() - r1.joined_cone_pairs == r0.field_cones);
+  assert(r1.degenerate_after_repair == r1.folds_forced);
+  assert(10 * (r1.flips_after_repair + r1.degenerate_after_repair) < r0.flips_after_repair + r0.degenerate_after_repair);
+  assert(r1.message.find(std::to_string(r1.joined_cone_pairs) + " of them into one cone with both indices") != std::string::npos);
+}
+
 // the shared maps with fold-overs, both modes: no negative triangle is left, every zero-area one is proven forced,
 // in integer-grid mode every vertex left not locally injective lies next to a cone pair collapsed onto one integer
 // point. duck_qc_8 in integer-grid mode keeps 2 negative triangles and 14 wound vertices, 12 next to such pairs; its
@@ -1228,6 +1255,7 @@ int main(int argc, char** argv)
   test_untangling_parts();
   test_untangling_analytic();
   test_untangling_data();
+  test_joined_cone_pairs();
   test_invalid();
   test_cycles();
   test_data_meshes();

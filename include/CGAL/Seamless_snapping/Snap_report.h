@@ -148,10 +148,11 @@ struct Snap_report
   bool near_integer_grid_map = false;         ///< the input's translations and field cones are all within 1e-6 of integers (it looks like an IGM)
   std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
   std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
-  std::vector<std::pair<std::size_t, std::size_t> > merged_cone_pairs; ///< `merge_cone_pairs`: the +-90 degree cone pairs (vertex indices) that the rounded translations put onto one integer point, made regular points of the field; not counted in `field_cones`
+  std::vector<std::pair<std::size_t, std::size_t> > merged_cone_pairs; ///< `merge_cone_pairs`: the cone pairs (vertex indices) that the rounded translations put onto one integer point, merged: the first vertex is now a regular point of the field, the second too when their indices cancel (a +90 and a -90 degree cone), else one cone with both indices (`joined_cone_pairs`); not counted in `field_cones`
   std::vector<std::pair<std::size_t, std::size_t> > collapsed_cone_pairs; ///< `integer_grid_map`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, found next to the `winding_defects` and to the `folds` not proven forced (within 16 face rings); each is named in the message of such a defect or fold next to it
   std::size_t cancelling_collapsed_cone_pairs = 0; ///< of `collapsed_cone_pairs`, those whose rotations k sum to a multiple of 4 (a +90 and a -90 degree cone): `merge_cone_pairs(true)` makes such pairs regular points
   std::size_t merged_cut_edges = 0;            ///< `merge_cone_pairs`: cut edges whose rotation k (and translation) changed to merge them
+  std::size_t joined_cone_pairs = 0;           ///< `merge_cone_pairs`: of `merged_cone_pairs`, those whose indices do not cancel: the second vertex of the pair is now one cone with both indices (valence 2 for two +90 degree cones, 6 for two -90), the first a regular point
   std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
   std::vector<std::pair<std::size_t, std::size_t> > separated_cone_pairs; ///< `separate_cone_pairs`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, moved apart (each cone onto a neighbouring integer point); counted in `field_cones`
   std::size_t separated_cut_edges = 0;         ///< `separate_cone_pairs`: cut edges whose integer translation changed to separate them
@@ -243,7 +244,7 @@ struct Snap_report
     num("cancelling_collapsed_cone_pairs", double(cancelling_collapsed_cone_pairs));
     vertex_pairs("separated_cone_pairs", separated_cone_pairs);
     num("separated_cut_edges", double(separated_cut_edges));
-    num("merged_cut_edges", double(merged_cut_edges)); num("added_cut_edges", double(added_cut_edges));
+    num("merged_cut_edges", double(merged_cut_edges)); num("joined_cone_pairs", double(joined_cone_pairs)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));
     o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";
     o << "  \"untangled\": " << (untangled ? "true" : "false") << ",\n";

@@ -284,7 +284,10 @@ namespace Seamless_snapping {
  *                           regular points of the field: the rotation k of every edge of that path changes by the same
  *                           quarter turns and its integer translation so that the transition still maps the point onto
  *                           itself (beyond the paper; libQEx merges such pairs into one regular quad vertex). No locally injective map keeps both cones on one point, so without
- *                           it the untangled map winds wrongly there and `extract_quad_mesh()` refuses it. The pairs are
+ *                           it the untangled map winds wrongly there and `extract_quad_mesh()` refuses it. Pairs whose
+ *                           indices do not cancel are then joined the same way: the first cone becomes a regular point, the
+ *                           second takes both indices (two +90 degree cones: valence 2; two -90: valence 6), never below
+ *                           valence 2 (`Snap_report::joined_cone_pairs`). The pairs are
  *                           listed in `Snap_report::merged_cone_pairs`, not counted in `Snap_report::field_cones`; the
  *                           result is an exact integer-grid map of the changed field (the caller's rotations change on
  *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new).}

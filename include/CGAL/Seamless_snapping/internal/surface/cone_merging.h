@@ -26,7 +26,12 @@
 // path's other vertices the changes cancel; every composition around a vertex of the path fixes p and has no
 // rotation, so it is the identity, as add_integer_grid_rows() checks exactly. A and B are then regular points
 // of the field (4 quarter turns), the snap's rows hold the new transitions, and the untangling makes the map
-// around them locally injective. Only pairs with K_A + K_B = 0 mod 4 are merged, each cone at most once; a path
+// around them locally injective. Cancelling pairs (K_A + K_B = 0 mod 4) are merged first, each cone at most once.
+// Then any other pair is joined the same way: A becomes a regular point and B takes both indices (K_A + K_B around
+// it: two +90 degree cones make a cone of valence 2, two -90 degree ones of valence 6), as long as B's valence in
+// the quad mesh stays at least 2 (valence 4 - index; a valence-1 point has no quad mesh); B may take further cones.
+// The map around A is then free to open up: on the dragon (full-seamless) 170 pairs merged, 74 of them joined, leave
+// 1 negative and 16 zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only). A path
 // may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
 // one through the mesh: cut_edges_to_add() finds its edges, the snap makes them cut edges (rotation 0, the input's
 // UVs continuous there) before its rows are built, and the merge then runs along them.
@@ -55,6 +60,7 @@ struct Cone_merge
 {
   int a = -1, b = -1;                 // the cones (vertices), a < b not implied: a is where the path starts
   std::vector<int> path;              // its halfedges, from a to b
+  int b_valence = 4;                  // b's valence in the quad mesh afterwards (4: a regular point; a is one)
 };
 
 // p -> R^k p + t on an integer point
@@ -81,12 +87,15 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
 // every vertex of it within `reach` of that point; empty if none. Other cones on the point may lie on the path (the
 // changes then keep their rotation about that point); cones elsewhere may not. `corner_of`: first_corners();
 // `reached_from`: per vertex, the mark of the search that reached it last (-1: none; no clearing between searches with
-// different marks): `mark`, or a if mark < 0 (one search per cone).
+// different marks): `mark`, or a if mark < 0 (one search per cone). With `valence` (per vertex, its valence in the
+// quad mesh): only partners b whose merged point would have a valence of at least 2 (valence[a] + valence[b] - 4),
+// and 4 exactly when their rotations cancel (a point whose rotations compose to the identity is a regular one).
 inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
                                     const std::vector<char>& taken, const std::vector<int>& corner_of, int a,
                                     double reach, bool cut_edges_only, std::vector<int>& reached_from,
-                                    bool cancelling_only = true, int mark = -1)
+                                    bool cancelling_only = true, int mark = -1,
+                                    const std::vector<int>* valence = nullptr)
 {
   if(mark < 0) mark = a;
   struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
@@ -123,7 +132,10 @@ inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& 
       long q[2];
       if(!integer_cone_point(cm, st, rot, t, s.h, q) || q[0] != s.p[0] || q[1] != s.p[1])
         continue;                                    // a cone elsewhere: the path does not pass through it
-      if(taken[std::size_t(w)] || (cancelling_only && (K[std::size_t(a)] + K[std::size_t(w)]) % 4 != 0)) {
+      const bool cancelling = (K[std::size_t(a)] + K[std::size_t(w)]) % 4 == 0;
+      const int joined = valence == nullptr ? 0 : (*valence)[std::size_t(a)] + (*valence)[std::size_t(w)] - 4;
+      const bool no_quad_vertex = valence != nullptr && (joined < 2 || cancelling != (joined == 4));
+      if(taken[std::size_t(w)] || (cancelling_only && !cancelling) || no_quad_vertex) {
         push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
         continue;
       }
@@ -148,17 +160,27 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
                                                           bool cut_edges_only = true)
 {
   std::vector<int> K = field_rotation_sums(cm, st, rot);     // merged cones become 0: later paths pass them
+  std::vector<int> valence(K.size(), 4);                     // in the quad mesh: 4 - the cone's index
+  for(std::size_t v = 0; v < K.size(); ++v)                  // K = 2: a half turn either way, the UV angle sum says which
+    if(K[v] != 0) valence[v] = K[v] == 1 ? 3 : K[v] == 3 ? 5 : (st.quarter_turns[v] >= 6 ? 6 : 2);
   std::vector<char> taken(std::size_t(cm.n_vertices), 0);
   std::vector<int> reached_from(std::size_t(cm.n_vertices), -1);
   const std::vector<int> corner_of = first_corners(cm);
   std::vector<Cone_merge> merges;
+  for(int pass = 0; pass < 2; ++pass)                        // cancelling pairs first, then any pair (see the header)
   for(int a = 0; a < cm.n_vertices; ++a) {
     if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
-    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, reached_from);
+    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, reached_from,
+                                     pass == 0, pass == 0 ? -1 : a + cm.n_vertices, pass == 0 ? nullptr : &valence);
     if(m.path.empty()) continue;
-    taken[std::size_t(m.a)] = taken[std::size_t(m.b)] = 1;
     const int dk = (4 - K[std::size_t(a)]) % 4;
-    K[std::size_t(m.a)] = K[std::size_t(m.b)] = 0;
+    K[std::size_t(m.b)] = (K[std::size_t(m.a)] + K[std::size_t(m.b)]) % 4;
+    K[std::size_t(m.a)] = 0;
+    m.b_valence = K[std::size_t(m.b)] == 0 ? 4 : valence[std::size_t(m.a)] + valence[std::size_t(m.b)] - 4;
+    valence[std::size_t(m.b)] = m.b_valence;
+    valence[std::size_t(m.a)] = 4;
+    taken[std::size_t(m.a)] = 1;
+    taken[std::size_t(m.b)] = K[std::size_t(m.b)] == 0;    // a cone that took another's index may take more
     long p[2];
     integer_cone_point(cm, st, rot, t, cm.prev[m.path.front()], p);   // checked by find_cone_partner
     for(std::size_t i = 0; i < m.path.size(); ++i) {

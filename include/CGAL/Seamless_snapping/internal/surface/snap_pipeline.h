@@ -201,7 +201,8 @@ struct Snap_state
   std::vector<int> constrained_vars;     // variables used by `full`, increasing
   std::vector<double> vertex_weights;    // per vertex, for step 3a (empty: all 1); larger = moves less
   std::vector<double> points;            // per vertex its 3D position (x, y, z), for step 4b (empty without untangling)
-  std::vector<char> merged_cones;        // per vertex: a cone of a merged cone pair (Snap_options::merge_cone_pairs), now regular
+  std::vector<int> merged_valence;       // per vertex of a merged cone pair (Snap_options::merge_cone_pairs): its valence
+                                         // in the quad mesh now (4: a regular point); 0 elsewhere
   std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for steps 4b, 5 and 5b
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
@@ -326,7 +327,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
   std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging, separating)
   std::vector<char> moved;                   // per vertex: on a path along which separating moved cones
-  std::vector<char>& merged = S.merged_cones;
+  std::vector<int>& merged = S.merged_valence;
   merged.assign(S.cm.n_vertices, 0);
   if(opt.integer_grid_map) {
     if(round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message) != SUCCESS)
@@ -335,8 +336,10 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
         report.merged_cone_pairs.emplace_back(std::size_t(m.a), std::size_t(m.b));
         report.merged_cut_edges += m.path.size();
-        merged[m.a] = merged[m.b] = 1;
-        report.field_cones -= 2;
+        merged[m.a] = 4;
+        merged[m.b] = m.b_valence;
+        report.field_cones -= m.b_valence == 4 ? 2 : 1;
+        report.joined_cone_pairs += m.b_valence == 4 ? 0 : 1;
       }
     if(opt.separate_cone_pairs) {
       moved.assign(S.cm.n_vertices, 0);
@@ -595,13 +598,13 @@ std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
   return positive;
 }
 
-// per vertex: the angle sum in quarter turns a locally injective map has there (vertex_windings.h); 4 at the
-// cones of merged pairs, which the merge made regular points of the field
+// per vertex: the angle sum in quarter turns a locally injective map has there (vertex_windings.h); at the cones of
+// merged pairs, the valence the merge gave them (4: a regular point of the field)
 template <class TriangleMesh>
 std::vector<int> target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
 {
   std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
-  for(std::size_t v = 0; v < S.merged_cones.size(); ++v) if(S.merged_cones[v]) valence[v] = 4;
+  for(std::size_t v = 0; v < S.merged_valence.size(); ++v) if(S.merged_valence[v] != 0) valence[v] = S.merged_valence[v];
   return valence;
 }
 
@@ -894,8 +897,11 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
                " cones on integer points";
     if(!report.merged_cone_pairs.empty()) {
       summary += "; " + std::to_string(report.merged_cone_pairs.size()) + " cone pair(s) that the rounded translations put " +
-                 "onto one integer point merged into regular points of the field (" + std::to_string(report.merged_cut_edges) +
-                 " cut edges with a new rotation, " + std::to_string(report.added_cut_edges) + " of them new):";
+                 "onto one integer point merged into regular points of the field (" +
+                 (report.joined_cone_pairs > 0 ? std::to_string(report.joined_cone_pairs) + " of them into one cone with both "
+                                                 "indices, whose partner became regular; " : std::string()) +
+                 std::to_string(report.merged_cut_edges) + " cut edges with a new rotation, " +
+                 std::to_string(report.added_cut_edges) + " of them new):";
       summary += first_ten(report.merged_cone_pairs, pair_name("+"));
     }
     if(!report.separated_cone_pairs.empty()) {
