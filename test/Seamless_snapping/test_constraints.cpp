@@ -633,7 +633,9 @@ static void test_integer_grid_data()
       Mesh m2 = m;
       UV_map uv2 = uv_of(m2);
       const SS::Snap_report r2 = SS::snap_seamless_parameterization(m2, uv2, SS::parameters::integer_grid_map(igm).untangle(false));
-      if(r2.status != SS::SUCCESS || r2.max_input_violation != 0) std::cerr << f << ": snapped again: " << r2.max_input_violation << " " << SS::status_name(r2.status) << " " << r2.message << std::endl;
+      if(r2.status != SS::SUCCESS || r2.max_input_violation != 0)
+        std::cerr << f << ": snapped again: violation " << r2.max_input_violation << ", " << SS::status_name(r2.status) << " "
+                  << r2.message << std::endl;
       assert(r2.status == SS::SUCCESS && r2.max_input_violation == 0 && uv_bits(m2, uv2) == uv_bits(m, uv));
     }
   }

@@ -627,11 +627,6 @@ inline std::vector<int> non_positive_faces(const std::vector<signed char>& o)
   return faces;
 }
 
-// 4b. untangling (beyond the paper: Sec. 5.4 and 7 repair only what the snap introduces): the faces of
-// the exact map S.x that are not positive, unless proven so in every exact solution (forced_folds.h),
-// are made positive by moving the UVs near them inside the constraint space, in floating point
-// (untangler.h); the result is snapped exactly like the input (3.-4. from it) and checked like it.
-// Not used (S.x stays the snap of the input) when it moved a UV more than max_untangle_change grid cells.
 // " n_0 n_1 ... n_9 ...": the names of the first ten items, " ..." if there are more (report messages)
 template <class T, class Name>
 std::string first_ten(const std::vector<T>& items, Name name)
@@ -649,6 +644,11 @@ inline auto pair_name(const char* separator)
   };
 }
 
+// 4b. untangling (beyond the paper: Sec. 5.4 and 7 repair only what the snap introduces): the faces of
+// the exact map S.x that are not positive, unless proven so in every exact solution (forced_folds.h),
+// are made positive by moving the UVs near them inside the constraint space, in floating point
+// (untangler.h); the result is snapped exactly like the input (3.-4. from it) and checked like it.
+// Not used (S.x stays the snap of the input) when it moved a UV more than max_untangle_change grid cells.
 template <class TriangleMesh>
 Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
