@@ -72,6 +72,7 @@
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
 
@@ -865,17 +866,21 @@ static void test_pinned_corners_data()
 // untangling (untangle(true), the default with integer_grid_map): fold-overs removed inside the constraint space
 // ---------------------------------------------------------------------------------------------
 
-// the UV triangles of the map that are negative / zero (exact orientation test)
-static std::pair<std::size_t, std::size_t> non_positive(const Mesh& m, UV_map uv)
+// the UV triangles of the map that are negative / zero (exact orientation test); `touched`, if given: per vertex,
+// 1 if one of them has a corner there
+static std::pair<std::size_t, std::size_t> non_positive(const Mesh& m, UV_map uv, std::vector<char>* touched = nullptr)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
   std::size_t negative = 0, zero = 0;
+  if(touched != nullptr) touched->assign(m.number_of_vertices(), 0);
   for(Mesh::Face_index f : m.faces()) {
     const halfedge_descriptor h = m.halfedge(f);
     const CGAL::Orientation o = CGAL::orientation(P(get(uv, h).x(), get(uv, h).y()), P(get(uv, m.next(h)).x(), get(uv, m.next(h)).y()),
                                                   P(get(uv, m.prev(h)).x(), get(uv, m.prev(h)).y()));
     negative += o == CGAL::NEGATIVE ? 1 : 0;
     zero += o == CGAL::ZERO ? 1 : 0;
+    if(touched != nullptr && o != CGAL::POSITIVE)
+      for(halfedge_descriptor g : CGAL::halfedges_around_face(h, m)) (*touched)[std::size_t(m.target(g))] = 1;
   }
   return {negative, zero};
 }
@@ -888,9 +893,14 @@ static void check_untangled(const Mesh& m, UV_map uv, const SS::Snap_report& r, 
   if(r.status != SS::SUCCESS) std::cerr << what << ": " << SS::status_name(r.status) << " " << r.message << std::endl;
   assert(r.status == SS::SUCCESS && r.untangle);
   assert(igm ? SS::is_exact_integer_grid_map(m, uv) : SS::is_exactly_seamless(m, uv));
-  const std::pair<std::size_t, std::size_t> np = non_positive(m, uv);
+  std::vector<char> touched;
+  const std::pair<std::size_t, std::size_t> np = non_positive(m, uv, &touched);
   assert(np.first == r.flips_after_repair && np.second == r.degenerate_after_repair);
   assert(r.folds.size() == np.first + np.second);
+  // the seam rotations around a vertex fix its angle sum modulo 4 quarter turns: a defect's target valence is in
+  // that class wherever the angle sum is exact (no non-positive triangle there), at merged and joined cones too
+  for(const SS::Winding_defect& w : r.winding_defects)
+    assert(touched[w.vertex] || ((w.angle_sum - w.valence) % 4 + 4) % 4 == 0);
   std::size_t forced = 0;
   for(const SS::Fold_explanation& e : r.folds) {
     forced += e.forced() ? 1 : 0;
@@ -1105,6 +1115,28 @@ static void test_untangling_analytic()
 // cancel (one cone takes both, never below valence 2; its partner becomes regular): against the integer-grid map of
 // the caller's field, a tenth of the triangles are left not positive, every zero-area one proven forced, and the
 // result is an exact integer-grid map with the field cones counted as the pairs say
+// The valences a join gives (cone_merging.h): 4 - the index in quarter turns, from the rotation sums K (the angle sum
+// is K quarter turns modulo 4: K = 1 is a -90 degree cone, valence 5); a half-turn cone (K = 2) counts as 2 or 6,
+// whichever makes a quad mesh vertex; three +90 degree cones on one point never do (valence 1)
+static void test_cone_valences()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  //                 vertex: 0  1  2  3  4  5  6
+  const std::vector<int> K = {1, 3, 2, 2, 3, 3, 1};
+  const std::vector<int> angle_sums = {5, 3, -2, 6, 3, 3, 5};   // the input's (vertex 2 folded: meaningless)
+  SI::Cone_valences c(K, angle_sums);
+  assert(c.valence[0] == 5 && c.valence[1] == 3 && c.valence[2] == 2 && c.valence[3] == 6);
+  assert(c.joined(0, 1, true) == 4 && c.joined(0, 6, false) == 6 && c.joined(1, 4, false) == 2);
+  assert(c.joined(0, 2, false) == 3);   // -90 and a half turn: 5 + 2 - 4, as given
+  assert(c.joined(1, 2, false) == 5);   // +90 and a half turn: valence 1 as given, so the half turn counts as 6
+  assert(c.joined(2, 3, true) == 4);    // two half turns cancel: 2 + 6
+  c.join(4, 5, c.joined(4, 5, false));  // two +90 degree cones: valence 2 at 5, 4 regular
+  assert(c.valence[5] == 2 && c.valence[4] == 4 && c.joined(1, 5, false) == 0);   // a third one: valence 1
+  c.join(1, 2, c.joined(1, 2, false));  // the half turn took valence 6 and the +90 degree cone: 5, no longer either
+  assert(c.valence[2] == 5 && c.either[2] == 0 && c.joined(2, 6, false) == 6);
+  std::printf("cone merging: joined valences as the rotation sums give them (half turns 2 or 6)\n");
+}
+
 static void test_joined_cone_pairs()
 {
   const char* f = "directional/dragon-param-full-seamless.obj";
@@ -1119,7 +1151,8 @@ static void test_joined_cone_pairs()
               "%zu negative, %zu zero-area (%zu forced)\n", f, r0.flips_after_repair, r0.degenerate_after_repair,
               r1.merged_cone_pairs.size(), r1.joined_cone_pairs, r1.flips_after_repair, r1.degenerate_after_repair,
               r1.folds_forced);
-  assert(r0.status == SS::SUCCESS && r1.status == SS::SUCCESS);
+  check_untangled(m1, uv1, r1, true, f);
+  assert(r0.status == SS::SUCCESS);
   assert(SS::is_exact_integer_grid_map(m1, uv1) && r1.cones_on_integer_points_after == r1.field_cones);
   assert(r1.joined_cone_pairs > 0 && r1.joined_cone_pairs < r1.merged_cone_pairs.size());
   assert(r1.field_cones + 2 * r1.merged_cone_pairs.size() - r1.joined_cone_pairs == r0.field_cones);
@@ -1257,6 +1290,7 @@ int main(int argc, char** argv)
   test_untangling_parts();
   test_untangling_analytic();
   test_untangling_data();
+  test_cone_valences();
   test_joined_cone_pairs();
   test_invalid();
   test_cycles();

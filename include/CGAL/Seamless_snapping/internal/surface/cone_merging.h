@@ -29,9 +29,12 @@
 // around them locally injective. Cancelling pairs (K_A + K_B = 0 mod 4) are merged first, each cone at most once.
 // Then any other pair is joined the same way: A becomes a regular point and B takes both indices (K_A + K_B around
 // it: two +90 degree cones make a cone of valence 2, two -90 degree ones of valence 6), as long as B's valence in
-// the quad mesh stays at least 2 (valence 4 - index; a valence-1 point has no quad mesh); B may take further cones.
-// The map around A is then free to open up: on the dragon (full-seamless) 170 pairs merged, 74 of them joined, leave
-// 1 negative and 16 zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only). A path
+// the quad mesh stays at least 2 (valence 4 - index; a valence-1 point has no quad mesh; a half-turn cone counts as
+// valence 2 or 6, whichever allows the join, see Cone_valences); B may take further cones. The map around A is then
+// free to open up: on the dragon (full-seamless) 177 pairs merged, 80 of them joined, leave no negative and 10
+// zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only), at 5 points where three
+// +90 degree cones (or four -90 degree ones) lie: no joining gives them a quad mesh vertex (valence 1, or 8 where the
+// rotations cancel), only moving one of them off the point would (cone_separation.h does not find that move). A path
 // may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
 // one through the mesh: cut_edges_to_add() finds its edges, the snap makes them cut edges (rotation 0, the input's
 // UVs continuous there) before its rows are built, and the merge then runs along them.
@@ -63,6 +66,45 @@ struct Cone_merge
   int b_valence = 4;                  // b's valence in the quad mesh afterwards (4: a regular point; a is one)
 };
 
+// Per vertex, its valence in the quad mesh (4 - the cone's index): rotation sum K = 1 -> 5, K = 3 -> 3 (the angle sum
+// is K quarter turns modulo 4), K = 2 -> 2 or 6. The UV angle sum picks one for K = 2, but next to fold-overs it is meaningless (the dragon's half-turn cones
+// have angle sums of -2 and 5 quarter turns), so a half-turn cone that no merge has touched yet may take the other
+// when only that makes a join possible (`either`): a +90 degree cone (valence 3) and a half-turn cone join into a
+// valence-5 point with valence 6 for it, never into valence 1.
+struct Cone_valences
+{
+  std::vector<int> valence;
+  std::vector<char> either;
+
+  Cone_valences(const std::vector<int>& K, const std::vector<int>& quarter_turns)
+    : valence(K.size(), 4), either(K.size(), 0)
+  {
+    for(std::size_t v = 0; v < K.size(); ++v) {
+      if(K[v] == 0) continue;
+      valence[v] = K[v] == 1 ? 5 : K[v] == 3 ? 3 : (quarter_turns[v] >= 6 ? 6 : 2);
+      either[v] = K[v] == 2;
+    }
+  }
+  // the valence of the point that a and b joined make (valence_a + valence_b - 4, the given valences first, then the
+  // other of a half-turn cone's two): at least 2 (no quad mesh has a vertex of valence 1 or 0) and 4 exactly when
+  // their rotations cancel (a point where they compose to the identity is a regular one); 0 if no choice gives one
+  int joined(int a, int b, bool cancelling) const
+  {
+    const int va = valence[std::size_t(a)], vb = valence[std::size_t(b)];
+    const int other_a = either[std::size_t(a)] ? 8 - va : va, other_b = either[std::size_t(b)] ? 8 - vb : vb;
+    for(int sum : {va + vb, other_a + vb, va + other_b, other_a + other_b})
+      if(sum - 4 >= 2 && cancelling == (sum - 4 == 4)) return sum - 4;
+    return 0;
+  }
+  // a regular point now, b the joined one
+  void join(int a, int b, int joined_valence)
+  {
+    valence[std::size_t(b)] = joined_valence;
+    valence[std::size_t(a)] = 4;
+    either[std::size_t(a)] = either[std::size_t(b)] = 0;
+  }
+};
+
 // p -> R^k p + t on an integer point
 inline void apply_transition(int k, const long* t, long p[2])
 {
@@ -87,15 +129,14 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
 // every vertex of it within `reach` of that point; empty if none. Other cones on the point may lie on the path (the
 // changes then keep their rotation about that point); cones elsewhere may not. `corner_of`: first_corners();
 // `reached_from`: per vertex, the mark of the search that reached it last (-1: none; no clearing between searches with
-// different marks): `mark`, or a if mark < 0 (one search per cone). With `valence` (per vertex, its valence in the
-// quad mesh): only partners b whose merged point would have a valence of at least 2 (valence[a] + valence[b] - 4),
-// and 4 exactly when their rotations cancel (a point whose rotations compose to the identity is a regular one).
+// different marks): `mark`, or a if mark < 0 (one search per cone). With `valences`: only partners b that
+// Cone_valences::joined() lets a join (a quad mesh vertex of valence 2 or more, 4 exactly when the rotations cancel).
 inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
                                     const std::vector<char>& taken, const std::vector<int>& corner_of, int a,
                                     double reach, bool cut_edges_only, std::vector<int>& reached_from,
                                     bool cancelling_only = true, int mark = -1,
-                                    const std::vector<int>* valence = nullptr)
+                                    const Cone_valences* valences = nullptr)
 {
   if(mark < 0) mark = a;
   struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
@@ -133,8 +174,7 @@ inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& 
       if(!integer_cone_point(cm, st, rot, t, s.h, q) || q[0] != s.p[0] || q[1] != s.p[1])
         continue;                                    // a cone elsewhere: the path does not pass through it
       const bool cancelling = (K[std::size_t(a)] + K[std::size_t(w)]) % 4 == 0;
-      const int joined = valence == nullptr ? 0 : (*valence)[std::size_t(a)] + (*valence)[std::size_t(w)] - 4;
-      const bool no_quad_vertex = valence != nullptr && (joined < 2 || cancelling != (joined == 4));
+      const bool no_quad_vertex = valences != nullptr && valences->joined(a, w, cancelling) == 0;
       if(taken[std::size_t(w)] || (cancelling_only && !cancelling) || no_quad_vertex) {
         push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
         continue;
@@ -160,9 +200,7 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
                                                           bool cut_edges_only = true)
 {
   std::vector<int> K = field_rotation_sums(cm, st, rot);     // merged cones become 0: later paths pass them
-  std::vector<int> valence(K.size(), 4);                     // in the quad mesh: 4 - the cone's index
-  for(std::size_t v = 0; v < K.size(); ++v)                  // K = 2: a half turn either way, the UV angle sum says which
-    if(K[v] != 0) valence[v] = K[v] == 1 ? 3 : K[v] == 3 ? 5 : (st.quarter_turns[v] >= 6 ? 6 : 2);
+  Cone_valences valences(K, st.quarter_turns);
   std::vector<char> taken(std::size_t(cm.n_vertices), 0);
   std::vector<int> reached_from(std::size_t(cm.n_vertices), -1);
   const std::vector<int> corner_of = first_corners(cm);
@@ -171,14 +209,13 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
   for(int a = 0; a < cm.n_vertices; ++a) {
     if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
     Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, reached_from,
-                                     pass == 0, pass == 0 ? -1 : a + cm.n_vertices, pass == 0 ? nullptr : &valence);
+                                     pass == 0, pass == 0 ? -1 : a + cm.n_vertices, pass == 0 ? nullptr : &valences);
     if(m.path.empty()) continue;
     const int dk = (4 - K[std::size_t(a)]) % 4;
     K[std::size_t(m.b)] = (K[std::size_t(m.a)] + K[std::size_t(m.b)]) % 4;
     K[std::size_t(m.a)] = 0;
-    m.b_valence = K[std::size_t(m.b)] == 0 ? 4 : valence[std::size_t(m.a)] + valence[std::size_t(m.b)] - 4;
-    valence[std::size_t(m.b)] = m.b_valence;
-    valence[std::size_t(m.a)] = 4;
+    m.b_valence = K[std::size_t(m.b)] == 0 ? 4 : valences.joined(m.a, m.b, false);
+    valences.join(m.a, m.b, m.b_valence);
     taken[std::size_t(m.a)] = 1;
     taken[std::size_t(m.b)] = K[std::size_t(m.b)] == 0;    // a cone that took another's index may take more
     long p[2];

@@ -603,7 +603,8 @@ std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
 template <class TriangleMesh>
 std::vector<int> target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
 {
-  std::vector<int> valence = vertex_valences(S.cm, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
+  std::vector<int> valence = vertex_valences(S.cm, field_rotation_sums(S.cm, S.st, S.rot), S.st.quarter_turns,
+                                             input_positive_faces(S), S.points, fc.halfedge);
   for(std::size_t v = 0; v < S.merged_valence.size(); ++v) if(S.merged_valence[v] != 0) valence[v] = S.merged_valence[v];
   return valence;
 }

@@ -14,10 +14,13 @@
 // interior vertex can wind around it twice (an angle sum of 8 quarter turns at a regular vertex, a branch
 // point) or too little (1 instead of 5 at a cone), and the map is then not locally injective there
 // although no triangle is flipped. The angle sum of a vertex, in quarter turns, is fixed modulo 4 by the
-// seam rotations around it (a fold-over changes it by a multiple of 4); its *valence* is the member of that
-// class the map should have: the input's own angle sum where the input has no non-positive triangle at the
-// vertex; next to fold-overs, 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6 for
-// class 2 (2 where the 3D angle sum is below 2 pi, a convex corner, else 6; 2 without 3D positions).
+// seam rotations around it (a fold-over changes it by a multiple of 4): it is K modulo 4, K the sum of the
+// rotations of the cut edges around it (field_rotation_sums()). Its *valence* is the member of that class the
+// map should have: the input's own angle sum where the input has no non-positive triangle at the vertex and its
+// angle sum is in the class; else 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6
+// for class 2 (2 where the 3D angle sum is below 2 pi, a convex corner, else 6; 2 without 3D positions). The
+// input's angle sum leaves the class where its UV triangles are degenerate (an angle of 0 or pi is a guess) and
+// where merged cone pairs changed the rotations (cone_merging.h).
 // The angle sums of a map are counted exactly where the exact sign tests of quad_valences.h decide them
 // (every corner of a positive or negative triangle), else rounded from floating-point angles.
 
@@ -121,19 +124,24 @@ inline int vertex_quarter_turns_at(const Corner_mesh& cm, const Seam_topology& s
   return turns;
 }
 
-inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& turns, const std::vector<char>& input_positive,
-                                        const std::vector<double>& points, const std::vector<std::array<int, 3> >& face_halfedges)
+// per vertex, its valence (see the header); `K`: per vertex, its class (field_rotation_sums(), -1 on the border);
+// `turns`: the input's angle sums
+inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& K, const std::vector<int>& turns,
+                                        const std::vector<char>& input_positive, const std::vector<double>& points,
+                                        const std::vector<std::array<int, 3> >& face_halfedges)
 {
-  std::vector<char> folded(std::size_t(cm.n_vertices), 0);
+  std::vector<char> from_class(std::size_t(cm.n_vertices), 0);   // 1: the valence follows from the class alone
   for(std::size_t f = 0; f < face_halfedges.size(); ++f)
-    if(!input_positive[f]) for(int h : face_halfedges[f]) folded[std::size_t(cm.target[h])] = 1;
-  // the 3D angle sums, only at the vertices of class 2 next to fold-overs
+    if(!input_positive[f]) for(int h : face_halfedges[f]) from_class[std::size_t(cm.target[h])] = 1;
+  for(std::size_t v = 0; v < from_class.size(); ++v)
+    if(turns[v] <= 0 || ((turns[v] - K[v]) % 4 + 4) % 4 != 0) from_class[v] = 1;
+  // the 3D angle sums, only at the vertices of class 2 whose valence follows from the class
   std::vector<double> angle3(std::size_t(cm.n_vertices), 0.);
   if(!points.empty())
     for(const std::array<int, 3>& h : face_halfedges)
       for(int m = 0; m < 3; ++m) {
         const std::size_t q = std::size_t(cm.target[h[std::size_t(m)]]);
-        if(!folded[q] || ((turns[q] % 4) + 4) % 4 != 2) continue;
+        if(!from_class[q] || K[q] != 2) continue;
         const std::size_t a = std::size_t(cm.target[h[std::size_t((m + 1) % 3)]]), b = std::size_t(cm.target[h[std::size_t((m + 2) % 3)]]);
         double e1[3], e2[3], dot = 0, l1 = 0, l2 = 0;
         for(int c = 0; c < 3; ++c) {
@@ -145,10 +153,10 @@ inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector
       }
   std::vector<int> valence(std::size_t(cm.n_vertices), 4);
   for(int v = 0; v < cm.n_vertices; ++v) {
-    if(cm.vertex_on_border[std::size_t(v)]) continue;
-    if(!folded[std::size_t(v)] && turns[std::size_t(v)] > 0) { valence[std::size_t(v)] = turns[std::size_t(v)]; continue; }
-    const int k = ((turns[std::size_t(v)] % 4) + 4) % 4;
-    valence[std::size_t(v)] = k == 0 ? 4 : k == 1 ? 5 : k == 3 ? 3 : (points.empty() || angle3[std::size_t(v)] < 2 * std::acos(-1.) ? 2 : 6);
+    const std::size_t i = std::size_t(v);
+    if(cm.vertex_on_border[i]) continue;
+    if(!from_class[i]) { valence[i] = turns[i]; continue; }
+    valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (points.empty() || angle3[i] < 2 * std::acos(-1.) ? 2 : 6);
   }
   return valence;
 }
