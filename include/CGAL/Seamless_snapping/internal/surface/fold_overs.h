@@ -18,6 +18,7 @@
 // (collinear) corners, the limit of a thin positively oriented triangle, collapsed onto their longest
 // side (quad/collapsed_faces.h); not those with two corners at one UV point.
 
+#include <CGAL/Seamless_snapping/internal/io/name_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -43,14 +44,10 @@ struct Fold_overs
   // "N fold-overs (faces a b c ...) and M zero-area UV triangles (faces ...)", at most 10 faces each
   std::string describe() const
   {
-    auto list = [](const std::vector<int>& f) {
-      std::string s;
-      for(std::size_t i = 0; i < f.size() && i < 10; ++i) s += (i ? " " : "") + std::to_string(f[i]);
-      return s + (f.size() > 10 ? " ..." : "");
-    };
+    auto list = [](const std::vector<int>& f) { return first_ten(f, [](int i) { return std::to_string(i); }); };
     return std::to_string(negative.size()) + " fold-overs (negatively oriented UV triangles" +
-           (negative.empty() ? "" : ": faces " + list(negative)) + ") and " + std::to_string(degenerate.size()) +
-           " zero-area UV triangles" + (degenerate.empty() ? "" : " (faces " + list(degenerate) + ")");
+           (negative.empty() ? "" : ": faces" + list(negative)) + ") and " + std::to_string(degenerate.size()) +
+           " zero-area UV triangles" + (degenerate.empty() ? "" : " (faces" + list(degenerate) + ")");
   }
 };
 

@@ -38,6 +38,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/io/name_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_separation.h>
 #include <CGAL/Seamless_snapping/internal/surface/connection_constraints.h>
@@ -626,23 +627,6 @@ inline std::vector<int> non_positive_faces(const std::vector<signed char>& o)
   std::vector<int> faces;
   for(std::size_t f = 0; f < o.size(); ++f) if(o[f] != CGAL::POSITIVE) faces.push_back(int(f));
   return faces;
-}
-
-// " n_0 n_1 ... n_9 ...": the names of the first ten items, " ..." if there are more (report messages)
-template <class T, class Name>
-std::string first_ten(const std::vector<T>& items, Name name)
-{
-  std::string s;
-  for(std::size_t i = 0; i < items.size() && i < 10; ++i) s += " " + name(items[i]);
-  return items.size() > 10 ? s + " ..." : s;
-}
-
-// names a vertex pair "a<separator>b"
-inline auto pair_name(const char* separator)
-{
-  return [separator](const std::pair<std::size_t, std::size_t>& p) {
-    return std::to_string(p.first) + separator + std::to_string(p.second);
-  };
 }
 
 // 4b. untangling (beyond the paper: Sec. 5.4 and 7 repair only what the snap introduces): the faces of
