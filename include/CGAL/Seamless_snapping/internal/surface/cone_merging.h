@@ -124,71 +124,95 @@ inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const C
   }
 }
 
-// The shortest path of cut edges (of any edges: cut_edges_only = false) from field cone a to a field cone b with
-// K[a] + K[b] = 0 mod 4 (any b: cancelling_only = false) that the rounded transitions carry onto a's integer point,
-// every vertex of it within `reach` of that point; empty if none. Other cones on the point may lie on the path (the
-// changes then keep their rotation about that point); cones elsewhere may not. `corner_of`: first_corners();
-// `reached_from`: per vertex, the mark of the search that reached it last (-1: none; no clearing between searches with
-// different marks): `mark`, or a if mark < 0 (one search per cone). With `valences`: only partners b that
-// Cone_valences::joined() lets a join (a quad mesh vertex of valence 2 or more, 4 exactly when the rotations cancel).
-inline Cone_merge find_cone_partner(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K,
-                                    const std::vector<char>& taken, const std::vector<int>& corner_of, int a,
-                                    double reach, bool cut_edges_only, std::vector<int>& reached_from,
-                                    bool cancelling_only = true, int mark = -1,
-                                    const Cone_valences* valences = nullptr)
+// The search for a field cone's partner: what it reads (the cut graph, the rotations and rounded integer translations,
+// which merges change between searches, the input UVs `ubar` in grid units, the field's rotation sums K) and, per
+// vertex, the mark of the search that reached it last (-1: none; no clearing between searches with different marks)
+struct Cone_partner_search
 {
-  if(mark < 0) mark = a;
-  struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
-  std::vector<State> states;
-  auto seen = [&](int v) { return reached_from[std::size_t(v)] == mark; };
-  reached_from[std::size_t(a)] = mark;
-  // every cut halfedge leaving target(g_in) (except the one back along g_in), with a's point p carried from the
-  // chart of face(g_in) to the chart of its face
-  auto push_from = [&](int g_in, const long p[2], bool back_allowed, int parent) {
-    int g = g_in;
-    do {
-      const int out = cm.next[g];
-      if((!cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
-         !seen(cm.target[out])) {
-        State s{out, {p[0], p[1]}, parent};
-        carry_around(cm, st, rot, t, g_in, out, s.p);
-        states.push_back(s);
-      }
-      g = cm.opp[out];
-    } while(g != g_in);
+  const Corner_mesh& cm;
+  const Seam_topology& st;
+  const Cut_rotations& rot;
+  const std::vector<long>& t;
+  const std::vector<double>& ubar;
+  const std::vector<int>& K;
+  const std::vector<int> corner_of;                 // first_corners()
+  std::vector<int> reached_from;
+
+  Cone_partner_search(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                      const std::vector<long>& t, const std::vector<double>& ubar, const std::vector<int>& K)
+    : cm(cm), st(st), rot(rot), t(t), ubar(ubar), K(K), corner_of(first_corners(cm)),
+      reached_from(std::size_t(cm.n_vertices), -1)
+  {}
+
+  // What a search asks for: paths of cut edges only or of any edges, partners b with K[a] + K[b] = 0 mod 4 only or
+  // any; with `valences`, only partners that Cone_valences::joined() lets a join (a quad mesh vertex of valence 2 or
+  // more, 4 exactly when the rotations cancel); never a `taken` one (nullptr: none is)
+  struct Query
+  {
+    double reach;
+    bool cut_edges_only = true;
+    bool cancelling_only = true;
+    const std::vector<char>* taken = nullptr;
+    const Cone_valences* valences = nullptr;
   };
-  long pa[2];
-  const int ga = corner_of[std::size_t(a)];
-  if(!integer_cone_point(cm, st, rot, t, ga, pa)) return Cone_merge();
-  push_from(ga, pa, true, -1);
-  for(std::size_t i = 0; i < states.size(); ++i) {
-    const State s = states[i];
-    const int w = cm.target[s.h];
-    if(seen(w) || cm.vertex_on_border[w]) continue;
-    reached_from[std::size_t(w)] = mark;
-    const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
-    if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > reach) continue;
-    if(K[std::size_t(w)] > 0) {
-      long q[2];
-      if(!integer_cone_point(cm, st, rot, t, s.h, q) || q[0] != s.p[0] || q[1] != s.p[1])
-        continue;                                    // a cone elsewhere: the path does not pass through it
-      const bool cancelling = (K[std::size_t(a)] + K[std::size_t(w)]) % 4 == 0;
-      const bool no_quad_vertex = valences != nullptr && valences->joined(a, w, cancelling) == 0;
-      if(taken[std::size_t(w)] || (cancelling_only && !cancelling) || no_quad_vertex) {
-        push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
-        continue;
+
+  // The shortest path (of the kind q asks for) from field cone a to a partner b that the rounded transitions carry
+  // onto a's integer point, every vertex of it within q.reach of that point; empty if none. Other cones on the
+  // point may lie on the path (the changes then keep their rotation about that point); cones elsewhere may not.
+  // `mark`: the search's mark in reached_from (one per search).
+  Cone_merge find(int a, int mark, const Query& q)
+  {
+    struct State { int h; long p[2]; int parent; };   // p: a's point in the chart of face(h), h arriving at target(h)
+    std::vector<State> states;
+    auto seen = [&](int v) { return reached_from[std::size_t(v)] == mark; };
+    reached_from[std::size_t(a)] = mark;
+    // every cut halfedge leaving target(g_in) (except the one back along g_in), with a's point p carried from the
+    // chart of face(g_in) to the chart of its face
+    auto push_from = [&](int g_in, const long p[2], bool back_allowed, int parent) {
+      int g = g_in;
+      do {
+        const int out = cm.next[g];
+        if((!q.cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
+           !seen(cm.target[out])) {
+          State s{out, {p[0], p[1]}, parent};
+          carry_around(cm, st, rot, t, g_in, out, s.p);
+          states.push_back(s);
+        }
+        g = cm.opp[out];
+      } while(g != g_in);
+    };
+    long pa[2];
+    const int ga = corner_of[std::size_t(a)];
+    if(!integer_cone_point(cm, st, rot, t, ga, pa)) return Cone_merge();
+    push_from(ga, pa, true, -1);
+    for(std::size_t i = 0; i < states.size(); ++i) {
+      const State s = states[i];
+      const int w = cm.target[s.h];
+      if(seen(w) || cm.vertex_on_border[w]) continue;
+      reached_from[std::size_t(w)] = mark;
+      const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
+      if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > q.reach) continue;
+      if(K[std::size_t(w)] > 0) {
+        long pw[2];
+        if(!integer_cone_point(cm, st, rot, t, s.h, pw) || pw[0] != s.p[0] || pw[1] != s.p[1])
+          continue;                                    // a cone elsewhere: the path does not pass through it
+        const bool cancelling = (K[std::size_t(a)] + K[std::size_t(w)]) % 4 == 0;
+        const bool no_quad_vertex = q.valences != nullptr && q.valences->joined(a, w, cancelling) == 0;
+        if((q.taken != nullptr && (*q.taken)[std::size_t(w)]) || (q.cancelling_only && !cancelling) || no_quad_vertex) {
+          push_from(s.h, s.p, false, int(i));          // a cone on the point: the path may pass it
+          continue;
+        }
+        Cone_merge m;
+        m.a = a; m.b = w;
+        for(int j = int(i); j >= 0; j = states[std::size_t(j)].parent) m.path.push_back(states[std::size_t(j)].h);
+        std::reverse(m.path.begin(), m.path.end());
+        return m;
       }
-      Cone_merge m;
-      m.a = a; m.b = w;
-      for(int j = int(i); j >= 0; j = states[std::size_t(j)].parent) m.path.push_back(states[std::size_t(j)].h);
-      std::reverse(m.path.begin(), m.path.end());
-      return m;
+      push_from(s.h, s.p, false, int(i));
     }
-    push_from(s.h, s.p, false, int(i));
+    return Cone_merge();
   }
-  return Cone_merge();
-}
+};
 
 // Merges the collapsed cone pairs (see the header comment): changes rot.k and the integer translations t of
 // round_translations() along each path. `ubar` in grid units. Returns the merges, in order of the first cone.
@@ -202,14 +226,13 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
   std::vector<int> K = field_rotation_sums(cm, st, rot);     // merged cones become 0: later paths pass them
   Cone_valences valences(K, st.quarter_turns);
   std::vector<char> taken(std::size_t(cm.n_vertices), 0);
-  std::vector<int> reached_from(std::size_t(cm.n_vertices), -1);
-  const std::vector<int> corner_of = first_corners(cm);
+  Cone_partner_search search(cm, st, rot, t, ubar, K);
   std::vector<Cone_merge> merges;
   for(int pass = 0; pass < 2; ++pass)                        // cancelling pairs first, then any pair (see the header)
   for(int a = 0; a < cm.n_vertices; ++a) {
     if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
-    Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, cut_edges_only, reached_from,
-                                     pass == 0, pass == 0 ? -1 : a + cm.n_vertices, pass == 0 ? nullptr : &valences);
+    Cone_partner_search::Query q{reach, cut_edges_only, pass == 0, &taken, pass == 0 ? nullptr : &valences};
+    Cone_merge m = search.find(a, pass * cm.n_vertices + a, q);
     if(m.path.empty()) continue;
     const int dk = (4 - K[std::size_t(a)]) % 4;
     K[std::size_t(m.b)] = (K[std::size_t(m.a)] + K[std::size_t(m.b)]) % 4;
@@ -219,7 +242,7 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
     taken[std::size_t(m.a)] = 1;
     taken[std::size_t(m.b)] = K[std::size_t(m.b)] == 0;    // a cone that took another's index may take more
     long p[2];
-    integer_cone_point(cm, st, rot, t, cm.prev[m.path.front()], p);   // checked by find_cone_partner
+    integer_cone_point(cm, st, rot, t, cm.prev[m.path.front()], p);   // checked by the search
     for(std::size_t i = 0; i < m.path.size(); ++i) {
       const int h = m.path[i];
       if(i > 0) carry_around(cm, st, rot, t, m.path[i - 1], h, p);

@@ -14,7 +14,7 @@
 //
 // Where the rounded translations put two cones A and B of the field onto one integer point p (cone_merging.h says
 // why no locally injective map then exists), the field is kept and the rounding is changed instead: along the
-// shortest path of cut edges h_1 .. h_m from A to B near p (find_cone_partner(), any indices), the side of the path
+// shortest path of cut edges h_1 .. h_m from A to B near p (Cone_partner_search::find(), any indices), the side of the path
 // on the left of it (the faces of the h_i) is moved by an integer vector e relative to the right side. In the chart
 // of face(h_i), e_i is e carried around the path's vertices on the left side (rotations only), and
 //   t'(h_i) = t(h_i) - R^{k(h_i)} e_i          (the transition h_i now maps p - e_i where it mapped p).
@@ -109,17 +109,16 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
 {
   static const long shifts[8][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}, {2, 0}, {-2, 0}, {0, 2}, {0, -2}};
   const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  std::vector<char> taken(std::size_t(cm.n_vertices), 0), none(std::size_t(cm.n_vertices), 0);
-  std::vector<int> reached_from(std::size_t(cm.n_vertices), -1), marks(std::size_t(cm.n_vertices), -1);
-  int mark = 0;                                        // of the searches in `marks`
-  const std::vector<int> corner_of = first_corners(cm);
+  std::vector<char> taken(std::size_t(cm.n_vertices), 0);
+  Cone_partner_search search(cm, st, rot, t, ubar, K), check(cm, st, rot, t, ubar, K);
+  int mark = 0;                                        // of the searches of `check`
   std::vector<Cone_separation> out;
   auto input_point = [&](int h, double x[2]) {       // the input UV of target(h) in the chart of face(h)
     x[0] = ubar[2 * std::size_t(st.sector_of[h])]; x[1] = ubar[2 * std::size_t(st.sector_of[h]) + 1];
   };
   for(int a = 0; a < cm.n_vertices; ++a) {
     if(K[std::size_t(a)] <= 0 || taken[std::size_t(a)] || st.cut_degree[a] == 0) continue;
-    const Cone_merge m = find_cone_partner(cm, st, rot, t, ubar, K, taken, corner_of, a, reach, true, reached_from, false);
+    const Cone_merge m = search.find(a, a, Cone_partner_search::Query{reach, true, false, &taken, nullptr});
     if(m.path.empty()) continue;
     double xa[2], xb[2];
     input_point(cm.prev[m.path.front()], xa);
@@ -132,7 +131,7 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
       long qa[2], qb[2];
       bool ok = separated(cm, st, rot, t, m.path, qa, qb);
       for(int c : {m.a, m.b})                          // neither cone now on the point of another one near it (any edges)
-        ok = ok && find_cone_partner(cm, st, rot, t, ubar, K, none, corner_of, c, reach, false, marks, false, mark++).path.empty();
+        ok = ok && check.find(c, mark++, Cone_partner_search::Query{reach, false, false, nullptr, nullptr}).path.empty();
       shift_left_side(cm, st, rot, m.path, undo, t);
       if(!ok) continue;
       double d = 0;
