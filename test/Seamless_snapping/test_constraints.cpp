@@ -1137,6 +1137,19 @@ static void test_cone_valences()
   std::printf("cone merging: joined valences as the rotation sums give them (half turns 2 or 6)\n");
 }
 
+// Target_valences (vertex_windings.h): a cone whose index the input does not fix accepts every member of its
+// class of at least 2 (a half turn: 2, 6, 10; never 1 for a -90 degree cone); the others only their valence
+static void test_target_valences()
+{
+  namespace SI = CGAL::Seamless_snapping::internal;
+  const SI::Target_valences t{{2, 2, 5, 4, 0}, {1, 0, 1, 0, 0}};
+  assert(!t.wound(0, 2) && !t.wound(0, 6) && !t.wound(0, 10) && t.wound(0, -2) && t.wound(0, 4) && t.wound(0, 3));
+  assert(!t.wound(1, 2) && t.wound(1, 6));                               // fixed by the input
+  assert(!t.wound(2, 5) && !t.wound(2, 9) && t.wound(2, 1) && t.wound(2, 3));   // valence 1: no quad vertex
+  assert(!t.wound(3, 4) && t.wound(3, 8) && !t.wound(4, 7));              // a branch point; no target
+  std::printf("untangling: target valences accept the other members of an unfixed cone's class from 2 on\n");
+}
+
 static void test_joined_cone_pairs()
 {
   const char* f = "directional/dragon-param-full-seamless.obj";
@@ -1291,6 +1304,7 @@ int main(int argc, char** argv)
   test_untangling_analytic();
   test_untangling_data();
   test_cone_valences();
+  test_target_valences();
   test_joined_cone_pairs();
   test_invalid();
   test_cycles();

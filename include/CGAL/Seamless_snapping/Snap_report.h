@@ -77,7 +77,7 @@ struct Winding_defect
 {
   std::size_t vertex = 0;               ///< index of the vertex in `vertices(tm)` order
   int angle_sum = 0;                    ///< its UV angle sum in quarter turns (counted exactly where exact sign tests decide it)
-  int valence = 4;                      ///< the angle sum a locally injective map has there
+  int valence = 4;                      ///< the angle sum a locally injective map has there (at a cone whose index the input does not fix, e.g. inside its fold-overs, and at a joined cone, every other member of its class modulo 4 of at least 2 is accepted too and not reported)
   std::string message;                  ///< in words; names a cone pair rounded onto one integer point nearby, if any
 };
 

@@ -600,14 +600,19 @@ std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
 }
 
 // per vertex: the angle sum in quarter turns a locally injective map has there (vertex_windings.h); at the cones of
-// merged pairs, the valence the merge gave them (4: a regular point of the field)
+// merged pairs, the valence the merge gave them (4: a regular point of the field; at a joined cone any other member
+// of its class of at least 2 as well)
 template <class TriangleMesh>
-std::vector<int> target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
+Target_valences target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
 {
-  std::vector<int> valence = vertex_valences(S.cm, field_rotation_sums(S.cm, S.st, S.rot), S.st.quarter_turns,
-                                             input_positive_faces(S), S.points, fc.halfedge);
-  for(std::size_t v = 0; v < S.merged_valence.size(); ++v) if(S.merged_valence[v] != 0) valence[v] = S.merged_valence[v];
-  return valence;
+  Target_valences target = vertex_valences(S.cm, field_rotation_sums(S.cm, S.st, S.rot), S.st.quarter_turns,
+                                           input_positive_faces(S), S.points, fc.halfedge);
+  for(std::size_t v = 0; v < S.merged_valence.size(); ++v)
+    if(S.merged_valence[v] != 0) {
+      target.valence[v] = S.merged_valence[v];
+      target.any_in_class[v] = S.merged_valence[v] != 4;
+    }
+  return target;
 }
 
 // face_orientations() of S.x (exact), computed again only when S.x changed since the last call
@@ -647,23 +652,24 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   report.snap_rms_change = snap.rms;
   if(!opt.untangle) return SUCCESS;
   const Face_corners fc(S.cm);
-  std::vector<int> valence = target_valences(S, fc);
+  Target_valences target = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
+  auto wound_at = [&](int v) { return target.wound(std::size_t(v), turns[std::size_t(v)]); };
   std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
   for(std::size_t f = 0; f < fc.halfedge.size(); ++f)
     for(int h : fc.halfedge[f])
-      if(turns[std::size_t(S.cm.target[h])] != valence[std::size_t(S.cm.target[h])]) from_3d[f] = 1;
+      if(wound_at(S.cm.target[h])) from_3d[f] = 1;
   // the windings within 2 face rings of a cone pair that the integer translations collapse onto one point
   // (found from the wrongly wound vertices and those of non-positive faces) are not targets: no move
   // separates the cones (winding_defects.h)
   std::size_t wound = 0;
   if(opt.integer_grid_map) {
     std::vector<int> seeds;
-    for(int v = 0; v < S.cm.n_vertices; ++v) if(turns[std::size_t(v)] != valence[std::size_t(v)]) seeds.push_back(v);
+    for(int v = 0; v < S.cm.n_vertices; ++v) if(wound_at(v)) seeds.push_back(v);
     for(int f : non_positive_faces(orientations_of_x(S))) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
-    for(int v : vertices_near_collapsed_cones(S.cm, S.st, S.rot, fc, S.x, seeds, 2)) valence[std::size_t(v)] = 0;
+    for(int v : vertices_near_collapsed_cones(S.cm, S.st, S.rot, fc, S.x, seeds, 2)) target.valence[std::size_t(v)] = 0;
   }
-  for(int v = 0; v < S.cm.n_vertices; ++v) wound += (turns[std::size_t(v)] != valence[std::size_t(v)] && valence[std::size_t(v)] != 0) ? 1 : 0;
+  for(int v = 0; v < S.cm.n_vertices; ++v) wound += wound_at(v) ? 1 : 0;
   if(snapped.negative + snapped.degenerate + wound == 0) return SUCCESS;
   const Snap_clock::time_point t = Snap_clock::now();
   report.untangled = true;
@@ -672,7 +678,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
   for(const Fold_explanation& e : prover.explain(non_positive_faces(orientations_of_x(S)), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
   const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points, from_3d);
-  Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded, valence);
+  Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded, target);
   std::vector<double> y = S.x;
   Untangle_statistics stats;
   Status s = untangler.run(y, Untangle_options(), stats, message);
@@ -755,7 +761,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const std::vector<int> faces = non_positive_faces(orientations_of_x(S));
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
-  const std::vector<int> valence = target_valences(S, fc);
+  const Target_valences target = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
@@ -768,11 +774,11 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     }
   };
   for(int v = 0; v < S.cm.n_vertices; ++v) {
-    if(turns[std::size_t(v)] == valence[std::size_t(v)]) continue;
+    if(!target.wound(std::size_t(v), turns[std::size_t(v)])) continue;
     Winding_defect d;
     d.vertex = std::size_t(v);
     d.angle_sum = turns[std::size_t(v)];
-    d.valence = valence[std::size_t(v)];
+    d.valence = target.valence[std::size_t(v)];
     d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
                 " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
     name_collapsed_pairs(v, d.message);

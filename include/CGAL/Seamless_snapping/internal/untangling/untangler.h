@@ -120,11 +120,11 @@ struct Untangle_statistics
 class Untangler
 {
 public:
-  // `valence`: per vertex the angle sum (quarter turns) a locally injective map has there (vertex_windings.h);
-  // 0 where the untangling should not try to reach it
+  // `target`: per vertex the angle sums (quarter turns) a locally injective map has there (vertex_windings.h);
+  // valence 0 where the untangling should not try to reach it
   Untangler(const Corner_mesh& cm, const Seam_topology& st, const Constraint_rows& rows, const Face_corners& fc,
-            const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded, const std::vector<int>& valence)
-    : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded), valence_(valence),
+            const std::vector<Reference_triangle>& refs, const std::vector<char>& excluded, const Target_valences& target)
+    : cm_(cm), st_(st), rows_(rows), fc_(fc), refs_(refs), excluded_(excluded), target_(target),
       incidence_(rows, 2 * std::size_t(st.n_sectors))
   {}
 
@@ -179,7 +179,7 @@ private:
     if(!(face_det(int(f), x) > 0)) return NON_POSITIVE;
     for(int h : fc_.halfedge[f]) {
       const std::size_t v = std::size_t(cm_.target[h]);
-      if(turns[v] != valence_[v] && valence_[v] != 0) return WOUND;
+      if(target_.wound(v, turns[v])) return WOUND;
     }
     return GOOD;
   }
@@ -430,7 +430,7 @@ private:
   const Face_corners& fc_;
   const std::vector<Reference_triangle>& refs_;
   const std::vector<char>& excluded_;
-  const std::vector<int>& valence_;
+  const Target_valences& target_;
   Variable_rows incidence_;
   double budget_ = 0;                                          // face evaluations of step 1 (run())
 };

@@ -20,7 +20,9 @@
 // angle sum is in the class; else 4 at a regular vertex, 5 and 3 at the cones of classes 1 and 3, and 2 or 6
 // for class 2 (2 where the 3D angle sum is below 2 pi, a convex corner, else 6; 2 without 3D positions). The
 // input's angle sum leaves the class where its UV triangles are degenerate (an angle of 0 or pi is a guess) and
-// where merged cone pairs changed the rotations (cone_merging.h).
+// where merged cone pairs changed the rotations (cone_merging.h). Where the class alone gives the valence of a
+// cone (the input does not fix its index) and at joined cones, any other member of the class of at least 2 is a
+// valid quad vertex too and is accepted (Target_valences): the field's rotations cannot tell a 2 from a 6.
 // The angle sums of a map are counted exactly where the exact sign tests of quad_valences.h decide them
 // (every corner of a positive or negative triangle), else rounded from floating-point angles.
 
@@ -124,9 +126,25 @@ inline int vertex_quarter_turns_at(const Corner_mesh& cm, const Seam_topology& s
   return turns;
 }
 
+// The valences the untangling aims at and the report checks: per vertex `valence` (0: none); where `any_in_class`
+// is set, every member of its class of at least 2 is accepted as well (see the header)
+struct Target_valences
+{
+  std::vector<int> valence;
+  std::vector<char> any_in_class;
+
+  // the map winds `turns` quarter turns around v, which it should not
+  bool wound(std::size_t v, int turns) const
+  {
+    const int q = valence[v];
+    if(q == 0 || turns == q) return false;
+    return !(any_in_class[v] && turns >= 2 && (turns - q) % 4 == 0);
+  }
+};
+
 // per vertex, its valence (see the header); `K`: per vertex, its class (field_rotation_sums(), -1 on the border);
 // `turns`: the input's angle sums
-inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector<int>& K, const std::vector<int>& turns,
+inline Target_valences vertex_valences(const Corner_mesh& cm, const std::vector<int>& K, const std::vector<int>& turns,
                                         const std::vector<char>& input_positive, const std::vector<double>& points,
                                         const std::vector<std::array<int, 3> >& face_halfedges)
 {
@@ -151,14 +169,15 @@ inline std::vector<int> vertex_valences(const Corner_mesh& cm, const std::vector
         }
         if(l1 > 0 && l2 > 0) angle3[q] += std::acos((std::max)(-1., (std::min)(1., dot / std::sqrt(l1 * l2))));
       }
-  std::vector<int> valence(std::size_t(cm.n_vertices), 4);
+  Target_valences target{std::vector<int>(std::size_t(cm.n_vertices), 4), std::vector<char>(std::size_t(cm.n_vertices), 0)};
   for(int v = 0; v < cm.n_vertices; ++v) {
     const std::size_t i = std::size_t(v);
     if(cm.vertex_on_border[i]) continue;
-    if(!from_class[i]) { valence[i] = turns[i]; continue; }
-    valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (points.empty() || angle3[i] < 2 * std::acos(-1.) ? 2 : 6);
+    if(!from_class[i]) { target.valence[i] = turns[i]; continue; }
+    target.valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (points.empty() || angle3[i] < 2 * std::acos(-1.) ? 2 : 6);
+    target.any_in_class[i] = K[i] != 0;
   }
-  return valence;
+  return target;
 }
 
 } // namespace internal
