@@ -67,10 +67,10 @@ struct Cone_merge
 };
 
 // Per vertex, its valence in the quad mesh (4 - the cone's index): rotation sum K = 1 -> 5, K = 3 -> 3 (the angle sum
-// is K quarter turns modulo 4), K = 2 -> 2 or 6. The UV angle sum picks one for K = 2, but next to fold-overs it is meaningless (the dragon's half-turn cones
-// have angle sums of -2 and 5 quarter turns), so a half-turn cone that no merge has touched yet may take the other
-// when only that makes a join possible (`either`): a +90 degree cone (valence 3) and a half-turn cone join into a
-// valence-5 point with valence 6 for it, never into valence 1.
+// is K quarter turns modulo 4), K = 2 -> 2 or 6. The UV angle sum picks one for K = 2, but next to fold-overs it is
+// meaningless (the dragon's half-turn cones have angle sums of -2 and 5 quarter turns), so a half-turn cone that no
+// merge has touched yet may take the other when only that makes a join possible (`either`): a +90 degree cone
+// (valence 3) and a half-turn cone join into a valence-5 point with valence 6 for it, never into valence 1.
 struct Cone_valences
 {
   std::vector<int> valence;

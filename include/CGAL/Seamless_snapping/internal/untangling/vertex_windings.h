@@ -169,12 +169,14 @@ inline Target_valences vertex_valences(const Corner_mesh& cm, const std::vector<
         }
         if(l1 > 0 && l2 > 0) angle3[q] += std::acos((std::max)(-1., (std::min)(1., dot / std::sqrt(l1 * l2))));
       }
-  Target_valences target{std::vector<int>(std::size_t(cm.n_vertices), 4), std::vector<char>(std::size_t(cm.n_vertices), 0)};
+  const std::size_t n = std::size_t(cm.n_vertices);
+  Target_valences target{std::vector<int>(n, 4), std::vector<char>(n, 0)};
   for(int v = 0; v < cm.n_vertices; ++v) {
     const std::size_t i = std::size_t(v);
     if(cm.vertex_on_border[i]) continue;
     if(!from_class[i]) { target.valence[i] = turns[i]; continue; }
-    target.valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (points.empty() || angle3[i] < 2 * std::acos(-1.) ? 2 : 6);
+    const bool convex = points.empty() || angle3[i] < 2 * std::acos(-1.);   // class 2: 2 if convex, else 6
+    target.valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (convex ? 2 : 6);
     target.any_in_class[i] = K[i] != 0;
   }
   return target;
