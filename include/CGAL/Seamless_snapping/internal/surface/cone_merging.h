@@ -41,6 +41,7 @@
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
@@ -80,8 +81,7 @@ struct Cone_valences
     : valence(K.size(), 4), either(K.size(), 0)
   {
     for(std::size_t v = 0; v < K.size(); ++v) {
-      if(K[v] == 0) continue;
-      valence[v] = K[v] == 1 ? 5 : K[v] == 3 ? 3 : (quarter_turns[v] >= 6 ? 6 : 2);
+      valence[v] = valence_of_rotation_sum(K[v], quarter_turns[v] >= 6);
       either[v] = K[v] == 2;
     }
   }

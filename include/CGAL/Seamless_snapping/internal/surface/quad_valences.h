@@ -50,6 +50,14 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// The valence nearest 4 of a quad vertex whose field rotations sum to K quarter turns (mod 4, field_rotation_sums()):
+// its angle sum is K quarter turns modulo 4, so 4, 5 (a -90 degree cone), 3 (a +90 degree one), and for a half turn
+// 2 or 6 (`six`), which the rotations cannot tell apart
+inline int valence_of_rotation_sum(int K, bool six)
+{
+  return K == 0 ? 4 : K == 1 ? 5 : K == 3 ? 3 : (six ? 6 : 2);
+}
+
 struct Quad_valence_result
 {
   std::vector<int> valence;          // per vertex (Corner_mesh numbering)

@@ -176,7 +176,7 @@ inline Target_valences vertex_valences(const Corner_mesh& cm, const std::vector<
     if(cm.vertex_on_border[i]) continue;
     if(!from_class[i]) { target.valence[i] = turns[i]; continue; }
     const bool convex = points.empty() || angle3[i] < 2 * std::acos(-1.);   // class 2: 2 if convex, else 6
-    target.valence[i] = K[i] == 0 ? 4 : K[i] == 1 ? 5 : K[i] == 3 ? 3 : (convex ? 2 : 6);
+    target.valence[i] = valence_of_rotation_sum(K[i], !convex);
     target.any_in_class[i] = K[i] != 0;
   }
   return target;
