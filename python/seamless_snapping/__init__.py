@@ -117,7 +117,9 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     them are such 90/-90 degree pairs). `separate_cone_pairs=True` (with `integer_grid_map`) moves two cones that
     the rounded translations put onto one integer point apart instead, where a cut within two grid cells of it joins
     them: the integer translations along that cut change so that each cone lands on a neighbouring integer point
-    (report["separated_cone_pairs"]); the field is kept. A 90 and a -90 degree cone move as one: merge those.
+    (report["separated_cone_pairs"]); the field is kept. Where fold-overs are left near a pair, its other ways apart
+    are tried, one more snap each (report["separation_trials"]), and the one with the fewest defects near it is kept.
+    A 90 and a -90 degree cone move as one: merge those.
     """
     if untangle is None:
         untangle = integer_grid_map

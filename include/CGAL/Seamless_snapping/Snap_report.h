@@ -156,6 +156,7 @@ struct Snap_report
   std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
   std::vector<std::pair<std::size_t, std::size_t> > separated_cone_pairs; ///< `separate_cone_pairs`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, moved apart (each cone onto a neighbouring integer point); counted in `field_cones`
   std::size_t separated_cut_edges = 0;         ///< `separate_cone_pairs`: cut edges whose integer translation changed to separate them
+  std::size_t separation_trials = 0;           ///< `separate_cone_pairs` with `untangle`: extra snaps made to choose the shifts of the separated pairs with defects near them (each pair's shifts tried; 0 when none is left with defects); their time is in `total_ms` only
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
@@ -243,7 +244,7 @@ struct Snap_report
     vertex_pairs("collapsed_cone_pairs", collapsed_cone_pairs);
     num("cancelling_collapsed_cone_pairs", double(cancelling_collapsed_cone_pairs));
     vertex_pairs("separated_cone_pairs", separated_cone_pairs);
-    num("separated_cut_edges", double(separated_cut_edges));
+    num("separated_cut_edges", double(separated_cut_edges)); num("separation_trials", double(separation_trials));
     num("merged_cut_edges", double(merged_cut_edges)); num("joined_cone_pairs", double(joined_cone_pairs)); num("added_cut_edges", double(added_cut_edges));
     num("pinned_sectors", double(pinned_sectors));
     o << "  \"untangle\": " << (untangle ? "true" : "false") << ",\n";

@@ -307,7 +307,12 @@ namespace Seamless_snapping {
  *                           path on its left moves by an integer vector relative to the other (the integer translation of
  *                           every cut edge of the path changes; every other vertex of it keeps the identity), chosen among
  *                           those that put each cone on a neighbouring integer point, on no other cone's point near it, nearest its
- *                           input position (beyond the paper: a local re-rounding; the field and its cones are kept). The
+ *                           input position (beyond the paper: a local re-rounding; the field and its cones are kept). With
+ *                           `untangle` (the default here), a pair that keeps fold-overs within three face rings tries its
+ *                           other admissible vectors, one more snap each (`Snap_report::separation_trials`), and keeps the
+ *                           one with the fewest defects near it (all pairs' choices then snapped together, used only if
+ *                           that has fewer defects in all): where the input puts the cones exactly onto one point, every
+ *                           vector is as near to it, and they differ in what the untangling can reach. The
  *                           pairs are listed in `Snap_report::separated_cone_pairs`; the untangling then moves the map to
  *                           the new transitions, by up to about a grid cell near the pair. Pairs that no such cut path
  *                           joins are kept (and reported in `Snap_report::collapsed_cone_pairs` where defects are left), and

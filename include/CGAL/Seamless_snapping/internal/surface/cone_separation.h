@@ -23,7 +23,8 @@
 // shifts e in {(+-1, +-1), (+-2, 0), (0, +-2)} (one of them moves a 90 or 180 degree cone to a neighbouring integer
 // point), those that leave every cone of the path on an integer point, A and B on different points and neither on the
 // point of another cone that a path of edges (cut or not) near it reaches are tried, and the one that puts A and B
-// nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties. The
+// nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties (or,
+// with `rank`, the one the caller ranks: the pipeline tries them, choose_separations()). The
 // untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
 // collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
 // moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt,
@@ -51,6 +52,8 @@ struct Cone_separation
   int a = -1, b = -1;                 // the cones (vertices)
   std::vector<int> path;              // cut halfedges from a to b
   long shift[2] = {0, 0};             // e, in the chart of face(path.front())
+  int admissible = 0;                 // the number of shifts that separate the pair (see the header comment)
+  int rank = 0;                       // the chosen shift's position among them
 };
 
 // The vector e (chart of face(h_in), h_in: target v) carried around v on the side of face(h_in) to the chart of
@@ -101,11 +104,14 @@ inline bool separated(const Corner_mesh& cm, const Seam_topology& st, const Cut_
 }
 
 // Separates the collapsed cone pairs (see the header comment): changes the integer translations t of
-// round_translations() (after merging, if any) along each path. `ubar` in grid units. Returns the separations, in
-// order of the first cone; each cone is in at most one.
+// round_translations() (after merging, if any) along each path. `ubar` in grid units. `rank` (empty, or per vertex):
+// for the pair whose first cone is a, the rank[a]-th shift that separates it (0 = the first in the order above) if
+// there are that many, else (and for rank[a] < 0) the one nearest to the input. Returns the separations, in order of
+// the first cone; each cone is in at most one.
 inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_mesh& cm, const Seam_topology& st,
                                                                   const Cut_rotations& rot, std::vector<long>& t,
-                                                                  const std::vector<double>& ubar, double reach)
+                                                                  const std::vector<double>& ubar, double reach,
+                                                                  const std::vector<int>& rank = std::vector<int>())
 {
   static const long shifts[8][2] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}, {2, 0}, {-2, 0}, {0, 2}, {0, -2}};
   const std::vector<int> K = field_rotation_sums(cm, st, rot);
@@ -124,7 +130,8 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
     input_point(cm.prev[m.path.front()], xa);
     input_point(m.path.back(), xb);
     double best = 0;
-    int chosen = -1;
+    int chosen = -1, admissible = 0, chosen_rank = 0;
+    const int wanted = rank.empty() ? -1 : rank[std::size_t(a)];
     for(int s = 0; s < 8; ++s) {                       // each shift applied to t and undone (t is additive in e)
       const long undo[2] = {-shifts[s][0], -shifts[s][1]};
       shift_left_side(cm, st, rot, m.path, shifts[s], t);
@@ -136,7 +143,9 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
       if(!ok) continue;
       double d = 0;
       for(int c = 0; c < 2; ++c) d += (double(qa[c]) - xa[c]) * (double(qa[c]) - xa[c]) + (double(qb[c]) - xb[c]) * (double(qb[c]) - xb[c]);
-      if(chosen < 0 || d < best) { best = d; chosen = s; }
+      if(admissible == wanted) { best = -1; chosen = s; chosen_rank = admissible; }
+      else if(best >= 0 && (chosen < 0 || d < best)) { best = d; chosen = s; chosen_rank = admissible; }
+      ++admissible;
     }
     if(chosen < 0) continue;
     shift_left_side(cm, st, rot, m.path, shifts[chosen], t);
@@ -144,6 +153,8 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
     Cone_separation sep;
     sep.a = m.a; sep.b = m.b; sep.path = m.path;
     sep.shift[0] = shifts[chosen][0]; sep.shift[1] = shifts[chosen][1];
+    sep.admissible = admissible;
+    sep.rank = chosen_rank;
     out.push_back(sep);
   }
   return out;

@@ -106,21 +106,14 @@ inline std::vector<std::pair<int, int> > coincident_cones_near(const Corner_mesh
   return pairs;
 }
 
-// The vertices within `rings` face rings of the cones of the collapsed cone pairs found around `seeds`
-inline std::vector<int> vertices_near_collapsed_cones(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                                      const Face_corners& fc, const std::vector<double>& x,
-                                                      std::vector<int> seeds, int rings)
+// The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring)
+inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const Face_corners& fc, const std::vector<int>& seeds,
+                                                   int rings)
 {
-  std::sort(seeds.begin(), seeds.end());
-  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   std::vector<char> near(std::size_t(cm.n_vertices), 0);
-  std::vector<int> front;
-  const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  for(int v : seeds)
-    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, x, v, coincident_cone_rings))
-      for(int w : {c.first, c.second})
-        if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; front.push_back(w); }
-  std::vector<int> out = front;
+  std::vector<int> out;
+  for(int w : seeds)
+    if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; out.push_back(w); }
   for(int r = 0; r < rings; ++r) {
     std::vector<int> next;
     for(const std::array<int, 3>& h : fc.halfedge) {
@@ -134,6 +127,21 @@ inline std::vector<int> vertices_near_collapsed_cones(const Corner_mesh& cm, con
     if(next.empty()) break;
   }
   return out;
+}
+
+// The vertices within `rings` face rings of the cones of the collapsed cone pairs found around `seeds`
+inline std::vector<int> vertices_near_collapsed_cones(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                                      const Face_corners& fc, const std::vector<double>& x,
+                                                      std::vector<int> seeds, int rings)
+{
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  std::vector<int> cones;
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  for(int v : seeds)
+    for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, fc, x, v, coincident_cone_rings))
+      for(int w : {c.first, c.second}) cones.push_back(w);
+  return vertices_within_face_rings(cm, fc, cones, rings);
 }
 
 } // namespace internal
