@@ -14,6 +14,7 @@ import shutil
 import subprocess
 import sys
 
+from cut_mesh import write_cut_mesh
 from fold_over_grid import write_fold_over_grid
 
 exe, src, work = sys.argv[1:4]
@@ -32,20 +33,9 @@ def records(path, kind):
 
 
 # a cut mesh made from the input: one 'v' per 'vt' (vertices duplicated along the seams), as libigl/Directional write
-v, vt, faces = records(src, "v"), records(src, "vt"), records(src, "f")
 cut = os.path.join(work, "cut.obj")
-pos = [None] * len(vt)
-for f in faces:
-    for c in f:
-        a, b = (int(x) for x in c.split("/")[:2])
-        pos[b - 1] = v[a - 1]
-with open(cut, "w") as o:
-    for p in pos:
-        o.write("v %s\n" % " ".join(p))
-    for t in vt:
-        o.write("vt %s\n" % " ".join(t))
-    for f in faces:
-        o.write("f %s\n" % " ".join("%s/%s" % (c.split("/")[1], c.split("/")[1]) for c in f))
+write_cut_mesh(src, cut)
+pos, vt, faces = records(cut, "v"), records(cut, "vt"), records(src, "f")
 
 failures = []
 checks = [0]

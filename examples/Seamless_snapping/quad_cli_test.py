@@ -1,6 +1,7 @@
 """CTest test of the seamless_quad command line: the quad mesh of CGAL's bear with an Orbifold Tutte
 Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here from the files (every face a quad,
-every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area); refusals with
+every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area), and from it as a cut
+mesh (welded automatically; refused with --no-weld); refusals with
 exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
 a grid scale that is not a power of two; command-line errors (exit 2). With the shared data directory (optional
@@ -13,6 +14,7 @@ import shutil
 import subprocess
 import sys
 
+from cut_mesh import write_cut_mesh
 from fold_over_grid import write_fold_over_grid
 
 exe, parallelogram, square, work = sys.argv[1:5]
@@ -74,6 +76,22 @@ for ext in ["obj", "off", "ply"]:
         check(all(p in header for p in ["input_kind", "input_face", "grid_u", "grid_v", "input_faces"]),
               "ply: the origin properties are written")
 
+# 1b. the same map as a cut mesh (vertices duplicated along the seams, as Directional writes): welded automatically,
+# the same quad mesh; refused with --no-weld (its seams would be borders), nothing written
+cut = os.path.join(work, "bear_cut.obj")
+write_cut_mesh(parallelogram, cut)
+out = os.path.join(work, "bear_cut_quads.obj")
+rc, text = run(cut, out, "--grid-scale", "4")
+check(rc == 0 and "welded automatically" in text and os.path.exists(out) and
+      [n if i == 0 else len(n) for i, n in enumerate(faces_of(out))] ==
+      [n if i == 0 else len(n) for i, n in enumerate(faces_of(os.path.join(work, "bear_quads.obj")))],
+      "cut mesh: welded automatically, the same quad mesh: %d %s" % (rc, text))
+out = os.path.join(work, "bear_cut_noweld.obj")
+rc, text = run(cut, out, "--grid-scale", "4", "--no-weld")
+check(rc == 1 and "cut mesh" in text and not os.path.exists(out), "cut mesh with --no-weld: refused: %d %s" % (rc, text))
+rc, text = run(cut, out, "--weld", "--no-weld")
+check(rc == 2, "--weld with --no-weld: a command-line error: %d" % rc)
+
 # 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
 folds = os.path.join(work, "folds.obj")
 write_fold_over_grid(folds)
@@ -122,7 +140,7 @@ check(rc == 2 and ".obj, .off or .ply" in text, "unknown output format: %d %s" %
 rc, text = run(parallelogram)
 check(rc == 2, "missing OUT: %d" % rc)
 rc, text = run("--help")
-for opt in ["--weld", "--grid-scale", "--no-untangle", "--keep-cone-pairs", "--report", "--quiet", "--help"]:
+for opt in ["--weld", "--no-weld", "--grid-scale", "--no-untangle", "--keep-cone-pairs", "--report", "--quiet", "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
 for f in failures:

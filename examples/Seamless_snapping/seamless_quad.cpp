@@ -1,6 +1,6 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
-//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
+//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
 //                 [--report FILE.json] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
@@ -44,7 +45,7 @@ using SS::IO::internal::json_string;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
-  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
+  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
   "                     [--report FILE.json] [--quiet]\n";
 
 static const char* help_text =
@@ -69,7 +70,9 @@ static const char* help_text =
   "\n"
   "Options:\n"
   "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
-  "                       libigl/Directional output, whose seams are otherwise borders)\n"
+  "                       libigl/Directional output, whose seams are otherwise borders). Such an input\n"
+  "                       is welded automatically (a line says so)\n"
+  "  --no-weld            never weld; a cut mesh is then refused (exit 1: its seams would be borders)\n"
   "  --grid-scale S       the integer grid is at multiples of 1/S in UV (S a power of two); larger S,\n"
   "                       finer quads (S^2 times as many)\n"
   "  --no-untangle        snap the map as it is, without removing its fold-overs (then refused if it\n"
@@ -117,12 +120,13 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
   std::string in, out, report_file;
-  bool weld = false, quiet = false, untangle = true, merge = true;
+  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
     else if(a == "--weld") weld = true;
+    else if(a == "--no-weld") no_weld = true;
     else if(a == "--quiet") quiet = true;
     else if(a == "--no-untangle") untangle = false;
     else if(a == "--keep-cone-pairs") merge = false;
@@ -143,17 +147,33 @@ int main(int argc, char** argv)
     else { std::cerr << "seamless_quad: unexpected argument '" << a << "'\n" << usage_text; return 2; }
   }
   if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
+  if(weld && no_weld) { std::cerr << "seamless_quad: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
   const std::string format = extension_of(out);
   if(format != "obj" && format != "off" && format != "ply") {
     std::cerr << "seamless_quad: OUT must end in .obj, .off or .ply\n" << usage_text; return 2;
   }
 
-  // 1. read; the corner map: uv[h] = UV of target(h) in face(h)
+  // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
   Mesh mesh;
-  UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
+  UV_map uv;
   std::string message;
-  if(SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) != SS::SUCCESS)
-    return fail("cannot read input: " + message);
+  auto read = [&]() {
+    mesh = Mesh();
+    uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
+    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) == SS::SUCCESS;
+  };
+  if(!read()) return fail("cannot read input: " + message);
+  const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
+  if(cut.is_cut_mesh() && no_weld)
+    return fail("the input looks like a cut mesh (" + std::to_string(cut.duplicated) + " of " +
+                std::to_string(cut.border_edges) + " border edges join vertices that have bit-identical copies) and "
+                "--no-weld keeps its seams as borders, which no quad mesh of the map has; nothing was written");
+  if(cut.is_cut_mesh()) {
+    weld = true;
+    if(!read()) return fail("cannot read input: " + message);
+    if(!quiet) std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges "
+                         << "join vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+  }
   if(!quiet) std::cout << message << "\n";
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)

@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/IO/VVAL.h>
 #include <CGAL/Seamless_snapping/matrices.h>
@@ -39,7 +40,6 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 
 typedef CGAL::Simple_cartesian<double>                     K;
 typedef K::Point_2                                         Point_2;
@@ -260,35 +260,6 @@ static int fail(const std::string& why)
   return EXIT_FAILURE;
 }
 
-// Border edges whose two endpoints both have a bit-identical copy elsewhere in the mesh: many of
-// them mean a cut mesh read without --weld.
-static std::size_t border_edges_with_duplicated_ends(const Mesh& m, std::size_t& border_edges)
-{
-  std::unordered_map<std::string, std::size_t> count;
-  auto key = [&](Mesh::Vertex_index v) {
-    const Point_3& p = m.point(v);
-    double xyz[3] = {p.x(), p.y(), p.z()};
-    return std::string(reinterpret_cast<const char*>(xyz), sizeof xyz);
-  };
-  for(Mesh::Vertex_index v : m.vertices()) ++count[key(v)];
-  std::size_t n = 0;
-  border_edges = 0;
-  for(Mesh::Edge_index e : m.edges()) {
-    if(!m.is_border(e)) continue;
-    ++border_edges;
-    const halfedge_descriptor h = m.halfedge(e);
-    if(count[key(m.source(h))] > 1 && count[key(m.target(h))] > 1) ++n;
-  }
-  return n;
-}
-
-// The cut-mesh test: many border edges whose two endpoints have bit-identical copies elsewhere.
-static bool looks_like_cut_mesh(const Mesh& mesh, std::size_t& dup, std::size_t& border)
-{
-  dup = border_edges_with_duplicated_ends(mesh, border);
-  return dup >= 3 && 2 * dup >= border;
-}
-
 static bool read_mesh(const std::string& in, bool weld, Mesh& mesh, UV_map& uv, std::string& message)
 {
   mesh = Mesh();
@@ -352,13 +323,13 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   std::string message;
   Clock::time_point t = Clock::now();
   if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
-  std::size_t dup = 0, border = 0;
-  const bool cut_mesh = !weld && looks_like_cut_mesh(mesh, dup, border);
+  const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
+  const bool cut_mesh = cut.is_cut_mesh();
   if(cut_mesh && !no_weld) {
     weld = true;
     if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
-    if(!quiet) std::cout << "welded automatically: " << dup << " of " << border << " border edges join vertices that "
-                         << "have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+    if(!quiet) std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges "
+                         << "join vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
   }
   if(!quiet) std::cout << message << "\n";
   R.read_ms = ms_since(t);
@@ -445,8 +416,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   if(report.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(report.status) + ": " + report.message);
   if(report.cut_edges == 0 && cut_mesh)
-    return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(dup) + " of " +
-                std::to_string(border) + " border edges join duplicated vertices) and --no-weld keeps its seams as "
+    return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(cut.duplicated) + " of " +
+                std::to_string(cut.border_edges) + " border edges join duplicated vertices) and --no-weld keeps its seams as "
                 "borders; nothing was snapped and nothing was written");
   if(fail_on_new_flips && report.flips_unrepaired + report.degenerate_unrepaired > 0)
     return fail("--fail-on-new-flips: " + std::to_string(report.flips_unrepaired) + " flipped and " +

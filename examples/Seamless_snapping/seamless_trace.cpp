@@ -1,6 +1,6 @@
 // seamless_trace: the isoline-tracing study of Sec. 6.2 (Mandad & Campen 2019) on one file.
 //
-//   seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]
+//   seamless_trace IN.obj [--weld | --no-weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]
 //
 // Reads a triangle mesh with a per-corner UV map (OBJ, f v/vt), traces the separatrices of its
 // motorcycle graph exactly (rational arithmetic) and prints how each ended: counts per reason,
@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/IO/Patch_layout.h>
 #include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
@@ -41,12 +42,13 @@ using SS::IO::internal::json_string;
 int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
-  const char* usage = "usage: seamless_trace IN.obj [--weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]\n";
+  const char* usage = "usage: seamless_trace IN.obj [--weld | --no-weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]\n";
   std::string in, json, svg, layout_obj, layout_ply;
-  bool weld = false;
+  bool weld = false, no_weld = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--weld") weld = true;
+    else if(a == "--no-weld") no_weld = true;
     else if(a == "--json" && i + 1 < argc) json = argv[++i];
     else if(a == "--svg" && i + 1 < argc) svg = argv[++i];
     else if(a == "--layout-obj" && i + 1 < argc) layout_obj = argv[++i];
@@ -55,12 +57,26 @@ int main(int argc, char** argv)
     else if(in.empty() && a[0] != '-') in = a;
     else { std::cerr << usage; return 2; }
   }
-  if(in.empty()) { std::cerr << usage; return 2; }
+  if(in.empty() || (weld && no_weld)) { std::cerr << usage; return 2; }
 
+  // a cut mesh (vertices duplicated along the seams, as libigl/Directional write them) is welded unless --no-weld
   Mesh mesh;
-  UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+  UV_map uv;
   std::string message;
-  if(SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, SS::parameters::weld_vertices(weld)) != SS::SUCCESS) {
+  auto read = [&]() {
+    mesh = Mesh();
+    uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, SS::parameters::weld_vertices(weld)) == SS::SUCCESS;
+  };
+  bool ok = read();
+  const SS::IO::Cut_mesh_test cut = weld || !ok ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
+  if(ok && cut.is_cut_mesh() && !no_weld) {
+    weld = true;
+    ok = read();
+    std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges join "
+              << "vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+  }
+  if(!ok) {
     std::cerr << "seamless_trace: " << message << std::endl;
     return EXIT_FAILURE;
   }

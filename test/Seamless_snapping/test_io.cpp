@@ -31,6 +31,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/matrices.h>
@@ -219,6 +220,7 @@ static void test_shared_data(const fs::path& tmp)
     CHECK(s == SS::SUCCESS, "read " << file << ": " << msg);
     if(s != SS::SUCCESS) continue;
     CHECK(m.is_valid(false) && CGAL::is_triangle_mesh(m), "valid triangle mesh " << file);
+    CHECK(!SS::IO::cut_mesh_test(m).is_cut_mesh(), file << ": read as the package reads it, not taken for a cut mesh");
 
     auto it = expected.find(file.filename().string());
     if(it != expected.end()) {
@@ -272,6 +274,9 @@ static void test_shared_data(const fs::path& tmp)
     Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
     CHECK(SS::IO::read_OBJ_with_corner_uvs(knight.string(), m, uv, msg) == SS::SUCCESS, msg);
     CHECK(m.number_of_vertices() == 691 && !CGAL::is_closed(m), "knight without weld: 691 vertices, open");
+    const SS::IO::Cut_mesh_test cut = SS::IO::cut_mesh_test(m);
+    CHECK(cut.is_cut_mesh() && cut.duplicated <= cut.border_edges, "knight without weld: a cut mesh (" << cut.duplicated
+          << " of " << cut.border_edges << " border edges between duplicated vertices)");
   }
 }
 
