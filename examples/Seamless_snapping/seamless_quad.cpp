@@ -165,14 +165,14 @@ int main(int argc, char** argv)
   if(!read()) return fail("cannot read input: " + message);
   const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
   if(cut.is_cut_mesh() && no_weld)
-    return fail("the input looks like a cut mesh (" + std::to_string(cut.duplicated) + " of " +
-                std::to_string(cut.border_edges) + " border edges join vertices that have bit-identical copies) and "
+    return fail("the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
+                std::to_string(cut.border_edges) + " border edges lie on another one at bit-identical 3D points) and "
                 "--no-weld keeps its seams as borders, which no quad mesh of the map has; nothing was written");
   if(cut.is_cut_mesh()) {
     weld = true;
     if(!read()) return fail("cannot read input: " + message);
-    if(!quiet) std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges "
-                         << "join vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+    if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
+                         << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }
   if(!quiet) std::cout << message << "\n";
 

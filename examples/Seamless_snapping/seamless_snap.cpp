@@ -328,8 +328,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   if(cut_mesh && !no_weld) {
     weld = true;
     if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
-    if(!quiet) std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges "
-                         << "join vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+    if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
+                         << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }
   if(!quiet) std::cout << message << "\n";
   R.read_ms = ms_since(t);
@@ -416,8 +416,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   if(report.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(report.status) + ": " + report.message);
   if(report.cut_edges == 0 && cut_mesh)
-    return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(cut.duplicated) + " of " +
-                std::to_string(cut.border_edges) + " border edges join duplicated vertices) and --no-weld keeps its seams as "
+    return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
+                std::to_string(cut.border_edges) + " border edges lie on another one at bit-identical 3D points) and --no-weld keeps its seams as "
                 "borders; nothing was snapped and nothing was written");
   if(fail_on_new_flips && report.flips_unrepaired + report.degenerate_unrepaired > 0)
     return fail("--fail-on-new-flips: " + std::to_string(report.flips_unrepaired) + " flipped and " +

@@ -73,8 +73,8 @@ int main(int argc, char** argv)
   if(ok && cut.is_cut_mesh() && !no_weld) {
     weld = true;
     ok = read();
-    std::cout << "welded automatically: " << cut.duplicated << " of " << cut.border_edges << " border edges join "
-              << "vertices that have bit-identical copies (a cut mesh; --no-weld keeps them apart)\n";
+    std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges lie on "
+              << "another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }
   if(!ok) {
     std::cerr << "seamless_trace: " << message << std::endl;

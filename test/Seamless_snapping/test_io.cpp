@@ -275,8 +275,17 @@ static void test_shared_data(const fs::path& tmp)
     CHECK(SS::IO::read_OBJ_with_corner_uvs(knight.string(), m, uv, msg) == SS::SUCCESS, msg);
     CHECK(m.number_of_vertices() == 691 && !CGAL::is_closed(m), "knight without weld: 691 vertices, open");
     const SS::IO::Cut_mesh_test cut = SS::IO::cut_mesh_test(m);
-    CHECK(cut.is_cut_mesh() && cut.duplicated <= cut.border_edges, "knight without weld: a cut mesh (" << cut.duplicated
-          << " of " << cut.border_edges << " border edges between duplicated vertices)");
+    CHECK(cut.is_cut_mesh() && cut.twinned <= cut.border_edges, "knight without weld: a cut mesh (" << cut.twinned
+          << " of " << cut.border_edges << " border edges with a twin)");
+  }
+  // a cut mesh with a real border as well: most of its border edges have no twin, the seam sides do
+  const fs::path lilium = root / "directional" / "lilium-param.obj";
+  if(fs::exists(lilium)) {
+    Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(lilium.string(), m, uv, msg) == SS::SUCCESS, msg);
+    const SS::IO::Cut_mesh_test cut = SS::IO::cut_mesh_test(m);
+    CHECK(cut.is_cut_mesh() && 2 * cut.twinned < cut.border_edges, "lilium without weld: a cut mesh with a border ("
+          << cut.twinned << " of " << cut.border_edges << " border edges with a twin)");
   }
 }
 
