@@ -1134,6 +1134,10 @@ static void test_cone_valences()
   assert(c.valence[5] == 2 && c.valence[4] == 4 && c.joined(1, 5, false) == 0);   // a third one: valence 1
   c.join(1, 2, c.joined(1, 2, false));  // the half turn took valence 6 and the +90 degree cone: 5, no longer either
   assert(c.valence[2] == 5 && c.either[2] == 0 && c.joined(2, 6, false) == 6);
+  SI::Cone_valences d({1, 1, 1, 1}, {5, 5, 5, 5});   // four -90 degree cones on one point: two valence-6 points, then 8
+  d.join(0, 1, d.joined(0, 1, false));
+  d.join(2, 3, d.joined(2, 3, false));
+  assert(d.valence[1] == 6 && d.valence[3] == 6 && d.joined(1, 3, true) == 8 && d.joined(1, 3, false) == 0);
   std::printf("cone merging: joined valences as the rotation sums give them (half turns 2 or 6)\n");
 }
 

@@ -288,9 +288,10 @@ namespace Seamless_snapping {
  *                           indices do not cancel are then joined the same way: the first cone becomes a regular point, the
  *                           second takes both indices (two +90 degree cones: valence 2; two -90: valence 6), never below
  *                           valence 2 (`Snap_report::joined_cone_pairs`; a half-turn cone counts as valence 2 or 6,
- *                           whichever allows the join). Three +90 degree cones on one point, or four -90 degree ones,
- *                           keep two cones there (joined, they would make valence 1, or 8 with cancelling rotations),
- *                           which the untangling cannot open (forced zero-area triangles). The pairs are
+ *                           whichever allows the join; two such joined points whose rotations cancel, four -90 degree
+ *                           cones in all, become one valence-8 point). Three +90 degree cones on one point keep two
+ *                           cones there (joined, they would make valence 1), which the untangling cannot open (forced
+ *                           zero-area triangles; `separate_cone_pairs` moves one off the point). The pairs are
  *                           listed in `Snap_report::merged_cone_pairs`, not counted in `Snap_report::field_cones`; the
  *                           result is an exact integer-grid map of the changed field (the caller's rotations change on
  *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new).}

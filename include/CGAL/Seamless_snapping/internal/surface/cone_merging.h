@@ -31,10 +31,12 @@
 // it: two +90 degree cones make a cone of valence 2, two -90 degree ones of valence 6), as long as B's valence in
 // the quad mesh stays at least 2 (valence 4 - index; a valence-1 point has no quad mesh; a half-turn cone counts as
 // valence 2 or 6, whichever allows the join, see Cone_valences); B may take further cones. The map around A is then
-// free to open up: on the dragon (full-seamless) 177 pairs merged, 80 of them joined, leave no negative and 10
-// zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only), at 5 points where three
-// +90 degree cones (or four -90 degree ones) lie: no joining gives them a quad mesh vertex (valence 1, or 8 where the
-// rotations cancel), only moving one of them off the point would (cone_separation.h does not find that move). A path
+// free to open up. Two joined cones on one point whose rotations cancel (two valence-6 points, each made of two -90
+// degree cones) join into one valence-8 point (a regular point of the field that the map winds twice around). On the
+// dragon (full-seamless) 179 pairs merged, 80 of them joined and 2 into valence-8 points, leave no negative and 8
+// zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only), at 4 points where three +90
+// degree cones lie: joined they
+// would make valence 1, so one of them has to move off the point (cone_separation.h, with its trials). A path
 // may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
 // one through the mesh: cut_edges_to_add() finds its edges, the snap makes them cut edges (rotation 0, the input's
 // UVs continuous there) before its rows are built, and the merge then runs along them.
@@ -64,7 +66,8 @@ struct Cone_merge
 {
   int a = -1, b = -1;                 // the cones (vertices), a < b not implied: a is where the path starts
   std::vector<int> path;              // its halfedges, from a to b
-  int b_valence = 4;                  // b's valence in the quad mesh afterwards (4: a regular point; a is one)
+  int b_valence = 4;                  // b's valence in the quad mesh afterwards (4: a regular point; a is one; 8: a regular
+                                      // point of the field wound twice)
 };
 
 // Per vertex, its valence in the quad mesh (4 - the cone's index): rotation sum K = 1 -> 5, K = 3 -> 3 (the angle sum
@@ -86,14 +89,15 @@ struct Cone_valences
     }
   }
   // the valence of the point that a and b joined make (valence_a + valence_b - 4, the given valences first, then the
-  // other of a half-turn cone's two): at least 2 (no quad mesh has a vertex of valence 1 or 0) and 4 exactly when
-  // their rotations cancel (a point where they compose to the identity is a regular one); 0 if no choice gives one
+  // other of a half-turn cone's two): at least 2 (no quad mesh has a vertex of valence 1 or 0) and a multiple of 4
+  // exactly when their rotations cancel (4, or 8 for two valence-6 points: a point where the rotations compose to the
+  // identity is a regular point of the field, wound once or twice); 0 if no choice gives one
   int joined(int a, int b, bool cancelling) const
   {
     const int va = valence[std::size_t(a)], vb = valence[std::size_t(b)];
     const int other_a = either[std::size_t(a)] ? 8 - va : va, other_b = either[std::size_t(b)] ? 8 - vb : vb;
     for(int sum : {va + vb, other_a + vb, va + other_b, other_a + other_b})
-      if(sum - 4 >= 2 && cancelling == (sum - 4 == 4)) return sum - 4;
+      if(sum - 4 >= 2 && cancelling == ((sum - 4) % 4 == 0)) return sum - 4;
     return 0;
   }
   // a regular point now, b the joined one
@@ -146,7 +150,7 @@ struct Cone_partner_search
 
   // What a search asks for: paths of cut edges only or of any edges, partners b with K[a] + K[b] = 0 mod 4 only or
   // any; with `valences`, only partners that Cone_valences::joined() lets a join (a quad mesh vertex of valence 2 or
-  // more, 4 exactly when the rotations cancel); never a `taken` one (nullptr: none is)
+  // more, a multiple of 4 exactly when the rotations cancel); never a `taken` one (nullptr: none is)
   struct Query
   {
     double reach;
@@ -237,7 +241,7 @@ inline std::vector<Cone_merge> merge_collapsed_cone_pairs(const Corner_mesh& cm,
     const int dk = (4 - K[std::size_t(a)]) % 4;
     K[std::size_t(m.b)] = (K[std::size_t(m.a)] + K[std::size_t(m.b)]) % 4;
     K[std::size_t(m.a)] = 0;
-    m.b_valence = K[std::size_t(m.b)] == 0 ? 4 : valences.joined(m.a, m.b, false);
+    m.b_valence = pass == 0 ? 4 : valences.joined(m.a, m.b, K[std::size_t(m.b)] == 0);
     valences.join(m.a, m.b, m.b_valence);
     taken[std::size_t(m.a)] = 1;
     taken[std::size_t(m.b)] = K[std::size_t(m.b)] == 0;    // a cone that took another's index may take more

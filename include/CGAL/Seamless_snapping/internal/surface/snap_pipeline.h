@@ -344,8 +344,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         report.merged_cut_edges += m.path.size();
         merged[m.a] = 4;
         merged[m.b] = m.b_valence;
-        report.field_cones -= m.b_valence == 4 ? 2 : 1;
-        report.joined_cone_pairs += m.b_valence == 4 ? 0 : 1;
+        report.field_cones -= m.b_valence % 4 == 0 ? 2 : 1;
+        report.joined_cone_pairs += m.b_valence % 4 == 0 ? 0 : 1;
       }
     if(opt.separate_cone_pairs) {
       moved.assign(S.cm.n_vertices, 0);
