@@ -24,8 +24,8 @@
 // point), those that leave every cone of the path on an integer point, A and B on different points and neither on the
 // point of another cone that a path of edges (cut or not) near it reaches are tried, and the one that puts A and B
 // nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties (or,
-// with `rank`, the one the caller ranks: the pipeline tries them, choose_separations()). The
-// untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
+// with `rank`, the one the caller ranks: the pipeline tries them, solve_with_separation_trials() in
+// snap_pipeline.h). The untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
 // collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
 // moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt,
 // "Separating cone pairs".

@@ -207,7 +207,7 @@ struct Snap_state
   std::vector<int> merged_valence;       // per vertex of a merged cone pair (Snap_options::merge_cone_pairs): its valence
                                          // in the quad mesh now (4: a regular point); 0 elsewhere
   std::vector<int> separation_rank;      // per vertex: the rank of the shift of the separated pair whose first cone it is
-                                         // (choose_separations()); empty: the shifts nearest to the input
+                                         // (solve_with_separation_trials()); empty: the shifts nearest to the input
   std::vector<Cone_separation> separations;   // Snap_options::separate_cone_pairs: the pairs moved apart
   std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for steps 4b, 5 and 5b
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
@@ -942,9 +942,6 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   return summary + S.flip_note + S.untangle_note;
 }
 
-// The pipeline: the stages above in order; the caller's map is written only after step 6 passed.
-// The overrides are given per edge/halfedge descriptor through callables, evaluated after the
-// corner mesh is built (they need its numbering).
 // 1b-5b: the full system, its exact solution (with the untangling and the repair) and the explanation of what is
 // left; S: the state after step 1a
 template <class TriangleMesh>
@@ -1063,6 +1060,9 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
   return SUCCESS;
 }
 
+// The pipeline: the stages above in order; the caller's map is written only after step 6 passed.
+// The overrides are given per edge/halfedge descriptor through callables, evaluated after the
+// corner mesh is built (they need its numbering).
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf, class WeightOf,
           class PointOf>
 Snap_report snap_pipeline(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& seam_of, bool has_seams,
