@@ -35,9 +35,8 @@
 // degree cones) join into one valence-8 point (a regular point of the field that the map winds twice around). On the
 // dragon (full-seamless) 179 pairs merged, 80 of them joined and 2 into valence-8 points, leave no negative and 8
 // zero-area triangles after the untangling instead of 20 and 138 (cancelling pairs only), at 4 points where three +90
-// degree cones lie: joined they
-// would make valence 1, so one of them has to move off the point (cone_separation.h, with its trials). A path
-// may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
+// degree cones lie: joined they would make valence 1, so one of them has to move off the point (cone_separation.h,
+// with its trials). A path may pass other cones on the same point (their rotation about it is kept). Pairs that no such cut path joins get
 // one through the mesh: cut_edges_to_add() finds its edges, the snap makes them cut edges (rotation 0, the input's
 // UVs continuous there) before its rows are built, and the merge then runs along them.
 

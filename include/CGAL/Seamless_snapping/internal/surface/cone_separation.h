@@ -25,9 +25,9 @@
 // point of another cone that a path of edges (cut or not) near it reaches are tried, and the one that puts A and B
 // nearest (sum of squared distances, grid units) to their input positions is kept; in the order above on ties (or,
 // with `rank`, the one the caller ranks: the pipeline tries them, solve_with_separation_trials() in
-// snap_pipeline.h). The untangling then moves the map to the new transitions. Pairs no cut path near p joins are left (and reported as
-// collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0 mod 4): the shift
-// moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt,
+// snap_pipeline.h). The untangling then moves the map to the new transitions. Pairs no cut path near p joins are left
+// (and reported as collapsed where defects remain next to them), and so are pairs whose indices cancel (K_A + K_B = 0
+// mod 4): the shift moves both cones by the same vector (merge_cone_pairs is for those). Measured effect: Seamless_snapping.txt,
 // "Separating cone pairs".
 
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
@@ -36,6 +36,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -129,9 +130,7 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
     double xa[2], xb[2];
     input_point(cm.prev[m.path.front()], xa);
     input_point(m.path.back(), xb);
-    double best = 0;
-    int chosen = -1, admissible = 0, chosen_rank = 0;
-    const int wanted = rank.empty() ? -1 : rank[std::size_t(a)];
+    std::vector<std::pair<int, double> > admissible;   // the shifts that separate the pair, with their distance d
     for(int s = 0; s < 8; ++s) {                       // each shift applied to t and undone (t is additive in e)
       const long undo[2] = {-shifts[s][0], -shifts[s][1]};
       shift_left_side(cm, st, rot, m.path, shifts[s], t);
@@ -143,17 +142,22 @@ inline std::vector<Cone_separation> separate_collapsed_cone_pairs(const Corner_m
       if(!ok) continue;
       double d = 0;
       for(int c = 0; c < 2; ++c) d += (double(qa[c]) - xa[c]) * (double(qa[c]) - xa[c]) + (double(qb[c]) - xb[c]) * (double(qb[c]) - xb[c]);
-      if(admissible == wanted) { best = -1; chosen = s; chosen_rank = admissible; }
-      else if(best >= 0 && (chosen < 0 || d < best)) { best = d; chosen = s; chosen_rank = admissible; }
-      ++admissible;
+      admissible.emplace_back(s, d);
     }
-    if(chosen < 0) continue;
+    if(admissible.empty()) continue;
+    int chosen_rank = 0;                               // the wanted rank, else the nearest (the first on ties)
+    const int wanted = rank.empty() ? -1 : rank[std::size_t(a)];
+    if(wanted >= 0 && wanted < int(admissible.size())) chosen_rank = wanted;
+    else
+      for(int r = 1; r < int(admissible.size()); ++r)
+        if(admissible[std::size_t(r)].second < admissible[std::size_t(chosen_rank)].second) chosen_rank = r;
+    const int chosen = admissible[std::size_t(chosen_rank)].first;
     shift_left_side(cm, st, rot, m.path, shifts[chosen], t);
     taken[std::size_t(m.a)] = taken[std::size_t(m.b)] = 1;
     Cone_separation sep;
     sep.a = m.a; sep.b = m.b; sep.path = m.path;
     sep.shift[0] = shifts[chosen][0]; sep.shift[1] = shifts[chosen][1];
-    sep.admissible = admissible;
+    sep.admissible = int(admissible.size());
     sep.rank = chosen_rank;
     out.push_back(sep);
   }

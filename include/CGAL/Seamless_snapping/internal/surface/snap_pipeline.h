@@ -972,19 +972,25 @@ Status solve_stages(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_r
 // how far (face rings) around a separated cone pair solve_with_separation_trials() counts defects
 constexpr int separation_trial_rings = 3;
 
-// the defects of a snap within separation_trial_rings face rings of the cones of c: the vertices of faces left not
-// positive (a fold-over near the pair) and the other vertices wound other than their valence
-struct Defects_near { std::size_t folded = 0, wound = 0; std::size_t score() const { return 2 * folded + wound; } };
-
+// per vertex, what a snap left there: 2 on a face not positive (a fold-over), else 1 if wound other than its valence
 template <class TriangleMesh>
-Defects_near defects_near(const Snap_state<TriangleMesh>& S, const Snap_report& report, const Face_corners& fc,
-                          const Cone_separation& c)
+std::vector<char> defect_marks(const Snap_state<TriangleMesh>& S, const Snap_report& report, const Face_corners& fc)
 {
   std::vector<char> bad(std::size_t(S.cm.n_vertices), 0);
   for(const Winding_defect& d : report.winding_defects) bad[d.vertex] = 1;
   for(const Fold_explanation& e : report.folds) for(int h : fc.halfedge[e.face]) bad[std::size_t(S.cm.target[h])] = 2;
+  return bad;
+}
+
+// the defect_marks() within separation_trial_rings face rings of the cones of c: the vertices on faces left not
+// positive (a fold-over near the pair) and the other vertices wound other than their valence
+struct Defects_near { std::size_t folded = 0, wound = 0; std::size_t score() const { return 2 * folded + wound; } };
+
+inline Defects_near defects_near(const Corner_mesh& cm, const Face_corners& fc, const std::vector<char>& bad,
+                                 const Cone_separation& c)
+{
   Defects_near n;
-  for(int v : vertices_within_face_rings(S.cm, fc, {c.a, c.b}, separation_trial_rings)) {
+  for(int v : vertices_within_face_rings(cm, fc, {c.a, c.b}, separation_trial_rings)) {
     n.folded += bad[std::size_t(v)] == 2 ? 1 : 0;
     n.wound += bad[std::size_t(v)] == 1 ? 1 : 0;
   }
@@ -1017,9 +1023,10 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
                                                             // rank, Defects_near::score()
   std::vector<int> rank(std::size_t(S.cm.n_vertices), -1), first_rank = rank;
   int ranks = 0;
+  const std::vector<char> first_bad = defect_marks(S, report, fc);
   for(const Cone_separation& c : S.separations) {
     first_rank[std::size_t(c.a)] = c.rank;
-    const Defects_near n = defects_near(S, report, fc, c);
+    const Defects_near n = defects_near(S.cm, fc, first_bad, c);
     if(n.folded == 0 || c.admissible < 2) continue;
     defects[c.a].assign(std::size_t(c.admissible), std::numeric_limits<std::size_t>::max());
     defects[c.a][std::size_t(c.rank)] = n.score();
@@ -1044,9 +1051,10 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
       new_shift = new_shift || rank[std::size_t(d.first)] != first_rank[std::size_t(d.first)];
     }
     if(!new_shift || !snap_with(rank, trial, T, R)) continue;
+    const std::vector<char> bad = defect_marks(T, R, fc);
     for(const Cone_separation& c : T.separations) {
       auto d = defects.find(c.a);
-      if(d != defects.end() && c.rank == r) d->second[std::size_t(r)] = defects_near(T, R, fc, c).score();
+      if(d != defects.end() && c.rank == r) d->second[std::size_t(r)] = defects_near(T.cm, fc, bad, c).score();
     }
   }
   bool changed = false;
