@@ -299,7 +299,8 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
 }
 
 // --untangle: instead, the untangling (untangle(true)) per model, in the default mode and in integer-grid mode, and
-// in integer-grid mode with merge_cone_pairs(true) (row "IGM+m", printed where pairs were merged):
+// in integer-grid mode with merge_cone_pairs(true) (row "IGM+m", printed where pairs were merged), with
+// separate_cone_pairs(true) (row "IGM+s", printed where pairs were separated) and with both (row "IGM+ms", likewise):
 // UV triangles negative / zero in the input, after the snap alone, after untangling (floating point), at the end
 // (after its exact snap and the repair); of those at the end, how many are proven forced; vertices left not locally
 // injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
@@ -315,25 +316,27 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
     Mesh input;
     UV_map uv_in;
     if(!read_model(p, input, uv_in, failures)) continue;
-    for(int mode = 0; mode < 3; ++mode) {
-      const bool igm = mode > 0, merge = mode == 2;
-      const char* mode_name = mode == 0 ? "def" : mode == 1 ? "IGM" : "IGM+m";
+    for(int mode = 0; mode < 5; ++mode) {
+      const bool igm = mode > 0, merge = mode == 2 || mode == 4, separate = mode >= 3;
+      const char* const mode_names[5] = {"def", "IGM", "IGM+m", "IGM+s", "IGM+ms"};
+      const char* mode_name = mode_names[mode];
       SS::Snap_report alone, best;
       Mesh out;
       for(int r = 0; r < repeat; ++r) {
         Mesh m0 = input;
         UV_map uv0 = m0.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
         const SS::Snap_report a = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(igm).untangle(false)
-                                                                               .merge_cone_pairs(merge));
+                                                                               .merge_cone_pairs(merge).separate_cone_pairs(separate));
         Mesh m = input;
         UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
         const SS::Snap_report b = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(igm).untangle(true)
-                                                                             .merge_cone_pairs(merge));
+                                                                             .merge_cone_pairs(merge).separate_cone_pairs(separate));
         if(r == 0 || a.total_ms < alone.total_ms) alone = a;
         if(r == 0 || b.total_ms < best.total_ms) { best = b; out = m; }
       }
       const std::string name = p.filename().string();
-      if(merge && best.merged_cone_pairs.empty()) continue;          // the IGM row again
+      if(mode == 2 && best.merged_cone_pairs.empty()) continue;      // the IGM row again
+      if(separate && best.separated_cone_pairs.empty()) continue;   // the IGM or IGM+m row again
       if(best.status != SS::SUCCESS) {
         std::printf("%-34s %5s %7zu | %s: %.120s\n", name.c_str(), mode_name, best.faces, SS::status_name(best.status),
                     best.message.c_str());
@@ -347,14 +350,15 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
       auto counts = [](std::size_t n, std::size_t z) { return std::to_string(n) + "/" + std::to_string(z); };
       const std::string change = best.untangled ? (std::to_string(best.untangle_max_change * best.grid_scale).substr(0, 6) + " / " +
                                                    std::to_string(best.untangle_rms_change * best.grid_scale).substr(0, 6)) : "-";
-      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s\n",
+      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s%s\n",
                   name.c_str(), mode_name, best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
                   counts(alone.flips_after_repair, alone.degenerate_after_repair).c_str(),
                   counts(best.flips_after_untangling, best.degenerate_after_untangling).c_str(),
                   counts(best.flips_after_repair, best.degenerate_after_repair).c_str(), best.folds_forced,
                   best.winding_defects.size(), at_pairs, best.untangle_rings, best.untangle_moved_sectors, change.c_str(),
                   alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms,
-                  alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO");
+                  alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO",
+                  best.separation_trials > 0 ? (", " + std::to_string(best.separation_trials) + " trials").c_str() : "");
     }
   }
   std::printf("\ncolumns: negative/zero-area UV triangles (exact test): input, after the snap alone (untangle(false), with its\n"
@@ -364,7 +368,9 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
               "integer rounding collapsed onto one point; rings = largest k of the regions; max/RMS cells = the change beyond\n"
               "the snap (grid cells: UV units at grid scale 1); snap max = the snap alone's max change; times in ms (min over\n"
               "--repeat runs); ratio = (untangling + snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
-              "(the collapsed cone pairs made regular points of the field), where it merged pairs.\n");
+              "(the collapsed cone pairs made regular points of the field), where it merged pairs; IGM+s: with\n"
+              "separate_cone_pairs(true) (the collapsed pairs moved apart, the field kept), where it separated pairs, with the\n"
+              "extra snaps that chose the shifts (trials; their time is in unt.+snap); IGM+ms: both.\n");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
