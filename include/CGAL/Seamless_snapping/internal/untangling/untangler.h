@@ -35,8 +35,8 @@
 // 2. Minimal-change polish. The eps continuation lets the regions drift (eps ~ 1 favours other shapes
 //    than the references), so every region made fold-free is then pulled back towards the exact snap of
 //    the input: minimize sum_l (x_l - target_l)^2 / h^2 + lambda sum area f_eps(J) / mean area, with a tiny
-//    eps (a barrier: f grows like 1 / det J), lambda = 1e-3, over the moved vertices and 2 rings around
-//    them, each independent part of that region set on its own (independent_parts.h: its own steps and
+//    eps (a barrier: f grows like 1 / det J), lambda = 1e-3, over the moved vertices and 1 ring around
+//    them (Untangle_options::polish_rings), each independent part of that region set on its own (independent_parts.h: its own steps and
 //    stopping test; the 302K-face bunny's polish 2.0 -> 1.2 s in one run), by Newton steps whose line search never lets a
 //    face go below det J = polish_min_det (Smith and
 //    Schaefer's flip-free step bound, shifted): every iterate stays fold-free, and the change shrinks to
@@ -88,7 +88,17 @@ struct Untangle_options
   double sigma_min = 0.3;                     // floor of sigma in the eps update (the paper: 0.1; 0.3 halves the Newton
                                               // steps on the shared maps with as good or better results, bench_snap --untangle)
   bool polish = true;                         // step 2
-  int polish_rings = 2;
+  int polish_rings = 1;                       // rings of vertices around the moved ones that the polish may move too. Against
+                                              // 2 (the 5 folded maps of ../shared/data x {--untangle, IGM, IGM with pairs merged /
+                                              // separated / both}, seamless_snap reports, one run each): the same fold-overs,
+                                              // zero-area triangles and wound vertices, max / RMS change equal to 3 digits
+                                              // (duck_miq_8's max 0.2229 -> 0.2223 cells), 10-31 % fewer sectors moved (duck_miq_8
+                                              // 2738 -> 2103, the 302K bunny of ../shared/large 32735 -> 24192), the untangling
+                                              // faster in 23 of the 25 runs (the bunny 2.5-3.1 -> 1.7-1.8 s in two runs each);
+                                              // but the dragon (full-seamless, default mode) with 3 negative triangles instead of
+                                              // 2 and 41 wound vertices instead of 40: face 8353, two of whose corners are 1e-13
+                                              // apart (at (-44, 24) in the input too), takes either orientation in the exact snap.
+                                              // 0: the RMS change up to 9 % larger (duck_miq_8, duck_qc_8 default mode)
   double polish_lambda = 1e-3;
   int polish_iterations = 50;
   double polish_tolerance = 1e-4;             // the polish stops at a relative energy decrease below this (against
