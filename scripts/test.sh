@@ -3,7 +3,7 @@
 # with one CTest run over three build directories, so that CTest's closing summary covers them all:
 #   $build        Release build (scripts/build.sh): tests compilation_of__*, execution___of__*, package_consumer
 #   $build/asan   the test executables with AddressSanitizer + UndefinedBehaviorSanitizer
-#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, -O1 -g1, with clang++ when it has the sanitizer runtimes: it
+#                 (-DSEAMLESS_SNAPPING_SANITIZE=ON, -O0 -g1, with clang++ when it has the sanitizer runtimes: it
 #                 compiles these CGAL tests in half the time of g++; the Release build stays g++; tests in their
 #                 --sanitizer-subset): sanitized__*
 #   $build/fuzz   the libFuzzer targets of test/fuzz (clang++, -DSEAMLESS_SNAPPING_FUZZ=ON), each run
