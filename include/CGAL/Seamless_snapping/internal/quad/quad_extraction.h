@@ -125,9 +125,20 @@ inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::v
          "that point (libQEx merges such pairs too), or choose integer translations that keep the cones apart";
 }
 
+// Whether an interior vertex within coincident_cone_rings face rings of v winds around its point by 7 quarter
+// turns or more: a cone of 90 degrees is then likely a winding defect (a cone of 5 wound back to 1, the 4 quarter
+// turns it lacks found at such a vertex, e.g. a regular one with 8), else the map's own cone.
+inline bool winds_twice_near(const Corner_mesh& cm, const std::vector<int>& valence, int v)
+{
+  for(int w : vertices_within_face_rings(cm, Face_corners(cm), {v}, coincident_cone_rings))
+    if(!cm.vertex_on_border[w] && valence[std::size_t(w)] >= 7) return true;
+  return false;
+}
+
 // Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
 // a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice). Where
-// such a vertex lies next to a collapsed cone pair, the message says so.
+// such a vertex lies next to a collapsed cone pair, the message says so; a cone of valence 1 with no vertex that
+// winds twice nearby is the map's own singularity, and the message says that instead.
 inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<int>& edge_k,
                           std::string& message)
 {
@@ -136,11 +147,18 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || q == 4) continue;
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
     if(on_integer && q != 1) continue;
-    message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns " +
-              (q == 1 ? "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
-                        "a corner twice; no quad mesh has it"
-                      : "but is not on an integer point: the map branches inside a cell") +
-              collapsed_cone_pairs_near(cm, edge_k, v);
+    message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
+    if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_near(cm, edge_k, v);
+    else {
+      message += "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
+                 "a corner twice; no quad mesh has it";
+      if(winds_twice_near(cm, valence, v)) message += collapsed_cone_pairs_near(cm, edge_k, v);
+      else message += "; its triangles are not folded and no vertex within " + std::to_string(coincident_cone_rings) +
+                      " face rings winds around its point by 7 quarter turns or more (a cone wound back from 5 "
+                      "quarter turns would leave such a vertex), so this is a cone of the map itself, a singularity of "
+                      "index 3/4 of its field: the map must come from a cross field whose singularities have index at "
+                      "most 1/2";
+    }
     return INVALID_INPUT;
   }
   return SUCCESS;
