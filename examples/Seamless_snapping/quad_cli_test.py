@@ -6,7 +6,8 @@ exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a m
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
 a grid scale that is not a power of two; command-line errors (exit 2). With the shared data directory (optional
 SHARED_DATA argument, skipped where it does not exist): libQEx's fandisk map, whose integer translations put a cone
-pair onto one integer point, gives its quad mesh by default (the pair merged) and is refused with --keep-cone-pairs.
+pair onto one integer point, gives its quad mesh by default (the pair merged) and is refused with --keep-cone-pairs;
+Directional's dragon is refused with the zero-area triangles the snap proved forced named as such.
 usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR [SHARED_DATA]"""
 import json
 import os
@@ -133,6 +134,20 @@ if shared and os.path.exists(fandisk):
           "fandisk with --keep-cone-pairs: refused, nothing written: %d %s" % (rc, text))
 else:
     print("quad_cli_test: fandisk: SKIPPED (no shared data directory '%s')" % shared)
+
+# 2c. faces the constraints force (shared data only): Directional's dragon keeps 8 zero-area triangles whose corners
+# the rounded translations put onto one point; the refusal says the snap proved them forced and names one
+dragon = os.path.join(shared, "directional", "dragon-param-full-seamless.obj")
+if shared and os.path.exists(dragon):
+    out = os.path.join(work, "dragon.obj")
+    rc, text = run(dragon, out, "--report", report)
+    r = json.load(open(report))
+    forced = [f for f in r["snap"]["folds"] if f["forced"]]
+    check(rc == 1 and not os.path.exists(out) and r["quad_mesh"]["status"] == "FOLD_OVERS" and len(forced) > 0 and
+          ("the snap proved %d of them forced" % len(forced)) in text and forced[0]["message"] in text,
+          "dragon: refused, the forced faces said to be forced: %d %s" % (rc, text))
+else:
+    print("quad_cli_test: dragon: SKIPPED (no shared data directory '%s')" % shared)
 
 # 3. command-line errors and --help
 rc, text = run(parallelogram, os.path.join(work, "x.stl"))

@@ -212,7 +212,20 @@ int main(int argc, char** argv)
   }
   if(snap.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(snap.status) + ": " + snap.message);
-  if(q.status != SS::SUCCESS) return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + q.message);
+  if(q.status != SS::SUCCESS) {
+    // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
+    std::string proven;
+    if(q.status == SS::FOLD_OVERS && snap.folds_forced > 0) {
+      std::size_t first = 0;
+      while(!snap.folds[first].forced()) ++first;
+      proven = "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
+               "untangling removes them, e.g. face " + std::to_string(snap.folds[first].face) + ": " + snap.folds[first].message;
+    }
+    if(!snap.winding_defects.empty())
+      proven += "; the map also winds wrongly around " + std::to_string(snap.winding_defects.size()) + " vertices";
+    if(!proven.empty()) proven += " (--report FILE.json lists them all: \"folds\", \"winding_defects\")";
+    return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + q.message + proven);
+  }
   if(!quiet) {
     std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());
     std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones)%s\n",

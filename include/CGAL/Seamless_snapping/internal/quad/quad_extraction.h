@@ -180,7 +180,8 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   if(folds.blocks_quads()) {
     r.message = "the map has " + folds.describe() + (folds.collinear.size() < folds.degenerate.size() ?
                 "; " + std::to_string(folds.degenerate.size() - folds.collinear.size()) + " of them with two corners at one UV point" : "") +
-                ": its integer isolines do not form quads there; make the map fold-free (untangle it) first";
+                ": its integer isolines do not form quads there; untangle the map first (the snap with untangle(true)), "
+                "which removes such faces unless the constraints force them (Snap_report::folds says which)";
     return FOLD_OVERS;
   }
   collinear = folds.collinear;
