@@ -600,8 +600,8 @@ static void test_shared_data()
       winds_twice = winds_twice || (!m.is_border(v) && qv.valence[std::size_t(v)] >= 7);
     }
     if(quarter_cone) {
-      // with no vertex winding twice anywhere, the cone is the map's own (the knight's field has it): said so, and
-      // no cone pair is blamed
+      // with no vertex winding twice anywhere, the cone is most likely the map's own (the knight's field has it):
+      // said so, and no cone pair is blamed
       const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::INVALID_INPUT, "valence 1", name);
       assert(winds_twice || (r.message.find("singularity of index 3/4") != std::string::npos &&
                              r.message.find("onto one integer point") == std::string::npos));

@@ -125,20 +125,21 @@ inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::v
          "that point (libQEx merges such pairs too), or choose integer translations that keep the cones apart";
 }
 
-// Whether an interior vertex within coincident_cone_rings face rings of v winds around its point by 7 quarter
-// turns or more: a cone of 90 degrees is then likely a winding defect (a cone of 5 wound back to 1, the 4 quarter
-// turns it lacks found at such a vertex, e.g. a regular one with 8), else the map's own cone.
-inline bool winds_twice_near(const Corner_mesh& cm, const std::vector<int>& valence, int v)
+// Whether an interior vertex of the map winds around its point by 7 quarter turns or more. A cone of 5 quarter turns
+// wound back to 1 leaves its 4 missing quarter turns at such a vertex (the angle sums are fixed by the Euler
+// characteristic), not always nearby: the dragon's are 4 to more than 40 face rings away. Without one, a cone of 1 is
+// most likely the map's own.
+inline bool winds_twice_somewhere(const Corner_mesh& cm, const std::vector<int>& valence)
 {
-  for(int w : vertices_within_face_rings(cm, Face_corners(cm), {v}, coincident_cone_rings))
+  for(int w = 0; w < cm.n_vertices; ++w)
     if(!cm.vertex_on_border[w] && valence[std::size_t(w)] >= 7) return true;
   return false;
 }
 
 // Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
 // a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice). Where
-// such a vertex lies next to a collapsed cone pair, the message says so; a cone of valence 1 with no vertex that
-// winds twice nearby is the map's own singularity, and the message says that instead.
+// such a vertex lies next to a collapsed cone pair, the message says so; a cone of valence 1 in a map where no vertex
+// winds twice is most likely the map's own singularity, and the message says that instead.
 inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<int>& edge_k,
                           std::string& message)
 {
@@ -152,12 +153,11 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     else {
       message += "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
                  "a corner twice; no quad mesh has it";
-      if(winds_twice_near(cm, valence, v)) message += collapsed_cone_pairs_near(cm, edge_k, v);
-      else message += "; its triangles are not folded and no vertex within " + std::to_string(coincident_cone_rings) +
-                      " face rings winds around its point by 7 quarter turns or more (a cone wound back from 5 "
-                      "quarter turns would leave such a vertex), so this is a cone of the map itself, a singularity of "
-                      "index 3/4 of its field: the map must come from a cross field whose singularities have index at "
-                      "most 1/2";
+      if(winds_twice_somewhere(cm, valence)) message += collapsed_cone_pairs_near(cm, edge_k, v);
+      else message += "; its triangles are not folded and no vertex of the map winds around its point by 7 quarter "
+                      "turns or more (where a cone wound back from 5 quarter turns to 1 would leave the 4 it lacks), "
+                      "so this is most likely a cone of the map itself, a singularity of index 3/4 of its field: the "
+                      "map must then come from a cross field whose singularities have index at most 1/2";
     }
     return INVALID_INPUT;
   }
