@@ -25,6 +25,7 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -215,12 +216,10 @@ int main(int argc, char** argv)
   if(q.status != SS::SUCCESS) {
     // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
     std::string proven;
-    if(q.status == SS::FOLD_OVERS && snap.folds_forced > 0) {
-      std::size_t first = 0;
-      while(!snap.folds[first].forced()) ++first;
+    const auto forced = std::find_if(snap.folds.begin(), snap.folds.end(), [](const SS::Fold_explanation& f) { return f.forced(); });
+    if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())
       proven = "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
-               "untangling removes them, e.g. face " + std::to_string(snap.folds[first].face) + ": " + snap.folds[first].message;
-    }
+               "untangling removes them, e.g. face " + std::to_string(forced->face) + ": " + forced->message;
     if(!snap.winding_defects.empty())
       proven += "; the map also winds wrongly around " + std::to_string(snap.winding_defects.size()) + " vertices";
     if(!proven.empty()) proven += " (--report FILE.json lists them all: \"folds\", \"winding_defects\")";
