@@ -29,6 +29,7 @@
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_mesh_checks.h>
+#include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
@@ -98,10 +99,10 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   return facts;
 }
 
-// The cone pairs within coincident_cone_rings face rings of vertex v that the map's integer translations put onto
-// one integer point (winding_defects.h), as a clause of a message, or "" if none. `edge_k`: the rotation of
-// halfedge(e) of every cut edge e (is_exact_integer_grid_map_impl()).
-inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::vector<int>& edge_k, int v)
+// The collapsed cone pairs within coincident_cone_rings face rings of vertex v (winding_defects.h, cone_merging.h's
+// collapsed_cone_pairs() on the map's own integer translations) as a clause of a message, or "" if none. `edge_k`: the
+// rotation of halfedge(e) of every cut edge e (is_exact_integer_grid_map_impl()).
+inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std::vector<int>& edge_k, int v)
 {
   Seam_topology st;
   std::string ignored;
@@ -113,9 +114,11 @@ inline std::string collapsed_cone_pairs_near(const Corner_mesh& cm, const std::v
     rot.k[std::size_t(h)] = edge_k[std::size_t(e)];
     rot.k[std::size_t(cm.opp[h])] = (4 - edge_k[std::size_t(e)]) % 4;
   }
+  std::vector<long> t;   // the map is an exact integer-grid map: its translations are integers
+  if(round_translations(cm, st, rot, st.ubar, 1e-6, t, ignored) != SUCCESS) return std::string();
+  const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs(cm, st, rot, t, st.ubar, default_collapsed_cone_reach);
   std::string clause;
-  const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  for(const std::pair<int, int>& c : coincident_cones_near(cm, st, rot, K, Face_corners(cm), st.ubar, v, coincident_cone_rings))
+  for(const std::pair<int, int>& c : collapsed_cone_pairs_near(cm, Face_corners(cm), pairs, {v}))
     clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(c.first) + " and " + std::to_string(c.second);
   if(clause.empty()) return clause;
   return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +
@@ -149,11 +152,11 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
     if(on_integer && q != 1) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
-    if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_near(cm, edge_k, v);
+    if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
     else {
       message += "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
                  "a corner twice; no quad mesh has it";
-      if(winds_twice_somewhere(cm, valence)) message += collapsed_cone_pairs_near(cm, edge_k, v);
+      if(winds_twice_somewhere(cm, valence)) message += collapsed_cone_pairs_clause(cm, edge_k, v);
       else message += "; its triangles are not folded and no vertex of the map winds around its point by 7 quarter "
                       "turns or more (where a cone wound back from 5 quarter turns to 1 would leave the 4 it lacks), "
                       "so this is most likely a cone of the map itself, a singularity of index 3/4 of its field: the "

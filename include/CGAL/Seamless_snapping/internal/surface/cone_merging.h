@@ -217,6 +217,36 @@ struct Cone_partner_search
   }
 };
 
+// how far (grid cells, Euclidean) from two cones' common integer point p the path between them may run for
+// collapsed_cone_pairs() to call them collapsed: 1, so that the path cannot go around a third cone (the other cones
+// lie on integer points other than p, at distance 1 or more, and the path, made of segments inside the disk of radius
+// 1 around p, passes none of them); with 2 the duck_miq_8 map in integer-grid mode with merged pairs has a "pair"
+// 1449, 9657 whose path goes around a cone (the untangling makes the map locally injective there)
+constexpr double default_collapsed_cone_reach = 1.0;
+
+// The collapsed cone pairs of a map, as a finding (nothing changes): for every interior field cone a on an integer
+// point, the partner b (any indices) that the shortest path of edges (cut or not) with every vertex within `reach` of
+// a's point reaches, the transitions (rotations, integer translations t) along it carrying b's point onto a's; `x`:
+// the map in grid units (2 values per sector). The search of merging and separating, so a pair named here is one that
+// they act on; a chart composition along paths around other cones would put far-apart cones onto one point too.
+// Each pair once, (smaller vertex, larger), sorted.
+inline std::vector<std::pair<int, int> > collapsed_cone_pairs(const Corner_mesh& cm, const Seam_topology& st,
+                                                              const Cut_rotations& rot, const std::vector<long>& t,
+                                                              const std::vector<double>& x, double reach)
+{
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  Cone_partner_search search(cm, st, rot, t, x, K);
+  std::vector<std::pair<int, int> > pairs;
+  for(int a = 0; a < cm.n_vertices; ++a) {
+    if(K[std::size_t(a)] <= 0 || cm.vertex_on_border[a]) continue;
+    const Cone_merge m = search.find(a, a, Cone_partner_search::Query{reach, false, false, nullptr, nullptr});
+    if(!m.path.empty()) pairs.emplace_back((std::min)(a, m.b), (std::max)(a, m.b));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
 // Merges the collapsed cone pairs (see the header comment): changes rot.k and the integer translations t of
 // round_translations() along each path. `ubar` in grid units. Returns the merges, in order of the first cone.
 // With cut_edges_only = false the paths may use edges that are not cut edges (for cut_edges_to_add() only: the

@@ -210,6 +210,8 @@ struct Snap_state
   std::vector<int> separation_rank;      // per vertex: the rank of the shift of the separated pair whose first cone it is
                                          // (solve_with_separation_trials()); empty: the shifts nearest to the input
   std::vector<Cone_separation> separations;   // Snap_options::separate_cone_pairs: the pairs moved apart
+  std::vector<long> translations;        // integer-grid mode: the integer translation of every cut halfedge in grid units
+                                         // (round_translations(), after merging and separating), 2 per halfedge
   std::vector<signed char> input_orientations;   // per face: orientation of its UV triangle in ubar (exact), for steps 4b, 5 and 5b
   Fixed_point_grid grid;                 // common F_delta of node and propagated values
   int grid_exponent = 0;                 // s of the grid scale 2^s (uv_exponent = -s when the corner mesh is in grid units,
@@ -332,7 +334,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.field_cones = before.field_cones;
   report.cones_on_integer_points_before = before.cones_on_integer_points;
   report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
-  std::vector<long> translations;            // integer-grid mode: per halfedge, rounded (and changed by merging, separating)
+  std::vector<long>& translations = S.translations;   // integer-grid mode: rounded, changed by merging and separating
   std::vector<char> moved;                   // per vertex: on a path along which separating moved cones
   std::vector<int>& merged = S.merged_valence;
   merged.assign(S.cm.n_vertices, 0);
@@ -641,6 +643,13 @@ inline std::vector<int> non_positive_faces(const std::vector<signed char>& o)
   return faces;
 }
 
+// integer-grid mode: the collapsed cone pairs of the map S.x (collapsed_cone_pairs(), cone_merging.h)
+template <class TriangleMesh>
+std::vector<std::pair<int, int> > collapsed_cone_pairs_of_x(const Snap_state<TriangleMesh>& S)
+{
+  return collapsed_cone_pairs(S.cm, S.st, S.rot, S.translations, in_grid_units(S, S.x), default_collapsed_cone_reach);
+}
+
 // 4b. untangling (beyond the paper: Sec. 5.4 and 7 repair only what the snap introduces): the faces of
 // the exact map S.x that are not positive, unless proven so in every exact solution (forced_folds.h),
 // are made positive by moving the UVs near them inside the constraint space, in floating point
@@ -667,14 +676,15 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
     for(int h : fc.halfedge[f])
       if(wound_at(S.cm.target[h])) from_3d[f] = 1;
   // the windings within 2 face rings of a cone pair that the integer translations collapse onto one point
-  // (found from the wrongly wound vertices and those of non-positive faces) are not targets: no move
-  // separates the cones (winding_defects.h)
+  // (collapsed_cone_pairs(), those near the wrongly wound vertices and the vertices of non-positive faces) are not
+  // targets: no move separates the cones
   std::size_t wound = 0;
   if(opt.integer_grid_map) {
     std::vector<int> seeds;
     for(int v = 0; v < S.cm.n_vertices; ++v) if(wound_at(v)) seeds.push_back(v);
     for(int f : non_positive_faces(orientations_of_x(S))) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
-    for(int v : vertices_near_collapsed_cones(S.cm, S.st, S.rot, fc, S.x, seeds, 2)) target.valence[std::size_t(v)] = 0;
+    const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs_near(S.cm, fc, collapsed_cone_pairs_of_x(S), seeds);
+    for(int v : vertices_near_collapsed_cones(S.cm, fc, pairs, 2)) target.valence[std::size_t(v)] = 0;
   }
   for(int v = 0; v < S.cm.n_vertices; ++v) wound += wound_at(v) ? 1 : 0;
   if(snapped.negative + snapped.degenerate + wound == 0) return SUCCESS;
@@ -773,10 +783,11 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const Target_valences target = target_valences(S, fc);
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
+  const std::vector<std::pair<int, int> > pairs =
+      opt.integer_grid_map ? collapsed_cone_pairs_of_x(S) : std::vector<std::pair<int, int> >();
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
   auto name_collapsed_pairs = [&](int v, std::string& message) {   // those within coincident_cone_rings of v
-    if(!opt.integer_grid_map) return;
-    for(const std::pair<int, int>& c : coincident_cones_near(S.cm, S.st, S.rot, K, fc, S.x, v, coincident_cone_rings)) {
+    for(const std::pair<int, int>& c : collapsed_cone_pairs_near(S.cm, fc, pairs, {v})) {
       message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
                  " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
       collapsed.insert(std::minmax(c.first, c.second));
