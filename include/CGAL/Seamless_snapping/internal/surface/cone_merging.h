@@ -227,8 +227,8 @@ constexpr double default_collapsed_cone_reach = 1.0;
 // The collapsed cone pairs of a map, as a finding (nothing changes): for every interior field cone a on an integer
 // point, the partner b (any indices) that the shortest path of edges (cut or not) with every vertex within `reach` of
 // a's point reaches, the transitions (rotations, integer translations t) along it carrying b's point onto a's; `x`:
-// the map in grid units (2 values per sector). The search of merging and separating, so a pair named here is one that
-// they act on; a chart composition along paths around other cones would put far-apart cones onto one point too.
+// the map in grid units (2 values per sector). The search that merging and separating use (Cone_partner_search), here
+// along any edges; a chart composition along paths around other cones would put far-apart cones onto one point too.
 // Each pair once, (smaller vertex, larger), sorted.
 inline std::vector<std::pair<int, int> > collapsed_cone_pairs(const Corner_mesh& cm, const Seam_topology& st,
                                                               const Cut_rotations& rot, const std::vector<long>& t,

@@ -14,8 +14,8 @@
 // all be positive: their UV angle sum is not their valence (vertex_windings.h), e.g. 8 quarter turns at a
 // regular vertex next to a cone that has 1 instead of 5. The pipeline gives each a message; where a collapsed
 // cone pair lies within a few face rings (two cones that the integer translations carry onto one integer point
-// along a path of edges near it, collapsed_cone_pairs() of cone_merging.h: the pairs that merging and separating
-// act on), the message names it: a +-90 degree cone pair collapsed onto one grid point, which the
+// along a path of edges near it, collapsed_cone_pairs() of cone_merging.h, with the search that merging and
+// separating use), the message names it: a +-90 degree cone pair collapsed onto one grid point, which the
 // singularity-separating conditions of integer-grid-map solvers (Bommes et al. 2013) rule out, and which the
 // untangling leaves as a winding defect (the pair is a fact, that it causes the defect a suspicion).
 // Here: the face rings around vertices, and which collapsed pairs lie near a vertex.
