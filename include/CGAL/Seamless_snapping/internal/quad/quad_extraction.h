@@ -114,7 +114,7 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
     rot.k[std::size_t(h)] = edge_k[std::size_t(e)];
     rot.k[std::size_t(cm.opp[h])] = (4 - edge_k[std::size_t(e)]) % 4;
   }
-  std::vector<long> t;   // the map is an exact integer-grid map: its translations are integers
+  std::vector<long> t;   // integers: is_exact_integer_grid_map_impl() proved them exactly; rounding recovers them
   if(round_translations(cm, st, rot, st.ubar, 1e-6, t, ignored) != SUCCESS) return std::string();
   const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs(cm, st, rot, t, st.ubar, default_collapsed_cone_reach);
   std::string clause;
