@@ -663,6 +663,8 @@ def test_extract_quad_mesh_merged_cone_pairs():
     assert len(pairs) >= 1 and 1 <= kept["cancelling_collapsed_cone_pairs"] <= len(pairs)
     assert all(a < b and any("the cones at vertices %d and %d" % (a, b) in w["message"] for w in kept["winding_defects"])
                for a, b in pairs)
+    forced_corners = {v for f in kept["folds"] if f["forced"] for v in f["vertices"]}   # proven: not injective there
+    assert all(w["forced"] == (w["vertex"] in forced_corners) for w in kept["winding_defects"])
     UV2, FUV2, merged = ss.snap(V, F, UV, FUV, integer_grid_map=True, merge_cone_pairs=True)
     assert len(merged["merged_cone_pairs"]) > 0 and merged["winding_defects"] == [] and merged["collapsed_cone_pairs"] == []
     assert merged["field_cones"] + 2 * len(merged["merged_cone_pairs"]) == kept["field_cones"]

@@ -1074,9 +1074,11 @@ static void test_json_strings()
   r.folds.back().message = "fold \"a\"\n";
   r.winding_defects.emplace_back();
   r.winding_defects.back().message = "winding\\\x02";
+  r.winding_defects.back().forced = true;
   const std::string k = r.to_json();
   CHECK(k.find("\"message\": \"fold \\\"a\\\"\\n\"}") != std::string::npos, "Snap_report::to_json escapes fold messages");
   CHECK(k.find("\"message\": \"winding\\\\\\u0002\"}") != std::string::npos, "Snap_report::to_json escapes winding messages");
+  CHECK(k.find("\"forced\": true, \"message\": \"winding") != std::string::npos, "Snap_report::to_json writes a defect's forced flag");
 }
 
 int main(int argc, char** argv)

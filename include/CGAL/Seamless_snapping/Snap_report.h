@@ -78,7 +78,8 @@ struct Winding_defect
   std::size_t vertex = 0;               ///< index of the vertex in `vertices(tm)` order
   int angle_sum = 0;                    ///< its UV angle sum in quarter turns (counted exactly where exact sign tests decide it)
   int valence = 4;                      ///< the angle sum a locally injective map has there (at a cone whose index the input does not fix, e.g. inside its fold-overs, and at a joined cone, every other member of its class modulo 4 of at least 2 is accepted too and not reported)
-  std::string message;                  ///< in words; names a cone pair rounded onto one integer point nearby, if any
+  bool forced = false;                  ///< proven: the vertex is a corner of a face that is non-positive in every exact solution of the constraints (a forced `Fold_explanation` in `folds`), so no map satisfying them is locally injective here
+  std::string message;                  ///< in words; names the forced face at the vertex, if any, and a cone pair rounded onto one integer point nearby, if any
 };
 
 /*!
@@ -267,7 +268,7 @@ struct Snap_report
     for(std::size_t i = 0; i < winding_defects.size(); ++i) {
       const Winding_defect& w = winding_defects[i];
       o << (i ? ",\n    " : "\n    ") << "{\"vertex\": " << w.vertex << ", \"angle_sum\": " << w.angle_sum << ", \"valence\": "
-        << w.valence << ", \"message\": " << IO::internal::json_string(w.message) << "}";
+        << w.valence << ", \"forced\": " << (w.forced ? "true" : "false") << ", \"message\": " << IO::internal::json_string(w.message) << "}";
     }
     o << (winding_defects.empty() ? "],\n" : "\n  ],\n");
     o << "  \"untangle_refused\": " << (untangle_refused ? "true" : "false") << ",\n";

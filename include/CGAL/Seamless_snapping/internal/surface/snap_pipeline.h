@@ -793,29 +793,40 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       collapsed.insert(std::minmax(c.first, c.second));
     }
   };
-  for(int v = 0; v < S.cm.n_vertices; ++v) {
-    if(!target.wound(std::size_t(v), turns[std::size_t(v)])) continue;
-    Winding_defect d;
-    d.vertex = std::size_t(v);
-    d.angle_sum = turns[std::size_t(v)];
-    d.valence = target.valence[std::size_t(v)];
-    d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
-                " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
-    name_collapsed_pairs(v, d.message);
-    report.winding_defects.push_back(d);
-  }
+  std::vector<int> forced_face(std::size_t(S.cm.n_vertices), -1);   // per vertex: a face proven non-positive at it
   if(!faces.empty()) {
     const Variable_rows incidence(S.full, S.x.size());
     Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
     report.folds = prover.explain(faces, S.x);
     for(Fold_explanation& e : report.folds) {
-      if(e.forced()) { ++report.folds_forced; continue; }
+      if(e.forced()) {
+        ++report.folds_forced;
+        for(std::size_t v : e.vertices) if(forced_face[v] < 0) forced_face[v] = int(e.face);
+        continue;
+      }
       if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
       else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
       else if(report.untangle_budget_spent)
         e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
       name_collapsed_pairs(S.cm.target[fc.halfedge[e.face][0]], e.message);
     }
+  }
+  // windings; at a corner of a face proven non-positive no solution is locally injective (its triangles are not all
+  // positive), whatever the angle sum
+  for(int v = 0; v < S.cm.n_vertices; ++v) {
+    if(!target.wound(std::size_t(v), turns[std::size_t(v)])) continue;
+    Winding_defect d;
+    d.vertex = std::size_t(v);
+    d.angle_sum = turns[std::size_t(v)];
+    d.valence = target.valence[std::size_t(v)];
+    d.forced = forced_face[std::size_t(v)] >= 0;
+    d.message = "the UV triangles around vertex " + std::to_string(v) + " wind " + std::to_string(d.angle_sum) +
+                " quarter turns around it, not " + std::to_string(d.valence) + ": the map is not locally injective there";
+    if(d.forced)
+      d.message += "; it is a corner of face " + std::to_string(forced_face[std::size_t(v)]) + ", which the constraints " +
+                   "force to be non-positive in every exact solution (folds): no map satisfying them is locally injective here";
+    name_collapsed_pairs(v, d.message);
+    report.winding_defects.push_back(d);
   }
   // cone merging (cone_merging.h) makes the pairs whose cone indices cancel regular points of the field
   for(const std::pair<int, int>& c : collapsed) {
@@ -944,9 +955,14 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
   } else if(report.untangled) {
     summary += "; every UV triangle is positively oriented";
   }
-  if(!report.winding_defects.empty())
+  if(!report.winding_defects.empty()) {
+    std::size_t forced = 0;
+    for(const Winding_defect& w : report.winding_defects) forced += w.forced ? 1 : 0;
     summary += "; not locally injective at " + std::to_string(report.winding_defects.size()) +
-               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects)";
+               " vertices whose UV angle sum is not their valence (Snap_report::winding_defects" +
+               (forced == 0 ? std::string(")")
+                            : std::string(", ") + std::to_string(forced) + " of them proven forced: corners of faces proven non-positive)");
+  }
   const std::size_t cancelling = report.cancelling_collapsed_cone_pairs;
   if(!report.collapsed_cone_pairs.empty())
     summary += "; " + std::to_string(report.collapsed_cone_pairs.size()) + " cone pair(s) rounded onto one integer point " +
