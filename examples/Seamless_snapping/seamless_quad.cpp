@@ -220,8 +220,13 @@ int main(int argc, char** argv)
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())
       proven = "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
                "untangling removes them, e.g. face " + std::to_string(forced->face) + ": " + forced->message;
-    if(!snap.winding_defects.empty())
-      proven += "; the map also winds wrongly around " + std::to_string(snap.winding_defects.size()) + " vertices";
+    if(!snap.winding_defects.empty()) {
+      const auto forced_windings = std::count_if(snap.winding_defects.begin(), snap.winding_defects.end(),
+                                                 [](const SS::Winding_defect& w) { return w.forced; });
+      proven += "; the map also winds wrongly around " + std::to_string(snap.winding_defects.size()) + " vertices" +
+                (forced_windings == 0 ? std::string()
+                                      : " (" + std::to_string(forced_windings) + " of them corners of the forced faces)");
+    }
     if(!proven.empty()) proven += " (--report FILE.json lists them all: \"folds\", \"winding_defects\")";
     return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + q.message + proven);
   }
