@@ -143,9 +143,13 @@ if shared and os.path.exists(dragon):
     rc, text = run(dragon, out, "--report", report)
     r = json.load(open(report))
     forced = [f for f in r["snap"]["folds"] if f["forced"]]
+    wound = r["snap"]["winding_defects"]
+    forced_wound = [w for w in wound if w["forced"]]   # corners of the forced faces
     check(rc == 1 and not os.path.exists(out) and r["quad_mesh"]["status"] == "FOLD_OVERS" and len(forced) > 0 and
-          ("the snap proved %d of them forced" % len(forced)) in text and forced[0]["message"] in text,
-          "dragon: refused, the forced faces said to be forced: %d %s" % (rc, text))
+          ("the snap proved %d of them forced" % len(forced)) in text and forced[0]["message"] in text and
+          0 < len(forced_wound) < len(wound) and
+          ("around %d vertices (%d of them corners of the forced faces)" % (len(wound), len(forced_wound))) in text,
+          "dragon: refused, the forced faces and the wound vertices at them said to be forced: %d %s" % (rc, text))
 else:
     print("quad_cli_test: dragon: SKIPPED (no shared data directory '%s')" % shared)
 
