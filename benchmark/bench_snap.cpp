@@ -305,12 +305,12 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
 // (after its exact snap and the repair); of those at the end, how many are proven forced; vertices left not locally
 // injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
 // (max / RMS beyond the snap, and the snap alone's max); the times of the snap alone (untangle(false)) and of
-// untangling + snap, and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
+// untangling + snap (of it, the polish), and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
 static int untangle_study(const std::vector<fs::path>& files, int repeat)
 {
-  std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %6s | %s\n", "model", "mode", "#F",
+  std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %7s %6s | %s\n", "model", "mode", "#F",
               "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
-              "snap ms", "unt.+snap", "ratio", "exact");
+              "snap ms", "unt.+snap", "polish", "ratio", "exact");
   int failures = 0;
   for(const fs::path& p : files) {
     Mesh input;
@@ -350,13 +350,13 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
       auto counts = [](std::size_t n, std::size_t z) { return std::to_string(n) + "/" + std::to_string(z); };
       const std::string change = best.untangled ? (std::to_string(best.untangle_max_change * best.grid_scale).substr(0, 6) + " / " +
                                                    std::to_string(best.untangle_rms_change * best.grid_scale).substr(0, 6)) : "-";
-      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %6.2f | %s%s\n",
+      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %7.1f %6.2f | %s%s\n",
                   name.c_str(), mode_name, best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
                   counts(alone.flips_after_repair, alone.degenerate_after_repair).c_str(),
                   counts(best.flips_after_untangling, best.degenerate_after_untangling).c_str(),
                   counts(best.flips_after_repair, best.degenerate_after_repair).c_str(), best.folds_forced,
                   best.winding_defects.size(), at_pairs, best.untangle_rings, best.untangle_moved_sectors, change.c_str(),
-                  alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms,
+                  alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms, best.untangle_polish_ms,
                   alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO",
                   best.separation_trials > 0 ? (", " + std::to_string(best.separation_trials) + " trials").c_str() : "");
     }
@@ -367,7 +367,8 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
               "UV angle sum is not their valence (Snap_report::winding_defects), in brackets those next to a cone pair the\n"
               "integer rounding collapsed onto one point; rings = largest k of the regions; max/RMS cells = the change beyond\n"
               "the snap (grid cells: UV units at grid scale 1); snap max = the snap alone's max change; times in ms (min over\n"
-              "--repeat runs); ratio = (untangling + snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
+              "--repeat runs); polish = the untangling's minimal-change polish, part of unt.+snap; ratio = (untangling +\n"
+              "snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
               "(the collapsed cone pairs made regular points of the field), where it merged pairs; IGM+s: with\n"
               "separate_cone_pairs(true) (the collapsed pairs moved apart, the field kept), where it separated pairs, with the\n"
               "extra snaps that chose the shifts (trials; their time is in unt.+snap); IGM+ms: both.\n");

@@ -909,6 +909,7 @@ static void check_untangled(const Mesh& m, UV_map uv, const SS::Snap_report& r, 
     if(e.forced()) for(std::size_t v : e.vertices) forced_corner[v] = 1;
   }
   assert(forced == r.folds_forced);
+  assert(r.untangle_polish_ms >= 0 && r.untangle_polish_ms <= r.untangle_ms);   // a part of the untangling's time
   // a defect is forced iff its vertex is a corner of a forced face, and then its message names such a face
   for(const SS::Winding_defect& w : r.winding_defects) {
     assert(w.forced == bool(forced_corner[w.vertex]));

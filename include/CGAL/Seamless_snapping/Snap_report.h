@@ -194,6 +194,7 @@ struct Snap_report
   double repair_ms = 0;                ///< flip repair
   double least_squares_ms = 0;         ///< the floating-point L2-closest point of the full system (minimal-change mode)
   double untangle_ms = 0;              ///< untangling: fold-over proofs, floating-point optimization and the second exact snap
+  double untangle_polish_ms = 0;       ///< of `untangle_ms`: the minimal-change polish after the fold-overs are removed (the optimization's second step)
   double explain_ms = 0;               ///< the faces left not positive, their proofs (`folds`), and the windings (`winding_defects`)
   double write_ms = 0;                 ///< writing the result into the caller's UV map
   /// @}
@@ -284,6 +285,7 @@ struct Snap_report
     num("extract_ms", extract_ms); num("reduce_ms", reduce_ms); num("irref_ms", irref_ms);
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
     num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms); num("untangle_ms", untangle_ms);
+    num("untangle_polish_ms", untangle_polish_ms);
     num("explain_ms", explain_ms); num("write_ms", write_ms);
     o << "  \"total_ms\": " << total_ms << "\n}\n";
     return o.str();

@@ -66,6 +66,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -125,6 +126,7 @@ struct Untangle_statistics
   std::size_t outer_iterations = 0, newton_steps = 0, polish_steps = 0;
   std::size_t not_positive = 0;          // faces not positive at the end (floating point; excluded faces not counted)
   double work = 0;                       // face evaluations of step 1
+  double polish_ms = 0;                  // wall-clock time of step 2
   bool budget_spent = false;             // step 1 stopped at its budget (Untangle_options::work_per_face)
 };
 
@@ -170,7 +172,9 @@ public:
     std::vector<int> bad;
     for(std::size_t f = 0; f < state.face.size(); ++f) if(state.face[f] != GOOD) bad.push_back(int(f));
     if(opt.polish) {
+      const std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
       Status s = polish(x, target, bad, opt, stats, message);
+      stats.polish_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
       if(s != SUCCESS) return s;
     }
     stats.not_positive = 0;
