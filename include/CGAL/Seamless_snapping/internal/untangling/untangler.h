@@ -97,9 +97,9 @@ struct Untangle_options
                                               // 2738 -> 2103, the 302K bunny of ../shared/large 32735 -> 24192), the untangling
                                               // faster in 23 of the 25 runs (the bunny 2.5-3.1 -> 1.7-1.8 s in two runs each);
                                               // but the dragon (full-seamless, default mode) with 3 negative triangles instead of
-                                              // 2 and 41 wound vertices instead of 40: face 8353, nearly degenerate (two of its
-                                              // corners lie 1e-13 UV units apart at (-44, 24), in the input too), whose exact
-                                              // orientation after the snap takes either sign for maps that differ that little.
+                                              // 2 and 41 wound vertices instead of 40: face 8353, nearly degenerate in the input
+                                              // (two of its corners almost on one point at (-44, 24)), whose orientation after
+                                              // the snap follows moves far below a grid cell.
                                               // 0: the RMS change up to 9 % larger (duck_miq_8, duck_qc_8 default mode)
   double polish_lambda = 1e-3;
   int polish_iterations = 50;
@@ -147,8 +147,8 @@ public:
   // or as many and fewer faces around wrongly wound vertices, or both as many and a larger smallest det J where it
   // had non-positive faces (a region of wound vertices only, whose windings stay, keeps its UVs: on the 5 folded maps
   // of ../shared/data x 5 modes the same defects but on the dragon in default mode face 8353, now positive, and one
-  // wound vertex fewer: a nearly degenerate face (two of its input corners lie 1e-13 UV units apart), whose sign the
-  // exact orientation test after the snap decides differently for maps that differ far below a grid cell; the
+  // wound vertex fewer: a face nearly degenerate in the input (two of its corners almost on one point), whose
+  // orientation after the snap follows moves far below a grid cell; the
   // change and the sectors moved the same or smaller, e.g. the dragon's 11430 -> 10366 sectors
   // and max / RMS 1.39 / 0.050 -> 1.39 / 0.046 cells, its IGM with pairs merged 1.28 / 0.051 -> 1.16 / 0.048)
   Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
