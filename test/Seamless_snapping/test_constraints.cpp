@@ -914,9 +914,10 @@ static void check_untangled(const Mesh& m, UV_map uv, const SS::Snap_report& r, 
   for(const SS::Winding_defect& w : r.winding_defects) {
     assert(w.forced == bool(forced_corner[w.vertex]));
     if(!w.forced) continue;
-    const std::size_t at = w.message.find("it is a corner of face ");
+    const std::string named = "it is a corner of face ";
+    const std::size_t at = w.message.find(named);
     assert(at != std::string::npos);
-    const std::size_t f = std::stoul(w.message.substr(at + 23));
+    const std::size_t f = std::stoul(w.message.substr(at + named.size()));
     assert(std::any_of(r.folds.begin(), r.folds.end(), [&](const SS::Fold_explanation& e) {
       return e.face == f && e.forced() && std::count(e.vertices.begin(), e.vertices.end(), w.vertex) == 1;
     }));
