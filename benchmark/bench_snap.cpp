@@ -358,7 +358,8 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
                   best.winding_defects.size(), at_pairs, best.untangle_rings, best.untangle_moved_sectors, change.c_str(),
                   alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms, best.untangle_polish_ms,
                   alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO",
-                  best.separation_trials > 0 ? (", " + std::to_string(best.separation_trials) + " trials").c_str() : "");
+                  best.separation_trials > 0 ? (", " + std::to_string(best.separation_trials) + " trials in " +
+                                                std::to_string(long(best.separation_ms + 0.5)) + " ms").c_str() : "");
     }
   }
   std::printf("\ncolumns: negative/zero-area UV triangles (exact test): input, after the snap alone (untangle(false), with its\n"
@@ -371,7 +372,7 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
               "snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
               "(the collapsed cone pairs made regular points of the field), where it merged pairs; IGM+s: with\n"
               "separate_cone_pairs(true) (the collapsed pairs moved apart, the field kept), where it separated pairs, with the\n"
-              "extra snaps that chose the shifts (trials; their time is in unt.+snap); IGM+ms: both.\n");
+              "extra snaps that chose the shifts (trials, with their time: Snap_report::separation_ms, a part of unt.+snap); IGM+ms: both.\n");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 

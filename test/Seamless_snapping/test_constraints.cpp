@@ -1207,6 +1207,7 @@ static void test_joined_cone_pairs()
   check_untangled(m2, uv2, r2, true, f);
   assert(SS::is_exact_integer_grid_map(m2, uv2) && r2.cones_on_integer_points_after == r2.field_cones);
   assert(!r2.separated_cone_pairs.empty() && r2.separation_trials > 0);
+  assert(r2.separation_ms > 0 && r2.separation_ms <= r2.total_ms);   // the trials' time, a part of the whole
   assert(r2.flips_after_repair == 0 && r2.degenerate_after_repair == r2.folds_forced);
   assert(r2.degenerate_after_repair < r1.degenerate_after_repair);
 }

@@ -157,7 +157,7 @@ struct Snap_report
   std::size_t added_cut_edges = 0;             ///< `merge_cone_pairs`: of those, edges that were not cut edges (no cut path near the pair's point joined it; the UVs are split there in the result)
   std::vector<std::pair<std::size_t, std::size_t> > separated_cone_pairs; ///< `separate_cone_pairs`: the cone pairs (vertex indices, smaller first) that the rounded translations put onto one integer point, moved apart (each cone onto a neighbouring integer point); counted in `field_cones`
   std::size_t separated_cut_edges = 0;         ///< `separate_cone_pairs`: cut edges whose integer translation changed to separate them
-  std::size_t separation_trials = 0;           ///< `separate_cone_pairs` with `untangle`: extra snaps made to choose the shifts of the separated pairs with defects near them (each pair's shifts tried; 0 when none is left with defects); their time is in `total_ms` only
+  std::size_t separation_trials = 0;           ///< `separate_cone_pairs` with `untangle`: extra snaps made to choose the shifts of the separated pairs with defects near them (each pair's shifts tried; 0 when none is left with defects); their time is `separation_ms`
   std::size_t pinned_sectors = 0;              ///< `pinned_corner_map`: sectors (UV pairs) kept bit-identical because one of their corners is pinned
   /// @}
 
@@ -195,6 +195,7 @@ struct Snap_report
   double least_squares_ms = 0;         ///< the floating-point L2-closest point of the full system (minimal-change mode)
   double untangle_ms = 0;              ///< untangling: fold-over proofs, floating-point optimization and the second exact snap
   double untangle_polish_ms = 0;       ///< of `untangle_ms`: the minimal-change polish after the fold-overs are removed (the optimization's second step)
+  double separation_ms = 0;            ///< the separation trials (`separation_trials`) and the snap with the shifts they chose; in `total_ms` only
   double explain_ms = 0;               ///< the faces left not positive, their proofs (`folds`), and the windings (`winding_defects`)
   double write_ms = 0;                 ///< writing the result into the caller's UV map
   /// @}
@@ -286,6 +287,7 @@ struct Snap_report
     num("evaluate_ms", evaluate_ms); num("propagate_ms", propagate_ms); num("verify_ms", verify_ms);
     num("repair_ms", repair_ms); num("least_squares_ms", least_squares_ms); num("untangle_ms", untangle_ms);
     num("untangle_polish_ms", untangle_polish_ms);
+    num("separation_ms", separation_ms);
     num("explain_ms", explain_ms); num("write_ms", write_ms);
     o << "  \"total_ms\": " << total_ms << "\n}\n";
     return o.str();

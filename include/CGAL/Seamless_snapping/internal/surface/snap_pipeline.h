@@ -1062,6 +1062,7 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
   }
   Snap_options trial = opt;          // the polish keeps every face's orientation (it only pulls the map back towards the
   trial.untangle_polish = false;     // input), so the trials leave it out: the same defects at about 2/3 of the time
+  const Snap_clock::time_point trials_start = Snap_clock::now();
   auto snap_with = [&](const std::vector<int>& r, const Snap_options& o, Snap_state<TriangleMesh>& T, Snap_report& R) {
     T = extracted;
     T.separation_rank = r;
@@ -1092,9 +1093,12 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
     for(int r = 0; r < int(d.second.size()); ++r) if(d.second[std::size_t(r)] < d.second[std::size_t(best)]) best = r;
     changed = changed || best != first_rank[std::size_t(d.first)];
   }
+  report.separation_ms = ms_since(trials_start);
   if(!changed || !snap_with(rank, opt, T, R)) return SUCCESS;
+  report.separation_ms = ms_since(trials_start);
   if(R.folds.size() + R.winding_defects.size() < report.folds.size() + report.winding_defects.size()) {
     R.separation_trials = report.separation_trials;
+    R.separation_ms = report.separation_ms;
     S = std::move(T);
     report = std::move(R);
   }
