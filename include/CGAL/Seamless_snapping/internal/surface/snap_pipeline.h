@@ -1100,9 +1100,9 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
     for(int r = 0; r < int(d.second.size()); ++r) if(d.second[std::size_t(r)] < d.second[std::size_t(best)]) best = r;
     changed = changed || best != first_rank[std::size_t(d.first)];
   }
+  const bool snapped = changed && snap_with(rank, opt, T, R);
   report.separation_ms = ms_since(trials_start);
-  if(!changed || !snap_with(rank, opt, T, R)) return SUCCESS;
-  report.separation_ms = ms_since(trials_start);
+  if(!snapped) return SUCCESS;
   if(R.folds.size() + R.winding_defects.size() < report.folds.size() + report.winding_defects.size()) {
     R.separation_trials = report.separation_trials;
     R.separation_ms = report.separation_ms;
