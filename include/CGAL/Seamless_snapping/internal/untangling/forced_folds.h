@@ -80,22 +80,22 @@ struct Null_space_rows
     std::vector<std::pair<std::uint32_t, Int> > terms;
     start.push_back(0);
     for(std::size_t c = 0; c < irref.n_cols; ++c) {
-      const std::size_t r = row_of[c];
-      terms.clear();
-      Int g = Ops::from_int64(1);
-      if(irref.kind[c] != IMPLIED_COLUMN) terms.emplace_back(std::uint32_t(c), g);
-      else {
-        g = irref.pivot[r];
-        for(std::size_t k = irref.ptr[r]; k < irref.ptr[r + 1]; ++k) {
-          terms.emplace_back(irref.col[k], Ops::neg(irref.val[k]));
-          g = Ops::gcd(g, irref.val[k]);
-        }
-        for(std::pair<std::uint32_t, Int>& t : terms) t.second = Ops::exact_div(t.second, g);
-        std::sort(terms.begin(), terms.end(),
-                  [](const std::pair<std::uint32_t, Int>& a, const std::pair<std::uint32_t, Int>& b) { return a.first < b.first; });
+      if(irref.kind[c] != IMPLIED_COLUMN) {
+        col.push_back(std::uint32_t(c)); num.push_back(Ops::from_int64(1)); den.push_back(Ops::from_int64(1));
+        start.push_back(col.size());
+        continue;
       }
-      den.push_back(irref.kind[c] != IMPLIED_COLUMN ? g : Ops::exact_div(irref.pivot[r], g));
-      for(const std::pair<std::uint32_t, Int>& t : terms) { col.push_back(t.first); num.push_back(t.second); }
+      const std::size_t r = row_of[c];
+      Int g = irref.pivot[r];
+      terms.clear();
+      for(std::size_t k = irref.ptr[r]; k < irref.ptr[r + 1]; ++k) {
+        terms.emplace_back(irref.col[k], Ops::neg(irref.val[k]));
+        g = Ops::gcd(g, irref.val[k]);
+      }
+      std::sort(terms.begin(), terms.end(),
+                [](const std::pair<std::uint32_t, Int>& a, const std::pair<std::uint32_t, Int>& b) { return a.first < b.first; });
+      for(const std::pair<std::uint32_t, Int>& t : terms) { col.push_back(t.first); num.push_back(Ops::exact_div(t.second, g)); }
+      den.push_back(Ops::exact_div(irref.pivot[r], g));
       start.push_back(col.size());
     }
   }
