@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>   // the namespace of the alias SMP
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 
 #include "test_arguments.h"
 
@@ -54,8 +55,7 @@ namespace CGAL { namespace Surface_mesh_parameterization {} }   // declared, for
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
 
-static inline double ms_since(std::chrono::steady_clock::time_point t0)
-{ return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+using CGAL::Seamless_snapping::internal::ms_since;
 
 // the corner UV map "h:uv" of m (created if missing)
 static inline UV_map uv_of(Mesh& m)

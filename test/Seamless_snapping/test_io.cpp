@@ -31,6 +31,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
@@ -84,8 +85,7 @@ static int failures = 0;
 #define CHECK(cond, what)                                                                     \
   do { if(!(cond)) { ++failures; std::cerr << "FAILED: " << what << "  [" #cond "] line " << __LINE__ << std::endl; } } while(0)
 
-static double ms_since(std::chrono::steady_clock::time_point t0)
-{ return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+using CGAL::Seamless_snapping::internal::ms_since;
 
 static bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 

@@ -42,6 +42,7 @@
 // the other rounding.
 
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 
 #include "generators.h"
 #include "test_arguments.h"
@@ -76,7 +77,7 @@ using SS_test::Triplet;
 namespace {
 
 typedef std::chrono::steady_clock Clock;
-double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+using CGAL::Seamless_snapping::internal::ms_since;
 
 bool bit_identical(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 bool bit_identical(const std::vector<double>& a, const std::vector<double>& b)

@@ -17,6 +17,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/evaluation.h>
 #include <CGAL/Seamless_snapping/internal/projection/exact_input_check.h>
 #include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 
 #include <Eigen/Sparse>
 
@@ -170,14 +171,14 @@ public:
       }
       report.message = "x̄ satisfies all " + std::to_string(m_statistics.rows) + " rows exactly; returned unchanged";
       x = xb;                                                  // (x may be x̄ itself)
-      report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      report.project_ms = internal::ms_since(t0);
       return report;
     }
     std::vector<double> start, result;
     if(m_least_squares) {                                // minimal-change mode: snap the L2-closest point
       const auto t1 = std::chrono::steady_clock::now();
       m_least_squares->project(m_b_double, xb, start);
-      report.least_squares_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+      report.least_squares_ms = internal::ms_since(t1);
       if(std::all_of(start.begin(), start.end(), [](double v) { return std::isfinite(v); })) evaluate(start, result, report);
       else { report.status = INVALID_INPUT; report.message = "the floating-point projection is not finite"; }
       report.minimal_change = report.status == SUCCESS;
@@ -202,7 +203,7 @@ public:
       }
       x.swap(result);
     }
-    report.project_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    report.project_ms = internal::ms_since(t0);
     return report;
   }
 
@@ -329,7 +330,7 @@ private:
         m_irref64.reset(); m_irrefz.reset();
       }
     }
-    m_statistics.initialize_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    m_statistics.initialize_ms = internal::ms_since(t0);
     return m_status;
   }
 

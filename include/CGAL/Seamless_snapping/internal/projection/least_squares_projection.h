@@ -31,6 +31,7 @@
 // afterwards (Exact_constraint_projection, surface pipeline), and its final check decides.
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -89,7 +90,7 @@ public:
       return INVALID_INPUT;
     }
     m_ready = true;
-    m_factor_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    m_factor_ms = ms_since(t0);
     return SUCCESS;
   }
 

@@ -34,6 +34,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
 
 #include <array>
@@ -59,11 +60,6 @@ struct Quad_extraction
   std::vector<std::array<double, 3> > positions;   // per quad vertex
   Quad_surface mesh;                               // the verified quad mesh (vertices cells.points, faces cells.quads)
 };
-
-inline double ms_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // What the quad mesh is verified against (UVs in grid units): the quad valences, the cones (interior vertices of
 // valence other than 4), the Euler characteristic, the border loops, and twice the UV area, exactly: the sum over the

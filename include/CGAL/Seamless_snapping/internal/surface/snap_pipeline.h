@@ -54,6 +54,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
@@ -245,11 +246,7 @@ std::vector<double> in_grid_units(const Snap_state<TriangleMesh>& S, const std::
   return g;
 }
 
-typedef std::chrono::steady_clock Snap_clock;
-inline double ms_since(Snap_clock::time_point t)
-{
-  return std::chrono::duration<double, std::milli>(Snap_clock::now() - t).count();
-}
+typedef Timing_clock Snap_clock;
 
 // 1a. corner mesh, cut edges, sectors, cones, rotations k, align edges (Sec. 5, 5.1)
 template <class TriangleMesh, class HalfedgeUVMap, class SeamOf, class RotationOf, class ConstrainedOf>

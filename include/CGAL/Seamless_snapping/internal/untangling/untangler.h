@@ -54,6 +54,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/independent_parts.h>
 #include <CGAL/Seamless_snapping/internal/untangling/reference_shapes.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
@@ -174,7 +175,7 @@ public:
     if(opt.polish) {
       const std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
       Status s = polish(x, target, bad, opt, stats, message);
-      stats.polish_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+      stats.polish_ms = ms_since(t);
       if(s != SUCCESS) return s;
     }
     stats.not_positive = 0;
