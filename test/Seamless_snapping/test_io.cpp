@@ -39,6 +39,7 @@
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
+#include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
@@ -364,7 +365,7 @@ static void test_malformed()
 }
 
 // ------------------------------------------------------------------------------------------
-// The reader's connectivity (Halfedge_arrays, internal/io/halfedge_arrays.h) against CGAL::Euler::add_face(), face by
+// The reader's connectivity (Halfedge_arrays, internal/mesh/halfedge_arrays.h) against CGAL::Euler::add_face(), face by
 // face on a Surface_mesh, as the reader built it before issue 26, followed by the same fan test: the same faces refused
 // or the same halfedge structure, element by element (target, next, prev, face of every halfedge; halfedge of every
 // vertex and face).
@@ -493,6 +494,55 @@ static void test_euler_equivalence()
     ++files;
   }
   std::cout << "  " << files << " shared maps: the same halfedge structure\n";
+}
+
+// The quad extraction's connectivity: Halfedge_arrays::add_face() on quads, face by face (a refused face skipped, as
+// the extraction counts it and goes on), copied onto a Surface_mesh by copy_to(), against Euler::add_face() face by
+// face: the same faces refused, the same halfedge structure.
+static void test_quad_arrays_equivalence()
+{
+  std::cout << "io: Halfedge_arrays on quad soups builds what Euler::add_face() builds, and refuses the same quads\n";
+  std::mt19937 rng(25);
+  std::size_t added = 0, refused = 0;
+  const int rounds = sanitizer_subset() ? 300 : 3000;
+  for(int round = 0; round < rounds; ++round) {
+    const int n = 2 + int(rng() % 6);
+    std::vector<std::array<int, 4> > all;
+    for(int i = 0; i + 1 < n; ++i)
+      for(int j = 0; j + 1 < n; ++j) { const int a = i * n + j; all.push_back({a, a + 1, a + n + 1, a + n}); }
+    std::shuffle(all.begin(), all.end(), rng);
+    std::vector<std::array<int, 4> > quads;
+    const std::size_t keep = 1 + rng() % all.size();
+    for(std::size_t i = 0; i < keep; ++i) {
+      std::array<int, 4> q = all[i];
+      const unsigned r = rng() % 48;
+      if(r == 0) std::swap(q[1], q[3]);                              // reversed
+      if(r == 1 && !quads.empty()) q = quads[rng() % quads.size()];  // repeated
+      if(r == 2) for(int& v : q) v = int(rng() % (n * n));           // anywhere (maybe a corner twice)
+      if(r == 3) std::swap(q[0], q[1]);                              // self-crossing
+      quads.push_back(q);
+    }
+    Mesh ref, got;
+    for(int i = 0; i < n * n; ++i) ref.add_vertex(Point_3(i, 0, 0));
+    SS::internal::Halfedge_arrays a(std::size_t(n * n), quads.size(), 4);
+    for(std::size_t q = 0; q < quads.size(); ++q) {
+      const std::array<vertex_descriptor, 4> fv = {vertex_descriptor(quads[q][0]), vertex_descriptor(quads[q][1]),
+                                                   vertex_descriptor(quads[q][2]), vertex_descriptor(quads[q][3])};
+      const bool ref_ok = CGAL::Euler::add_face(fv, ref) != Mesh::null_face();
+      const bool got_ok = a.add_face(quads[q]);
+      CHECK(ref_ok == got_ok, "quad soup " << round << ", quad " << q << ": Euler::add_face " << (ref_ok ? "adds" : "refuses")
+                              << " it, Halfedge_arrays " << (got_ok ? "adds" : "refuses") << " it");
+      (ref_ok ? added : refused) += 1;
+    }
+    std::vector<vertex_descriptor> vs;
+    std::vector<halfedge_descriptor> hs;
+    std::vector<face_descriptor> fs;
+    SS::internal::copy_to(a, got, vs, hs, fs);
+    std::string why;
+    CHECK(same_halfedge_structure(ref, got, why), "quad soup " << round << ": " << why);
+  }
+  CHECK(added > 0 && refused > 0, "the soups exercise both outcomes");
+  std::cout << "  " << rounds << " random quad soups: " << added << " quads added, " << refused << " refused, the same as Euler::add_face()\n";
 }
 
 static void test_valid_variants()
@@ -1089,6 +1139,7 @@ int main(int argc, char** argv)
   test_json_strings();
   test_malformed();
   test_euler_equivalence();
+  test_quad_arrays_equivalence();
   test_valid_variants();
   test_write_failures(tmp);
   test_shared_data(tmp);

@@ -12,7 +12,7 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/parameters.h>
-#include <CGAL/Seamless_snapping/internal/io/halfedge_arrays.h>
+#include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
 #include <CGAL/Seamless_snapping/internal/io/line_reader.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -353,7 +353,7 @@ inline std::size_t weld_representatives(const std::vector<std::array<double, 3> 
 }
 
 // Soup -> mesh. The faces are first added to Halfedge_arrays (Euler::add_face() step for step, on index
-// arrays: halfedge_arrays.h), which is also the connectivity check; only when every face was accepted and
+// arrays: internal/mesh/halfedge_arrays.h), which is also the connectivity check; only when every face was accepted and
 // every vertex is manifold is `tm` touched, in one pass (add_vertex, add_edge, add_face and the set_*
 // functions of MutableFaceGraph), so that a failure leaves `tm` and `uv` untouched, and `tm` gets the
 // halfedges, edges and faces, in the same order, that Euler::add_face() face by face would give it.
@@ -400,14 +400,14 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   };
 
   // 3. the connectivity, on index arrays
-  Halfedge_arrays a(n_used, nf);
+  Seamless_snapping::internal::Halfedge_arrays a(n_used, nf);
   std::array<int, 3> fv;
   for(std::size_t f = 0; f < nf; ++f) {
     for(int k = 0; k < 3; ++k) fv[std::size_t(k)] = mesh_vertex[soup.face_v[f][std::size_t(k)]];
     if(fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])
       return fail(soup.face_line[f], std::string("degenerate face: a vertex appears twice") +
                                      (weld ? " (after welding bit-identical vertices)" : ""));
-    if(!a.add_triangle(fv)) {
+    if(!a.add_face(fv)) {
       for(int k = 0; k < 3; ++k) {
         const int h = a.halfedge(fv[std::size_t(k)], fv[std::size_t((k + 1) % 3)]);
         if(h >= 0 && !a.is_border(h))
@@ -444,33 +444,12 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   }
 
   // 4. the arrays onto tm: every element in the order Euler::add_face() creates it
-  const std::size_t nh = a.number_of_halfedges();
-  reserve(tm, static_cast<typename GT::vertices_size_type>(vertices(tm).size() + n_used),
-          static_cast<typename GT::edges_size_type>(edges(tm).size() + nh / 2),
-          static_cast<typename GT::faces_size_type>(faces(tm).size() + nf));
-  std::vector<vertex_descriptor> vs(n_used);
+  std::vector<vertex_descriptor> vs;
+  std::vector<halfedge_descriptor> hs;
+  std::vector<face_descriptor> fs;
+  Seamless_snapping::internal::copy_to(a, tm, vs, hs, fs);
   for(std::size_t i = 0; i < nv; ++i)
-    if(rep[i] == i && id[i] != none) {
-      vs[id[i]] = add_vertex(tm);
-      put(vpm, vs[id[i]], Point_3(soup.points[i][0], soup.points[i][1], soup.points[i][2]));
-    }
-  std::vector<halfedge_descriptor> hs(nh);
-  for(std::size_t h = 0; h < nh; h += 2) {
-    hs[h] = halfedge(add_edge(tm), tm);
-    hs[h + 1] = opposite(hs[h], tm);
-  }
-  std::vector<face_descriptor> fs(nf);
-  for(std::size_t f = 0; f < nf; ++f) {
-    fs[f] = add_face(tm);
-    set_halfedge(fs[f], hs[std::size_t(a.face_halfedge[f])], tm);
-  }
-  for(std::size_t h = 0; h < nh; ++h) {
-    const int i = int(h);
-    set_target(hs[h], vs[std::size_t(a.target(i))], tm);
-    set_next(hs[h], hs[std::size_t(a.next(i))], tm);
-    set_face(hs[h], a.is_border(i) ? GT::null_face() : fs[std::size_t(a.face(i))], tm);
-  }
-  for(std::size_t i = 0; i < n_used; ++i) set_halfedge(vs[i], hs[std::size_t(a.vertex_halfedge[i])], tm);
+    if(rep[i] == i && id[i] != none) put(vpm, vs[id[i]], Point_3(soup.points[i][0], soup.points[i][1], soup.points[i][2]));
   // corner convention: uv[h] = UV of target(h) in face(h); halfedge k of the triangle (a0, a1, a2)
   // points to a_{k+1}, so corner k is the target of halfedge k + 2 (mod 3), face_halfedge = halfedge 2
   if(corners != nullptr) corners->assign(nf, {});

@@ -19,15 +19,17 @@
 //      exact UV area, for the verification;
 //   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h);
 //   3. the quad mesh: 3D positions (barycentric coordinates of each integer point, in double), the cells
-//      added face by face to a Surface_mesh (add_face() refuses a face with a corner twice or an edge
-//      already taken in its direction), which must end up manifold (else refused, with what is wrong),
-//      measured, and verified against the map (quad_mesh_checks.h).
+//      added face by face as Euler::add_face() adds them (on index arrays, internal/mesh/halfedge_arrays.h:
+//      a face with a corner twice or an edge already taken in its direction is refused), then copied onto a
+//      Surface_mesh, which must be manifold (else refused, with what is wrong), measured, and verified against
+//      the map (quad_mesh_checks.h).
 // No tracing and no rational construction before stage 3: every decision is an exact predicate on
 // doubles and integers (the tracer's and the patch layout's rationals are not needed on the grid).
 
 #include <CGAL/Seamless_snapping/Quad_mesh_report.h>
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
+#include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_mesh_checks.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
@@ -274,19 +276,19 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
   t0 = std::chrono::steady_clock::now();
   const Quad_cells& cells = out.cells;
   out.positions.clear();
+  for(const Integer_point& p : cells.points) out.positions.push_back(integer_point_position(cm, p, vertex_point));
+  // the cells as faces (Euler::add_face() on index arrays: refused where it refuses them), then onto the mesh
+  Halfedge_arrays a(cells.points.size(), cells.quads.size(), 4);
+  std::size_t refused = 0;
+  for(const std::array<int, 4>& q : cells.quads) refused += a.add_face(q) ? 0 : 1;
   Quad_surface& m = out.mesh;
   m.clear();
-  m.reserve(Quad_surface::size_type(cells.points.size()), Quad_surface::size_type(2 * cells.quads.size() + cells.points.size()),
-            Quad_surface::size_type(cells.quads.size()));
-  for(const Integer_point& p : cells.points) {
-    out.positions.push_back(integer_point_position(cm, p, vertex_point));
-    const std::array<double, 3>& x = out.positions.back();
-    m.add_vertex(Quad_surface::Point(x[0], x[1], x[2]));
-  }
-  std::size_t refused = 0;
-  for(const std::array<int, 4>& q : cells.quads)
-    refused += m.add_face(Quad_surface::Vertex_index(q[0]), Quad_surface::Vertex_index(q[1]), Quad_surface::Vertex_index(q[2]),
-                          Quad_surface::Vertex_index(q[3])) == Quad_surface::null_face() ? 1 : 0;
+  std::vector<Quad_surface::Vertex_index> vs;
+  std::vector<Quad_surface::Halfedge_index> hs;
+  std::vector<Quad_surface::Face_index> fs;
+  copy_to(a, m, vs, hs, fs);
+  for(std::size_t i = 0; i < vs.size(); ++i)
+    m.point(vs[i]) = Quad_surface::Point(out.positions[i][0], out.positions[i][1], out.positions[i][2]);
   measure_quad_mesh(m, r);
   if(refused > 0 || r.non_manifold_vertices > 0) {
     std::string first;

@@ -7,13 +7,14 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
-#define CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_MESH_HALFEDGE_ARRAYS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_MESH_HALFEDGE_ARRAYS_H
 
-// The halfedge structure that a sequence of CGAL::Euler::add_face() calls builds from a triangle soup,
-// built on plain index arrays, then replayed onto a mesh in one pass (OBJ reader, IO/OBJ.h).
+// The halfedge structure that a sequence of CGAL::Euler::add_face() calls builds from a polygon soup,
+// built on plain index arrays, then replayed onto a mesh in one pass (copy_to()): the OBJ reader's
+// triangles (IO/OBJ.h) and the quad extraction's cells (internal/quad/quad_extraction.h).
 //
-// add_triangle() is CGAL::Euler::add_face() (CGAL 5.5, boost/graph/Euler_operations.h) step for step:
+// add_face() is CGAL::Euler::add_face() (CGAL 5.5, boost/graph/Euler_operations.h) step for step:
 // the same tests in the same order (isolated/border vertices, halfedge(u, v) found by walking around v
 // from halfedge(v), the "patch re-linking" of existing border halfedges, the cached set_next() calls,
 // adjust_incoming_halfedge()), on arrays instead of a generic FaceGraph. So it accepts and refuses the
@@ -23,10 +24,13 @@
 // instructions per triangle (generic descriptors, three std::vector per call), and the reader used to
 // run it twice (on a scratch mesh to validate, then on the caller's mesh); on the arrays it is a few
 // hundred, and the caller's mesh is written once, with add_vertex/add_edge/add_face and the set_*
-// functions of MutableFaceGraph.
+// functions of MutableFaceGraph. The same for the quad mesh of the extraction (Surface_mesh::add_face()
+// is Euler::add_face()).
 //
 // Numbering (as in Surface_mesh): edge e has the halfedges 2e and 2e + 1 = opposite; halfedge 2e points
 // from the first to the second vertex of the face side that created the edge. -1 = null.
+
+#include <boost/graph/graph_traits.hpp>
 
 #include <array>
 #include <cstddef>
@@ -35,7 +39,6 @@
 
 namespace CGAL {
 namespace Seamless_snapping {
-namespace IO {
 namespace internal {
 
 class Halfedge_arrays
@@ -49,12 +52,13 @@ public:
   std::vector<int> vertex_halfedge;             // per vertex: halfedge(v), an incoming halfedge, -1 = isolated
   std::vector<int> face_halfedge;               // per face: halfedge(f)
 
-  explicit Halfedge_arrays(std::size_t n_vertices, std::size_t n_faces_hint = 0)
+  // `n_faces_hint` faces of `face_degree` sides expected
+  explicit Halfedge_arrays(std::size_t n_vertices, std::size_t n_faces_hint = 0, std::size_t face_degree = 3)
     : vertex_halfedge(n_vertices, -1)
   {
     face_halfedge.reserve(n_faces_hint);
-    // a closed triangle mesh has 3 halfedges per face; a border adds a few
-    h_.reserve(3 * n_faces_hint + n_faces_hint / 8 + 16);
+    // a closed mesh has face_degree halfedges per face; a border adds a few
+    h_.reserve(face_degree * n_faces_hint + n_faces_hint / 8 + 16);
   }
 
   std::size_t number_of_halfedges() const { return h_.size(); }
@@ -95,14 +99,19 @@ public:
     return -1;
   }
 
-  // CGAL::Euler::add_face({a, b, c}, g): false (and nothing changed) where add_face() returns null_face()
-  bool add_triangle(const std::array<int, 3>& vertices)
+  // CGAL::Euler::add_face(vertices, g) for a face of N >= 3 vertices: false (and nothing changed) where
+  // add_face() returns null_face()
+  template <std::size_t N>
+  bool add_face(const std::array<int, N>& vertices)
   {
-    const int n = 3;
+    static_assert(N >= 3, "a face has at least three vertices");
+    const int n = int(N);
     const int* v = vertices.data();
-    if(v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) return false;   // "check that every vertex is unique"
-    int he[3];
-    bool is_new[3];
+    for(int i = 0; i < n; ++i)                                       // "check that every vertex is unique"
+      for(int j = i + 1; j < n; ++j)
+        if(v[i] == v[j]) return false;
+    int he[N];
+    bool is_new[N];
     for(int i = 0, ii = 1; i < n; ++i, ++ii, ii %= n) {
       if(vertex_halfedge[std::size_t(v[i])] >= 0 && border_halfedge_of(v[i]) < 0) return false;
       he[i] = halfedge(v[i], v[ii]);
@@ -111,7 +120,7 @@ public:
     }
 
     // the cache of set_next() calls (applied at the end, in order)
-    std::array<std::pair<int, int>, 24> cache;
+    std::array<std::pair<int, int>, 6 * N> cache;        // at most 3 re-links and 3 links per side
     int cached = 0;
     auto set_next_later = [&](int h, int nh) { cache[std::size_t(cached++)] = std::make_pair(h, nh); };
 
@@ -213,9 +222,43 @@ private:
   }
 };
 
+// The structure of `a` onto the MutableFaceGraph g, in one pass: its vertices, then its edges, then its faces, each
+// in the order of the arrays (the order in which Euler::add_face() face by face would create them in g), with their
+// next, target, face and halfedge. `vs`, `hs`, `fs`: the new elements of g, by index in the arrays.
+template <class FaceGraph>
+void copy_to(const Halfedge_arrays& a, FaceGraph& g, std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>& vs,
+             std::vector<typename boost::graph_traits<FaceGraph>::halfedge_descriptor>& hs,
+             std::vector<typename boost::graph_traits<FaceGraph>::face_descriptor>& fs)
+{
+  typedef boost::graph_traits<FaceGraph> GT;
+  const std::size_t nv = a.vertex_halfedge.size(), nh = a.number_of_halfedges(), nf = a.number_of_faces();
+  reserve(g, static_cast<typename GT::vertices_size_type>(vertices(g).size() + nv),
+          static_cast<typename GT::edges_size_type>(edges(g).size() + nh / 2),
+          static_cast<typename GT::faces_size_type>(faces(g).size() + nf));
+  vs.resize(nv);
+  for(std::size_t i = 0; i < nv; ++i) vs[i] = add_vertex(g);
+  hs.resize(nh);
+  for(std::size_t h = 0; h < nh; h += 2) {
+    hs[h] = halfedge(add_edge(g), g);
+    hs[h + 1] = opposite(hs[h], g);
+  }
+  fs.resize(nf);
+  for(std::size_t f = 0; f < nf; ++f) {
+    fs[f] = add_face(g);
+    set_halfedge(fs[f], hs[std::size_t(a.face_halfedge[f])], g);
+  }
+  for(std::size_t h = 0; h < nh; ++h) {
+    const int i = int(h);
+    set_target(hs[h], vs[std::size_t(a.target(i))], g);
+    set_next(hs[h], hs[std::size_t(a.next(i))], g);
+    set_face(hs[h], a.is_border(i) ? GT::null_face() : fs[std::size_t(a.face(i))], g);
+  }
+  for(std::size_t i = 0; i < nv; ++i)
+    if(a.vertex_halfedge[i] >= 0) set_halfedge(vs[i], hs[std::size_t(a.vertex_halfedge[i])], g);
+}
+
 } // namespace internal
-} // namespace IO
 } // namespace Seamless_snapping
 } // namespace CGAL
 
-#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_HALFEDGE_ARRAYS_H
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_MESH_HALFEDGE_ARRAYS_H
