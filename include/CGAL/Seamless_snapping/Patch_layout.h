@@ -94,7 +94,7 @@ struct Patch_layout
   std::vector<Layout_mesh::Vertex_index> node_vertices;              ///< the nodes, as vertices of `mesh`
   std::vector<std::vector<Layout_mesh::Vertex_index> > arc_chains;   ///< every arc as the vertices of `mesh` from one node to the next along arc and border edges
   std::size_t unplaced_segments = 0;   ///< trace segments that fit no piece of their face (inexact maps only)
-  CGAL::Gmpq uv_area;                  ///< UV area of the traced mesh, exact (sum over its faces)
+  CGAL::Gmpq uv_area;                  ///< UV area of the traced mesh, exact (sum over its faces); 0 where no layout was built
 
   /// every patch is a quad, every segment was placed, and the Euler characteristics agree
   bool is_valid() const

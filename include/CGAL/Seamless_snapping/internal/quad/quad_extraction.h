@@ -36,6 +36,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
+#include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
 
@@ -64,24 +65,15 @@ struct Quad_extraction
 };
 
 // What the quad mesh is verified against (UVs in grid units): the quad valences, the cones (interior vertices of
-// valence other than 4), the Euler characteristic, the border loops, and twice the UV area, exactly: the sum over the
-// faces of det(a, b, c) = a x b + b x c + c x a (shoelace about the origin), in which the two terms of an edge whose
-// faces agree on its UVs cancel exactly; what is left are the terms of the sides on cut edges and on the border, each
-// an exact product of doubles (CGAL::Mpzf).
+// valence other than 4), the Euler characteristic, the border loops, and twice the UV area, exactly (uv_area.h).
 inline Map_facts map_facts(const Corner_mesh& cm)
 {
   Map_facts facts;
   facts.valence = quad_valences(cm).valence;
+  facts.twice_area = twice_uv_area(cm);
   std::vector<char> used(std::size_t(cm.n_vertices), 0);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    used[std::size_t(cm.target[h])] = 1;
-    const int a = cm.prev[h], o = cm.opp[h];
-    if(!cm.is_border_halfedge(o) && cm.u[h] == cm.u[cm.prev[o]] && cm.v[h] == cm.v[cm.prev[o]] && cm.u[a] == cm.u[o] &&
-       cm.v[a] == cm.v[o])
-      continue;                                                     // cancels with the opposite side
-    facts.twice_area += CGAL::Mpzf(cm.u[a]) * CGAL::Mpzf(cm.v[h]) - CGAL::Mpzf(cm.v[a]) * CGAL::Mpzf(cm.u[h]);
-  }
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h)) used[std::size_t(cm.target[h])] = 1;
   std::size_t vertices = 0;
   for(int v = 0; v < cm.n_vertices; ++v) {
     vertices += used[std::size_t(v)];

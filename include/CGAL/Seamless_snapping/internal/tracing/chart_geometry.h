@@ -23,6 +23,7 @@
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
 
 namespace CGAL {
@@ -88,7 +89,10 @@ inline FT orientation_determinant(const Exact_uv& a, const Exact_uv& b, const Ex
 // sign of the UV orientation of face(h) (corners prev(h), h, next(h)): +1 counter-clockwise
 inline int face_orientation(const Corner_mesh& cm, int h)
 {
-  return CGAL::sign(orientation_determinant(corner_uv(cm, cm.prev[h]), corner_uv(cm, h), corner_uv(cm, cm.next[h])));
+  // the sign of the exact determinant of the corners' doubles: CGAL's filtered predicate, no rationals
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+  const int a = cm.prev[h], c = cm.next[h];
+  return int(CGAL::orientation(P(cm.u[a], cm.v[a]), P(cm.u[h], cm.v[h]), P(cm.u[c], cm.v[c])));
 }
 
 // barycentric coordinates of p with respect to the corners (c[0], c[1], c[2]) of a non-degenerate

@@ -19,6 +19,7 @@
 //                        then the arc/border graph (nodes, arcs, Euler characteristic).
 
 #include <CGAL/Seamless_snapping/Patch_layout.h>
+#include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 #include <CGAL/Seamless_snapping/internal/tracing/face_subdivision.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -356,16 +357,13 @@ inline void build_patch_layout(const Tracing_map& map, const std::vector<Trace_r
   const Corner_mesh& cm = map.cm;
   L = Patch_layout();
   std::size_t folded = 0;
-  for(int f = 0; f < cm.n_faces; ++f) {
-    const int h = map.face_halfedge[std::size_t(f)];
-    if(face_orientation(cm, h) <= 0) ++folded;
-    else L.uv_area += orientation_determinant(corner_uv(cm, cm.prev[h]), corner_uv(cm, h), corner_uv(cm, cm.next[h])) / 2;
-  }
+  for(int f = 0; f < cm.n_faces; ++f) folded += face_orientation(cm, map.face_halfedge[std::size_t(f)]) <= 0 ? 1 : 0;
   if(folded > 0) {
     L.message = std::to_string(folded) + " faces are flipped or degenerate in UV: a patch layout needs a locally "
                 "injective map";
     return;
   }
+  L.uv_area = CGAL::Gmpq(twice_uv_area(cm)) / 2;                  // every face positive: the sum of their areas
   std::vector<const Raw_segment*> segments;
   for(const Trace_run& r : runs)
     for(const Raw_segment& s : r.segments) segments.push_back(&s);
