@@ -25,6 +25,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
+#include <CGAL/Interval_nt.h>
 
 namespace CGAL {
 namespace Seamless_snapping {
@@ -84,6 +85,45 @@ inline int direction_code(int m, const FT& xu, const FT& xv)
 inline FT orientation_determinant(const Exact_uv& a, const Exact_uv& b, const Exact_uv& c)
 {
   return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+}
+
+// Double intervals enclosing the two coordinates of an Exact_uv (CGAL::to_interval), to decide signs and equalities
+// without the rationals where the doubles suffice.
+struct Uv_box
+{
+  std::pair<double, double> u, v;
+  explicit Uv_box(const Exact_uv& p) : u(CGAL::to_interval(p.u)), v(CGAL::to_interval(p.v)) {}
+  Uv_box(double pu, double pv) : u(pu, pu), v(pv, pv) {}              // a point of doubles: exact
+  bool may_be(double pu, double pv) const { return u.first <= pu && pu <= u.second && v.first <= pv && pv <= v.second; }
+};
+
+// the sign of orientation_determinant(a, b, c), exactly: by interval arithmetic on the boxes where that decides it
+// (a filter: the interval encloses the exact determinant), else (always where it is zero) by the rationals
+inline int orientation_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b, const Uv_box& B, const Exact_uv& c,
+                            const Uv_box& C)
+{
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    typedef CGAL::Interval_nt<false> I;
+    const I d = (I(B.u) - I(A.u)) * (I(C.v) - I(A.v)) - (I(B.v) - I(A.v)) * (I(C.u) - I(A.u));
+    if(d.inf() > 0) return 1;
+    if(d.sup() < 0) return -1;
+  }
+  return CGAL::sign(orientation_determinant(a, b, c));
+}
+
+// the same for orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c)
+inline int corner_side_sign(const Corner_mesh& cm, int a, int b, const Exact_uv& c, const Uv_box& C)
+{
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    typedef CGAL::Interval_nt<false> I;
+    const I au(cm.u[a]), av(cm.v[a]), bu(cm.u[b]), bv(cm.v[b]);
+    const I d = (bu - au) * (I(C.v) - av) - (bv - av) * (I(C.u) - au);
+    if(d.inf() > 0) return 1;
+    if(d.sup() < 0) return -1;
+  }
+  return CGAL::sign(orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c));
 }
 
 // sign of the UV orientation of face(h) (corners prev(h), h, next(h)): +1 counter-clockwise

@@ -90,7 +90,14 @@ struct Edge_transition
 {
   int k = 0;
   Exact_uv t;
-  Exact_uv apply(const Exact_uv& x) const { Exact_uv r = rotate(k, x); return Exact_uv{r.u + t.u, r.v + t.v}; }
+  // R^0 x + 0 (no rational arithmetic: most transitions of a patch layout are the identity)
+  bool is_identity() const { return k == 0 && CGAL::is_zero(t.u) && CGAL::is_zero(t.v); }
+  Exact_uv apply(const Exact_uv& x) const
+  {
+    if(is_identity()) return x;
+    Exact_uv r = rotate(k, x);
+    return Exact_uv{r.u + t.u, r.v + t.v};
+  }
 };
 
 inline Edge_transition edge_transition(const Corner_mesh& cm, const Cut_rotations& rot, int h, bool anchor_target)

@@ -14,7 +14,8 @@
 // of every face, in its own chart, becomes a set of convex polygons. The segments are inserted in the
 // order they were laid (Raw_segment::order). A trace stops at every trail laid before it (T-junction),
 // so each segment lies in one polygon and ends on its boundary: it splits that polygon in two, or, when
-// it runs along the polygon's boundary, marks those sides. All points are exact (CGAL::Gmpq) and are
+// it runs along the polygon's boundary, marks those sides. All points are exact (CGAL::Gmpq; the sign tests
+// filtered by interval arithmetic on their double enclosures, orientation_sign()) and are
 // identified across faces: a vertex by its index, a point of an edge by its parameter along the edge
 // (the same from both sides of an exact cut), a point inside a face by its UV in that face's chart.
 // A segment that fits no polygon (possible on inexact maps only) is counted, not inserted.
@@ -48,6 +49,7 @@ struct Layout_polygon
   int face = -1;              // the face of the map it lies in
   std::vector<int> vertex;    // Layout_vertex indices, counter-clockwise in the chart of `face`
   std::vector<Exact_uv> uv;   // their UVs in that chart
+  std::vector<Uv_box> box;    // their UVs' double intervals (the filter of the sign tests)
   std::vector<char> arc;      // arc[i] != 0: the side from corner i to corner i + 1 lies on a trace
 };
 
@@ -145,6 +147,7 @@ private:
       const int c = corner(f, i), h = cm_.next[c];          // the side from corner c to corner next(c) is halfedge h
       P.vertex.push_back(cm_.target[c]);
       P.uv.push_back(corner_uv(cm_, c));
+      P.box.emplace_back(cm_.u[c], cm_.v[c]);
       const std::vector<FT>& ts = edge_params_[std::size_t(cm_.edge[h])];
       const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
       const Exact_uv A = corner_uv(cm_, c), B = corner_uv(cm_, h);
@@ -153,6 +156,7 @@ private:
         const Exact_uv p = lerp(A, B, t);
         P.vertex.push_back(vertex_id(f, p));
         P.uv.push_back(p);
+        P.box.emplace_back(p);
       }
     }
     P.arc.assign(P.vertex.size(), 0);
@@ -160,22 +164,24 @@ private:
     out_.polygons.push_back(std::move(P));
   }
 
-  static int side_sign(const Layout_polygon& P, std::size_t i, const Exact_uv& x)
+  // the side of the line of side i of P on which x (with its box X) lies
+  static int side_sign(const Layout_polygon& P, std::size_t i, const Exact_uv& x, const Uv_box& X)
   {
-    return CGAL::sign(orientation_determinant(P.uv[i], P.uv[(i + 1) % P.uv.size()], x));
+    const std::size_t j = (i + 1) % P.uv.size();
+    return orientation_sign(P.uv[i], P.box[i], P.uv[j], P.box[j], x, X);
   }
 
-  static bool contains(const Layout_polygon& P, const Exact_uv& x, bool strictly)
+  static bool contains(const Layout_polygon& P, const Exact_uv& x, const Uv_box& X, bool strictly)
   {
     for(std::size_t i = 0; i < P.uv.size(); ++i) {
-      const int s = side_sign(P, i, x);
+      const int s = side_sign(P, i, x, X);
       if(s < 0 || (strictly && s == 0)) return false;
     }
     return true;
   }
 
   // makes p a corner of every polygon of face f that has p inside one of its sides
-  void add_corner(int f, const Exact_uv& p, int id)
+  void add_corner(int f, const Exact_uv& p, const Uv_box& box, int id)
   {
     for(int k : face_polygons_[std::size_t(f)]) {
       Layout_polygon& P = out_.polygons[std::size_t(k)];
@@ -183,11 +189,12 @@ private:
       for(std::size_t i = 0; i < P.uv.size(); ++i) {
         const Exact_uv& a = P.uv[i];
         const Exact_uv& b = P.uv[(i + 1) % P.uv.size()];
-        if(side_sign(P, i, p) != 0) continue;
+        if(side_sign(P, i, p, box) != 0) continue;
         if(!CGAL::is_positive((p.u - a.u) * (b.u - a.u) + (p.v - a.v) * (b.v - a.v)) ||
            !CGAL::is_positive((p.u - b.u) * (a.u - b.u) + (p.v - b.v) * (a.v - b.v)))
           continue;
         P.uv.insert(P.uv.begin() + std::ptrdiff_t(i + 1), p);
+        P.box.insert(P.box.begin() + std::ptrdiff_t(i + 1), box);
         P.vertex.insert(P.vertex.begin() + std::ptrdiff_t(i + 1), id);
         P.arc.insert(P.arc.begin() + std::ptrdiff_t(i + 1), P.arc[i]);
         break;
@@ -202,12 +209,13 @@ private:
     if(p == q) return;
     const int f = s.face;
     const Exact_uv mid{(p.u + q.u) / 2, (p.v + q.v) / 2};
+    const Uv_box p_box(p), q_box(q), mid_box(mid);
     int pick = -1;
     bool inside = false;
     for(int k : face_polygons_[std::size_t(f)]) {
       const Layout_polygon& P = out_.polygons[std::size_t(k)];
-      if(!contains(P, p, false) || !contains(P, q, false)) continue;
-      if(contains(P, mid, true)) { pick = k; inside = true; break; }
+      if(!contains(P, p, p_box, false) || !contains(P, q, q_box, false)) continue;
+      if(contains(P, mid, mid_box, true)) { pick = k; inside = true; break; }
       if(pick < 0) pick = k;                                 // along its boundary
     }
     if(pick < 0) {
@@ -216,8 +224,8 @@ private:
       return;
     }
     const int ip = vertex_id(f, p), iq = vertex_id(f, q);
-    add_corner(f, p, ip);
-    add_corner(f, q, iq);
+    add_corner(f, p, p_box, ip);
+    add_corner(f, q, q_box, iq);
     Layout_polygon& P = out_.polygons[std::size_t(pick)];
     const std::size_t n = P.uv.size();
     const std::size_t i = std::size_t(std::find(P.vertex.begin(), P.vertex.end(), ip) - P.vertex.begin());
@@ -225,18 +233,18 @@ private:
     if(!inside) {              // along the boundary: mark the straight way from i to j (forward or backward)
       bool straight = true;
       for(std::size_t k = (i + 1) % n; k != j && straight; k = (k + 1) % n)
-        straight = CGAL::is_zero(orientation_determinant(p, q, P.uv[k]));
+        straight = orientation_sign(p, p_box, q, q_box, P.uv[k], P.box[k]) == 0;
       for(std::size_t k = straight ? i : j; k != (straight ? j : i); k = (k + 1) % n) P.arc[k] = 1;
       return;
     }
     Layout_polygon A, B;
     A.face = B.face = f;
     for(std::size_t k = i; ; k = (k + 1) % n) {
-      A.vertex.push_back(P.vertex[k]); A.uv.push_back(P.uv[k]); A.arc.push_back(k == j ? 1 : P.arc[k]);
+      A.vertex.push_back(P.vertex[k]); A.uv.push_back(P.uv[k]); A.box.push_back(P.box[k]); A.arc.push_back(k == j ? 1 : P.arc[k]);
       if(k == j) break;
     }
     for(std::size_t k = j; ; k = (k + 1) % n) {
-      B.vertex.push_back(P.vertex[k]); B.uv.push_back(P.uv[k]); B.arc.push_back(k == i ? 1 : P.arc[k]);
+      B.vertex.push_back(P.vertex[k]); B.uv.push_back(P.uv[k]); B.box.push_back(P.box[k]); B.arc.push_back(k == i ? 1 : P.arc[k]);
       if(k == i) break;
     }
     P = std::move(A);

@@ -76,10 +76,11 @@ struct Raw_point
 inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x)
 {
   const int c[3] = {h, cm.next[h], cm.next[cm.next[h]]};
-  for(int i = 0; i < 3; ++i) if(corner_uv(cm, c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
+  const Uv_box X(x);                                 // the rationals only where its box cannot decide
+  for(int i = 0; i < 3; ++i)
+    if(X.may_be(cm.u[c[i]], cm.v[c[i]]) && corner_uv(cm, c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
   for(int j = 0; j < 3; ++j)
-    if(CGAL::is_zero(orientation_determinant(corner_uv(cm, cm.prev[c[j]]), corner_uv(cm, c[j]), x)))
-      return Raw_point{ON_EDGE, c[j], x};
+    if(corner_side_sign(cm, cm.prev[c[j]], c[j], x, X) == 0) return Raw_point{ON_EDGE, c[j], x};
   return Raw_point{IN_FACE, -1, x};
 }
 

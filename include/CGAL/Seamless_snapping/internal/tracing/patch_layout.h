@@ -44,11 +44,14 @@ typedef Layout_mesh::Edge_index Layout_edge_index;
 // X -> R^k X + t composed with other transitions (Edge_transition maps a chart into another)
 inline Edge_transition inverse(const Edge_transition& T)
 {
+  if(T.is_identity()) return T;
   const Exact_uv r = rotate(-T.k, T.t);
   return Edge_transition{direction_mod4(-T.k), Exact_uv{-r.u, -r.v}};
 }
 inline Edge_transition compose(const Edge_transition& A, const Edge_transition& B)   // A after B
 {
+  if(B.is_identity()) return A;
+  if(A.is_identity()) return B;
   const Exact_uv r = rotate(A.k, B.t);
   return Edge_transition{direction_mod4(A.k + B.k), Exact_uv{r.u + A.t.u, r.v + A.t.v}};
 }
