@@ -97,33 +97,33 @@ struct Uv_box
   bool may_be(double pu, double pv) const { return u.first <= pu && pu <= u.second && v.first <= pv && pv <= v.second; }
 };
 
-// the sign of orientation_determinant(a, b, c), exactly: by interval arithmetic on the boxes where that decides it
-// (a filter: the interval encloses the exact determinant), else (always where it is zero) by the rationals
+// the sign of (b - a) x (c - a) from intervals enclosing the six coordinates: 1 or -1 where the interval of the
+// determinant decides it, 0 where it does not (a filter: the caller then decides it exactly)
+inline int filtered_orientation_sign(const std::pair<double, double>& au, const std::pair<double, double>& av,
+                                     const std::pair<double, double>& bu, const std::pair<double, double>& bv,
+                                     const std::pair<double, double>& cu, const std::pair<double, double>& cv)
+{
+  CGAL::Protect_FPU_rounding<true> upward;
+  typedef CGAL::Interval_nt<false> I;
+  const I d = (I(bu) - I(au)) * (I(cv) - I(av)) - (I(bv) - I(av)) * (I(cu) - I(au));
+  return d.inf() > 0 ? 1 : d.sup() < 0 ? -1 : 0;
+}
+
+// the sign of orientation_determinant(a, b, c), exactly: filtered on the boxes, else (always where it is zero) by the
+// rationals
 inline int orientation_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b, const Uv_box& B, const Exact_uv& c,
                             const Uv_box& C)
 {
-  {
-    CGAL::Protect_FPU_rounding<true> upward;
-    typedef CGAL::Interval_nt<false> I;
-    const I d = (I(B.u) - I(A.u)) * (I(C.v) - I(A.v)) - (I(B.v) - I(A.v)) * (I(C.u) - I(A.u));
-    if(d.inf() > 0) return 1;
-    if(d.sup() < 0) return -1;
-  }
-  return CGAL::sign(orientation_determinant(a, b, c));
+  const int s = filtered_orientation_sign(A.u, A.v, B.u, B.v, C.u, C.v);
+  return s != 0 ? s : CGAL::sign(orientation_determinant(a, b, c));
 }
 
 // the same for orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c)
 inline int corner_side_sign(const Corner_mesh& cm, int a, int b, const Exact_uv& c, const Uv_box& C)
 {
-  {
-    CGAL::Protect_FPU_rounding<true> upward;
-    typedef CGAL::Interval_nt<false> I;
-    const I au(cm.u[a]), av(cm.v[a]), bu(cm.u[b]), bv(cm.v[b]);
-    const I d = (bu - au) * (I(C.v) - av) - (bv - av) * (I(C.u) - au);
-    if(d.inf() > 0) return 1;
-    if(d.sup() < 0) return -1;
-  }
-  return CGAL::sign(orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c));
+  const Uv_box A(cm.u[a], cm.v[a]), B(cm.u[b], cm.v[b]);
+  const int s = filtered_orientation_sign(A.u, A.v, B.u, B.v, C.u, C.v);
+  return s != 0 ? s : CGAL::sign(orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c));
 }
 
 // sign of the UV orientation of face(h) (corners prev(h), h, next(h)): +1 counter-clockwise

@@ -122,9 +122,11 @@ private:
     return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0)};
   }
 
-  int vertex_id(int f, const Exact_uv& p)
+  int vertex_id(int f, const Exact_uv& p) { return vertex_id(f, p, place(f, p)); }
+
+  // the same where the place q of p is known
+  int vertex_id(int f, const Exact_uv& p, const Place& q)
   {
-    const Place q = place(f, p);
     if(q.kind == AT_VERTEX) return cm_.target[q.h];
     Layout_vertex lv;
     lv.kind = q.kind;
@@ -151,10 +153,10 @@ private:
       const std::vector<FT>& ts = edge_params_[std::size_t(cm_.edge[h])];
       const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
       const Exact_uv A = corner_uv(cm_, c), B = corner_uv(cm_, h);
-      for(std::size_t k = 0; k < ts.size(); ++k) {
-        const FT t = along ? ts[k] : FT(1) - ts[ts.size() - 1 - k];
-        const Exact_uv p = lerp(A, B, t);
-        P.vertex.push_back(vertex_id(f, p));
+      for(std::size_t k = 0; k < ts.size(); ++k) {           // strictly inside the side: its place is known
+        const FT& t_edge = ts[along ? k : ts.size() - 1 - k];
+        const Exact_uv p = lerp(A, B, along ? t_edge : FT(1) - t_edge);
+        P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge}));
         P.uv.push_back(p);
         P.box.emplace_back(p);
       }

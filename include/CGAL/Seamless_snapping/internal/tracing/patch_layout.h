@@ -22,6 +22,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 #include <CGAL/Seamless_snapping/internal/tracing/face_subdivision.h>
 
+#include <CGAL/Mpzf.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <array>
@@ -137,10 +138,16 @@ public:
 
   void run()
   {
+    // a polygon alone in its input face is the whole triangle (with points on its sides): its area is the triangle's,
+    // an exact determinant of the corners' doubles (most faces: no trace crosses them)
+    std::vector<int> pieces(std::size_t(map_.cm.n_faces), 0);
+    for(const Layout_polygon& P : S_.polygons) ++pieces[std::size_t(P.face)];
     for(Layout_face_index f : mesh_.faces()) {
       Layout_patch& p = patch(f);
       ++p.polygons;
-      p.area += polygon_area(polygon(f).uv);
+      const int face = polygon(f).face;
+      p.area += pieces[std::size_t(face)] == 1 ? triangle_area(map_.face_halfedge[std::size_t(face)])
+                                               : polygon_area(polygon(f).uv);
     }
     open_euler_characteristics();
     unfold();
@@ -163,6 +170,15 @@ private:
   std::vector<std::array<FT, 4> > box_;                      // per patch: umin, umax, vmin, vmax
 
   const Layout_polygon& polygon(Layout_face_index f) const { return S_.polygons[std::size_t(f)]; }
+  // the UV area of the input face of h, exactly
+  FT triangle_area(int h) const
+  {
+    const Corner_mesh& cm = map_.cm;
+    const int a = cm.prev[h], c = cm.next[h];
+    typedef CGAL::Mpzf Z;
+    const Z twice = (Z(cm.u[h]) - Z(cm.u[a])) * (Z(cm.v[c]) - Z(cm.v[a])) - (Z(cm.v[h]) - Z(cm.v[a])) * (Z(cm.u[c]) - Z(cm.u[a]));
+    return FT(CGAL::Gmpq(twice)) / 2;
+  }
   Layout_patch& patch(Layout_face_index f) const { return L_.patches[std::size_t(get(patch_, f))]; }
   bool cuts(Layout_halfedge_index h) const { return get(is_arc_, mesh_.edge(h)) != 0 || mesh_.is_border(mesh_.edge(h)); }
   bool patch_boundary(Layout_halfedge_index h) const { return !mesh_.is_border(h) && cuts(h); }
