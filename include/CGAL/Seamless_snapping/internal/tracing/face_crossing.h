@@ -108,6 +108,9 @@ inline Edge_transition edge_transition(const Corner_mesh& cm, const Cut_rotation
   // corner of the anchor in face(h) and in face(o)
   const int wi = anchor_target ? h : cm.prev[h];
   const int wj = anchor_target ? cm.prev[o] : o;
+  double ru, rv;                                  // R^k of the anchor's doubles, exactly (negations and a swap)
+  rotate_quarter_turns(T.k, cm.u[wi], cm.v[wi], ru, rv);
+  if(ru == cm.u[wj] && rv == cm.v[wj]) return T;  // t = 0 (an edge that is no cut: no rational arithmetic)
   const Exact_uv r = rotate(T.k, corner_uv(cm, wi)), q = corner_uv(cm, wj);
   T.t = Exact_uv{q.u - r.u, q.v - r.v};
   return T;

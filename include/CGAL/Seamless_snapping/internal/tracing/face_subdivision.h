@@ -23,6 +23,7 @@
 #include <CGAL/Seamless_snapping/internal/tracing/isoline_tracer.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 #include <tuple>
@@ -73,21 +74,27 @@ public:
     out_ = Face_subdivision();
     out_.vertices.resize(std::size_t(cm_.n_vertices));
     for(int v = 0; v < cm_.n_vertices; ++v) out_.vertices[std::size_t(v)].vertex = v;
+    std::sort(segments.begin(), segments.end(),
+              [](const Raw_segment* a, const Raw_segment* b) { return a->order < b->order; });
+    // where the segments' ends lie (located once), and the points of every edge
+    std::vector<std::array<Place, 2> > ends;
+    ends.reserve(segments.size());
     edge_params_.assign(std::size_t(cm_.n_edges), {});
-    for(const Raw_segment* s : segments)
-      for(const Exact_uv* p : {&s->from.uv, &s->to.uv}) {
-        const Place q = place(s->face, *p);
+    for(const Raw_segment* s : segments) {
+      ends.push_back({{place(s->face, s->from.uv), place(s->face, s->to.uv)}});
+      for(const Place& q : ends.back())
         if(q.kind == ON_EDGE) edge_params_[std::size_t(cm_.edge[q.h])].push_back(q.t);
-      }
-    for(std::vector<FT>& t : edge_params_) {
+    }
+    edge_point_.assign(std::size_t(cm_.n_edges), {});
+    for(std::size_t e = 0; e < edge_params_.size(); ++e) {
+      std::vector<FT>& t = edge_params_[e];
       std::sort(t.begin(), t.end());
       t.erase(std::unique(t.begin(), t.end()), t.end());
+      edge_point_[e].assign(t.size(), -1);
     }
     face_polygons_.assign(std::size_t(cm_.n_faces), {});
     for(int f = 0; f < cm_.n_faces; ++f) initial_polygon(f);
-    std::sort(segments.begin(), segments.end(),
-              [](const Raw_segment* a, const Raw_segment* b) { return a->order < b->order; });
-    for(const Raw_segment* s : segments) insert_segment(*s);
+    for(std::size_t i = 0; i < segments.size(); ++i) insert_segment(*segments[i], ends[i]);
   }
 
 private:
@@ -96,10 +103,11 @@ private:
   const Tracing_map& map_;
   const Corner_mesh& cm_;
   Face_subdivision& out_;
-  std::vector<std::vector<FT> > edge_params_;             // per edge: parameters along its edge_halfedge
+  std::vector<std::vector<FT> > edge_params_;             // per edge: the parameters of its points along its edge_halfedge, ascending
+  std::vector<std::vector<int> > edge_point_;             // per edge: the Layout_vertex of each of them, or -1
   std::vector<std::vector<int> > face_polygons_;          // per face: indices into out_.polygons
-  std::map<std::pair<int, FT>, int> edge_point_;          // (edge, t) -> Layout_vertex
-  std::map<std::tuple<int, FT, FT>, int> face_point_;     // (face, u, v) -> Layout_vertex
+  struct Point_id { int id = -1; };                       // a Layout_vertex, -1 until made
+  std::map<std::tuple<int, FT, FT>, Point_id> face_point_;   // (face, u, v) -> Layout_vertex
 
   int corner(int f, int i) const
   {
@@ -122,22 +130,30 @@ private:
     return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0)};
   }
 
-  int vertex_id(int f, const Exact_uv& p) { return vertex_id(f, p, place(f, p)); }
+  // the Layout_vertex of the point of edge(q.h) at parameter q.t, or -1; k: the index of q.t in the edge's parameters,
+  // or -1 (looked up)
+  int& edge_point_id(const Place& q, std::ptrdiff_t k)
+  {
+    const std::size_t e = std::size_t(cm_.edge[q.h]);
+    const std::vector<FT>& t = edge_params_[e];
+    if(k < 0) k = std::lower_bound(t.begin(), t.end(), q.t) - t.begin();
+    CGAL_assertion(std::size_t(k) < t.size() && t[std::size_t(k)] == q.t);
+    return edge_point_[e][std::size_t(k)];
+  }
 
-  // the same where the place q of p is known
-  int vertex_id(int f, const Exact_uv& p, const Place& q)
+  // the Layout_vertex of the point p of face f at its place q, made the first time it is asked for (k: as above)
+  int vertex_id(int f, const Exact_uv& p, const Place& q, std::ptrdiff_t k = -1)
   {
     if(q.kind == AT_VERTEX) return cm_.target[q.h];
+    int& id = q.kind == ON_EDGE ? edge_point_id(q, k) : face_point_[std::make_tuple(f, p.u, p.v)].id;
+    if(id >= 0) return id;
     Layout_vertex lv;
     lv.kind = q.kind;
-    int& id = q.kind == ON_EDGE ? edge_point_[std::make_pair(cm_.edge[q.h], q.t)]
-                                : face_point_[std::make_tuple(f, p.u, p.v)];
-    if(id > 0) return id - 1;                      // stored as index + 1
     if(q.kind == ON_EDGE) { lv.halfedge = cm_.edge_halfedge[std::size_t(cm_.edge[q.h])]; lv.t = q.t; }
     else { lv.face = f; lv.uv = p; }
-    out_.vertices.push_back(lv);
     id = int(out_.vertices.size());
-    return id - 1;
+    out_.vertices.push_back(lv);
+    return id;
   }
 
   // the triangle of f with the points of its edges, counter-clockwise
@@ -147,16 +163,19 @@ private:
     P.face = f;
     for(int i = 0; i < 3; ++i) {
       const int c = corner(f, i), h = cm_.next[c];          // the side from corner c to corner next(c) is halfedge h
+      const Exact_uv A = corner_uv(cm_, c);
       P.vertex.push_back(cm_.target[c]);
-      P.uv.push_back(corner_uv(cm_, c));
+      P.uv.push_back(A);
       P.box.emplace_back(cm_.u[c], cm_.v[c]);
       const std::vector<FT>& ts = edge_params_[std::size_t(cm_.edge[h])];
+      if(ts.empty()) continue;
       const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
-      const Exact_uv A = corner_uv(cm_, c), B = corner_uv(cm_, h);
+      const Exact_uv B = corner_uv(cm_, h);
       for(std::size_t k = 0; k < ts.size(); ++k) {           // strictly inside the side: its place is known
-        const FT& t_edge = ts[along ? k : ts.size() - 1 - k];
+        const std::size_t i = along ? k : ts.size() - 1 - k;
+        const FT& t_edge = ts[i];
         const Exact_uv p = lerp(A, B, along ? t_edge : FT(1) - t_edge);
-        P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge}));
+        P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge}, std::ptrdiff_t(i)));
         P.uv.push_back(p);
         P.box.emplace_back(p);
       }
@@ -204,7 +223,8 @@ private:
     }
   }
 
-  void insert_segment(const Raw_segment& s)
+  // `ends`: the places of s.from and s.to
+  void insert_segment(const Raw_segment& s, const std::array<Place, 2>& ends)
   {
     const Exact_uv& p = s.from.uv;
     const Exact_uv& q = s.to.uv;
@@ -225,7 +245,7 @@ private:
         out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + " fits no piece of the face";
       return;
     }
-    const int ip = vertex_id(f, p), iq = vertex_id(f, q);
+    const int ip = vertex_id(f, p, ends[0]), iq = vertex_id(f, q, ends[1]);
     add_corner(f, p, p_box, ip);
     add_corner(f, q, q_box, iq);
     Layout_polygon& P = out_.polygons[std::size_t(pick)];

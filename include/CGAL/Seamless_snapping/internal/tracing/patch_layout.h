@@ -25,6 +25,7 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -139,16 +140,21 @@ public:
   void run()
   {
     // a polygon alone in its input face is the whole triangle (with points on its sides): its area is the triangle's,
-    // an exact determinant of the corners' doubles (most faces: no trace crosses them)
+    // an exact determinant of the corners' doubles (most faces: no trace crosses them), summed exactly in Mpzf per
+    // patch and made a rational once
     std::vector<int> pieces(std::size_t(map_.cm.n_faces), 0);
     for(const Layout_polygon& P : S_.polygons) ++pieces[std::size_t(P.face)];
+    std::vector<CGAL::Mpzf> twice_whole_faces(L_.patches.size(), CGAL::Mpzf(0));
     for(Layout_face_index f : mesh_.faces()) {
       Layout_patch& p = patch(f);
       ++p.polygons;
       const int face = polygon(f).face;
-      p.area += pieces[std::size_t(face)] == 1 ? triangle_area(map_.face_halfedge[std::size_t(face)])
-                                               : polygon_area(polygon(f).uv);
+      if(pieces[std::size_t(face)] == 1)
+        twice_whole_faces[std::size_t(get(patch_, f))] += twice_triangle_area(map_.face_halfedge[std::size_t(face)]);
+      else p.area += polygon_area(polygon(f).uv);
     }
+    for(std::size_t k = 0; k < L_.patches.size(); ++k)
+      if(!CGAL::is_zero(twice_whole_faces[k])) L_.patches[k].area += FT(CGAL::Gmpq(twice_whole_faces[k])) / 2;
     open_euler_characteristics();
     unfold();
     walk_boundaries();
@@ -170,14 +176,13 @@ private:
   std::vector<std::array<FT, 4> > box_;                      // per patch: umin, umax, vmin, vmax
 
   const Layout_polygon& polygon(Layout_face_index f) const { return S_.polygons[std::size_t(f)]; }
-  // the UV area of the input face of h, exactly
-  FT triangle_area(int h) const
+  // twice the UV area of the input face of h, exactly
+  CGAL::Mpzf twice_triangle_area(int h) const
   {
     const Corner_mesh& cm = map_.cm;
     const int a = cm.prev[h], c = cm.next[h];
     typedef CGAL::Mpzf Z;
-    const Z twice = (Z(cm.u[h]) - Z(cm.u[a])) * (Z(cm.v[c]) - Z(cm.v[a])) - (Z(cm.v[h]) - Z(cm.v[a])) * (Z(cm.u[c]) - Z(cm.u[a]));
-    return FT(CGAL::Gmpq(twice)) / 2;
+    return (Z(cm.u[h]) - Z(cm.u[a])) * (Z(cm.v[c]) - Z(cm.v[a])) - (Z(cm.v[h]) - Z(cm.v[a])) * (Z(cm.u[c]) - Z(cm.u[a]));
   }
   Layout_patch& patch(Layout_face_index f) const { return L_.patches[std::size_t(get(patch_, f))]; }
   bool cuts(Layout_halfedge_index h) const { return get(is_arc_, mesh_.edge(h)) != 0 || mesh_.is_border(mesh_.edge(h)); }
@@ -189,6 +194,15 @@ private:
     return P.uv[corner_of(P, int(mesh_.target(h)))];
   }
   Exact_uv in_patch(Layout_halfedge_index h) const { return to_patch_[std::size_t(mesh_.face(h))].apply(corner(h)); }
+  // in_patch(g) == in_patch(h); where both faces have the same transition into the patch, the corners themselves are
+  // compared (a transition is one-to-one), without applying it
+  bool agree(Layout_halfedge_index g, Layout_halfedge_index h) const
+  {
+    const Edge_transition& A = to_patch_[std::size_t(mesh_.face(g))];
+    const Edge_transition& B = to_patch_[std::size_t(mesh_.face(h))];
+    if(A.k == B.k && A.t == B.t) return corner(g) == corner(h);
+    return in_patch(g) == in_patch(h);
+  }
 
   void open_euler_characteristics()
   {
@@ -252,21 +266,29 @@ private:
     for(Layout_edge_index e : mesh_.edges()) {           // both sides of every inner edge agree exactly
       const Layout_halfedge_index h = mesh_.halfedge(e), o = mesh_.opposite(h);
       if(cuts(h)) continue;
-      if(in_patch(h) != in_patch(mesh_.prev(o)) || in_patch(o) != in_patch(mesh_.prev(h)))
-        patch(mesh_.face(h)).unfolds = false;
+      if(!agree(h, mesh_.prev(o)) || !agree(o, mesh_.prev(h))) patch(mesh_.face(h)).unfolds = false;
     }
     box_.assign(L_.patches.size(), std::array<FT, 4>());
     std::vector<char> first(L_.patches.size(), 1);
-    for(Layout_halfedge_index h : mesh_.halfedges()) {
-      if(mesh_.is_border(h)) continue;
-      const std::size_t p = std::size_t(get(patch_, mesh_.face(h)));
-      const Exact_uv x = in_patch(h);
+    for(Layout_face_index f : mesh_.faces()) {          // each polygon's box in its face's chart, mapped into the patch
+      const Layout_polygon& P = polygon(f);               // (a quarter turn maps a box onto a box, corner to corner)
+      std::array<const FT*, 4> c = {{&P.uv[0].u, &P.uv[0].u, &P.uv[0].v, &P.uv[0].v}};
+      for(const Exact_uv& x : P.uv) {
+        if(x.u < *c[0]) c[0] = &x.u;
+        if(x.u > *c[1]) c[1] = &x.u;
+        if(x.v < *c[2]) c[2] = &x.v;
+        if(x.v > *c[3]) c[3] = &x.v;
+      }
+      const Edge_transition& T = to_patch_[std::size_t(f)];
+      const Exact_uv a = T.apply(Exact_uv{*c[0], *c[2]}), z = T.apply(Exact_uv{*c[1], *c[3]});
+      const std::array<const FT*, 4> x = {{&(std::min)(a.u, z.u), &(std::max)(a.u, z.u), &(std::min)(a.v, z.v), &(std::max)(a.v, z.v)}};
+      const std::size_t p = std::size_t(get(patch_, f));
       std::array<FT, 4>& b = box_[p];
-      if(first[p]) { b = {{x.u, x.u, x.v, x.v}}; first[p] = 0; continue; }
-      if(x.u < b[0]) b[0] = x.u;
-      if(x.u > b[1]) b[1] = x.u;
-      if(x.v < b[2]) b[2] = x.v;
-      if(x.v > b[3]) b[3] = x.v;
+      if(first[p]) { b = {{*x[0], *x[1], *x[2], *x[3]}}; first[p] = 0; continue; }
+      if(*x[0] < b[0]) b[0] = *x[0];
+      if(*x[1] > b[1]) b[1] = *x[1];
+      if(*x[2] < b[2]) b[2] = *x[2];
+      if(*x[3] > b[3]) b[3] = *x[3];
     }
     for(std::size_t p = 0; p < L_.patches.size(); ++p) {
       L_.patches[p].width = box_[p][1] - box_[p][0];
