@@ -367,10 +367,10 @@ private:
       trails->per_face[f].push_back(Trail_registry::Stored{r.id, r.p, to.uv});
       // a segment along an edge is a trail of the face on the other side too (in its chart)
       const int c[3] = {r.face_h, cm().next[r.face_h], cm().next[cm().next[r.face_h]]};
+      const Uv_box P(r.p), Q(to.uv);
       for(int h : c) {
-        const Exact_uv A = corner_uv(cm(), cm().prev[h]), B = corner_uv(cm(), h);
-        if(cm().is_border_halfedge(cm().opp[h]) || !CGAL::is_zero(orientation_determinant(A, B, r.p)) ||
-           !CGAL::is_zero(orientation_determinant(A, B, to.uv)))
+        if(cm().is_border_halfedge(cm().opp[h]) || corner_side_sign(cm(), cm().prev[h], h, r.p, P) != 0 ||
+           corner_side_sign(cm(), cm().prev[h], h, to.uv, Q) != 0)
           continue;
         const Edge_transition T = edge_transition(cm(), map.rot, h, false);
         trails->per_face[cm().face[cm().opp[h]]].push_back(Trail_registry::Stored{r.id, T.apply(r.p), T.apply(to.uv)});
