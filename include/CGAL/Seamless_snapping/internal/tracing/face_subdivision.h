@@ -93,6 +93,7 @@ public:
       edge_point_[e].assign(t.size(), -1);
     }
     face_polygons_.assign(std::size_t(cm_.n_faces), {});
+    out_.polygons.reserve(std::size_t(cm_.n_faces) + segments.size());   // a segment splits at most one polygon in two
     for(int f = 0; f < cm_.n_faces; ++f) initial_polygon(f);
     for(std::size_t i = 0; i < segments.size(); ++i) insert_segment(*segments[i], ends[i]);
   }
@@ -161,6 +162,9 @@ private:
   {
     Layout_polygon P;
     P.face = f;
+    std::size_t n = 3;                                       // its corners: the triangle's and its edges' points
+    for(int i = 0; i < 3; ++i) n += edge_params_[std::size_t(cm_.edge[corner(f, i)])].size();
+    P.vertex.reserve(n); P.uv.reserve(n); P.box.reserve(n);
     for(int i = 0; i < 3; ++i) {
       const int c = corner(f, i), h = cm_.next[c];          // the side from corner c to corner next(c) is halfedge h
       const Exact_uv A = corner_uv(cm_, c);

@@ -75,6 +75,12 @@ inline std::size_t corner_of(const Layout_polygon& P, int id)
   return std::size_t(std::find(P.vertex.begin(), P.vertex.end(), id) - P.vertex.begin());
 }
 
+// CGAL::to_double(x), read off its enclosing interval X where that is one double (x is that double: an input corner)
+inline double as_double(const FT& x, const std::pair<double, double>& X)
+{
+  return X.first == X.second ? X.first : CGAL::to_double(x);
+}
+
 // Stage 1. Returns false (and a message) if a polygon cannot be added (not a manifold refinement).
 inline bool refined_mesh(const Tracing_map& map, const Face_subdivision& S,
                          const std::vector<std::array<double, 3> >& position, Layout_mesh& mesh, std::string& message)
@@ -119,7 +125,7 @@ inline bool refined_mesh(const Tracing_map& map, const Face_subdivision& S,
     put(input_face, f, std::int32_t(P.face));
     for(Layout_halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
       const std::size_t i = corner_of(P, int(mesh.target(h)));
-      put(uv, h, CGAL::Epick::Point_2(CGAL::to_double(P.uv[i].u), CGAL::to_double(P.uv[i].v)));
+      put(uv, h, CGAL::Epick::Point_2(as_double(P.uv[i].u, P.box[i].u), as_double(P.uv[i].v, P.box[i].v)));
       if(P.arc[(i + P.vertex.size() - 1) % P.vertex.size()]) put(is_arc, mesh.edge(h), std::uint8_t(1));
     }
   }
