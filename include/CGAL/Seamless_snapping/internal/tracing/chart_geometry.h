@@ -118,6 +118,20 @@ inline int orientation_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& 
   return s != 0 ? s : CGAL::sign(orientation_determinant(a, b, c));
 }
 
+// the sign of (b - a) . (c - a), exactly: filtered on the boxes, else by the rationals
+inline int direction_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b, const Uv_box& B, const Exact_uv& c,
+                          const Uv_box& C)
+{
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    typedef CGAL::Interval_nt<false> I;
+    const I d = (I(B.u) - I(A.u)) * (I(C.u) - I(A.u)) + (I(B.v) - I(A.v)) * (I(C.v) - I(A.v));
+    if(d.inf() > 0) return 1;
+    if(d.sup() < 0) return -1;
+  }
+  return CGAL::sign((b.u - a.u) * (c.u - a.u) + (b.v - a.v) * (c.v - a.v));
+}
+
 // the same for orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c)
 inline int corner_side_sign(const Corner_mesh& cm, int a, int b, const Exact_uv& c, const Uv_box& C)
 {

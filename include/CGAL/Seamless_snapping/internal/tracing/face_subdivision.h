@@ -107,6 +107,7 @@ private:
   std::vector<std::vector<FT> > edge_params_;             // per edge: the parameters of its points along its edge_halfedge, ascending
   std::vector<std::vector<int> > edge_point_;             // per edge: the Layout_vertex of each of them, or -1
   std::vector<std::vector<int> > face_polygons_;          // per face: indices into out_.polygons
+  std::vector<char> on_p_, on_q_;                         // insert_segment(): the sides whose lines hold its ends
   struct Point_id { int id = -1; };                       // a Layout_vertex, -1 until made
   std::map<std::tuple<int, FT, FT>, Point_id> face_point_;   // (face, u, v) -> Layout_vertex
 
@@ -196,11 +197,14 @@ private:
     return orientation_sign(P.uv[i], P.box[i], P.uv[j], P.box[j], x, X);
   }
 
-  static bool contains(const Layout_polygon& P, const Exact_uv& x, const Uv_box& X, bool strictly)
+  // whether x (with its box X) lies in the closed polygon P; if so, on[i] != 0 where it lies on the line of side i
+  static bool contains(const Layout_polygon& P, const Exact_uv& x, const Uv_box& X, std::vector<char>& on)
   {
+    on.assign(P.uv.size(), 0);
     for(std::size_t i = 0; i < P.uv.size(); ++i) {
       const int s = side_sign(P, i, x, X);
-      if(s < 0 || (strictly && s == 0)) return false;
+      if(s < 0) return false;
+      on[i] = s == 0;
     }
     return true;
   }
@@ -212,12 +216,11 @@ private:
       Layout_polygon& P = out_.polygons[std::size_t(k)];
       if(std::find(P.uv.begin(), P.uv.end(), p) != P.uv.end()) continue;
       for(std::size_t i = 0; i < P.uv.size(); ++i) {
-        const Exact_uv& a = P.uv[i];
-        const Exact_uv& b = P.uv[(i + 1) % P.uv.size()];
+        const std::size_t j = (i + 1) % P.uv.size();
         if(side_sign(P, i, p, box) != 0) continue;
-        if(!CGAL::is_positive((p.u - a.u) * (b.u - a.u) + (p.v - a.v) * (b.v - a.v)) ||
-           !CGAL::is_positive((p.u - b.u) * (a.u - b.u) + (p.v - b.v) * (a.v - b.v)))
-          continue;
+        if(direction_sign(P.uv[i], P.box[i], P.uv[j], P.box[j], p, box) <= 0 ||
+           direction_sign(P.uv[j], P.box[j], P.uv[i], P.box[i], p, box) <= 0)
+          continue;                                          // not strictly between the side's ends
         P.uv.insert(P.uv.begin() + std::ptrdiff_t(i + 1), p);
         P.box.insert(P.box.begin() + std::ptrdiff_t(i + 1), box);
         P.vertex.insert(P.vertex.begin() + std::ptrdiff_t(i + 1), id);
@@ -234,14 +237,17 @@ private:
     const Exact_uv& q = s.to.uv;
     if(p == q) return;
     const int f = s.face;
-    const Exact_uv mid{(p.u + q.u) / 2, (p.v + q.v) / 2};
-    const Uv_box p_box(p), q_box(q), mid_box(mid);
+    const Uv_box p_box(p), q_box(q);
     int pick = -1;
     bool inside = false;
     for(int k : face_polygons_[std::size_t(f)]) {
       const Layout_polygon& P = out_.polygons[std::size_t(k)];
-      if(!contains(P, p, p_box, false) || !contains(P, q, q_box, false)) continue;
-      if(contains(P, mid, mid_box, true)) { pick = k; inside = true; break; }
+      if(!contains(P, p, p_box, on_p_) || !contains(P, q, q_box, on_q_)) continue;
+      // the open segment runs inside P unless both ends lie on the line of one side (the orientation determinant is
+      // affine in the point: the midpoint lies on a side's line iff both ends do)
+      bool along = false;
+      for(std::size_t i = 0; i < on_p_.size() && !along; ++i) along = on_p_[i] && on_q_[i];
+      if(!along) { pick = k; inside = true; break; }
       if(pick < 0) pick = k;                                 // along its boundary
     }
     if(pick < 0) {
