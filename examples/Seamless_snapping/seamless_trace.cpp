@@ -94,7 +94,9 @@ int main(int argc, char** argv)
               exact ? "exactly seamless" : "NOT exactly seamless");
   std::printf("cones %zu, border corners %zu%s\n", g.cones, g.border_corners,
               g.seeded ? " (none: four seeded traces, +u, +v, -u, -v)" : "");
-  std::printf("separatrices %zu, failed %zu, traced in %.0f ms\n", g.separatrices.size(), g.failed, ms);
+  std::printf("separatrices %zu, failed %zu, traced in %.0f ms (separatrices %.0f, subdivision %.0f, refined mesh %.0f, "
+              "patches %.0f)\n", g.separatrices.size(), g.failed, ms, g.trace_ms, g.layout.subdivision_ms, g.layout.mesh_ms,
+              g.layout.measure_ms);
   for(int e = 0; e < SS::number_of_trace_ends; ++e)
     if(g.ends[e]) std::printf("  %-32s %zu\n", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);
   for(std::size_t i = 0; i < g.separatrices.size(); ++i)
@@ -127,7 +129,8 @@ int main(int argc, char** argv)
       os << (first ? "" : ", ") << "\"" << SS::trace_end_name(SS::Trace_end(e)) << "\": " << g.ends[e];
       first = false;
     }
-    os << "},\n  \"milliseconds\": " << ms << "\n}\n";
+    os << "},\n  \"milliseconds\": " << ms << ",\n  \"trace_ms\": " << g.trace_ms << ",\n  \"subdivision_ms\": "
+       << L.subdivision_ms << ",\n  \"mesh_ms\": " << L.mesh_ms << ",\n  \"measure_ms\": " << L.measure_ms << "\n}\n";
     if(!os) { std::cerr << "seamless_trace: cannot write " << json << std::endl; return EXIT_FAILURE; }
   }
   for(const std::string* file : {&layout_obj, &layout_ply}) {

@@ -233,7 +233,9 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
               "INVALID_INPUT" when a UV triangle is flipped or degenerate), "message", "patches", "quad_patches"
               (disks with 4 right-angle corners whose UV image is an axis-aligned rectangle, checked exactly),
               "nodes", "arcs", "euler_characteristic" (nodes - arcs + patches), "surface_euler_characteristic",
-              "valid" (every patch a quad and the Euler characteristics equal).
+              "valid" (every patch a quad and the Euler characteristics equal), and the wall times (ms) of its
+              phases "subdivision_ms", "mesh_ms" (the refined mesh) and "measure_ms" (the patches);
+      "trace_ms": the wall time (ms) of tracing the separatrices.
     A map that is not exactly seamless still gets a graph: its inexactness shows as failure ends.
     `max_faces` limits each trace (0: 20 times the number of faces, plus 100).
     """

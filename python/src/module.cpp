@@ -308,7 +308,11 @@ py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXd
   layout["euler_characteristic"] = L.euler_characteristic;
   layout["surface_euler_characteristic"] = L.surface_euler_characteristic;
   layout["valid"] = L.is_valid();
+  layout["subdivision_ms"] = L.subdivision_ms;
+  layout["mesh_ms"] = L.mesh_ms;
+  layout["measure_ms"] = L.measure_ms;
   d["layout"] = layout;
+  d["trace_ms"] = g.trace_ms;
   return d;
 }
 

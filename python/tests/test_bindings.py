@@ -365,6 +365,7 @@ def test_motorcycle_graph_flat_torus():
     lay = g["layout"]
     assert lay["status"] == "SUCCESS" and lay["valid"] and lay["patches"] == 1 and lay["quad_patches"] == 1
     assert lay["euler_characteristic"] == lay["surface_euler_characteristic"] == 0
+    assert g["trace_ms"] > 0 and all(lay[k] > 0 for k in ("subdivision_ms", "mesh_ms", "measure_ms"))   # the phases ran
     for s in g["separatrices"]:
         assert s["inexact_transfers"] == 0
         assert axis_parallel_exactly(s)

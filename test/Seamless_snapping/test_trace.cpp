@@ -41,6 +41,7 @@
 
 #include <array>
 #include <cassert>
+#include <chrono>
 #include <random>
 #include <cstdio>
 #include <set>
@@ -183,7 +184,13 @@ static void test_torus_closed_loops()
   assert(t.segments.back().face == f_start && t.segments.back().target.u == u0 && t.segments.back().target.v == v0);
   // the motorcycle graph: no cones, no border: four seeded traces; advancing together, +u and -u meet
   // half-way round (as do +v and -v), each after n / 2 edges
+  const auto start = std::chrono::steady_clock::now();
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  const double call_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // the phases' times: each phase ran, and together they are a part of the call's time
+  const SS::Patch_layout& L = g.layout;
+  assert(g.trace_ms > 0 && L.subdivision_ms > 0 && L.mesh_ms > 0 && L.measure_ms > 0);
+  assert(g.trace_ms + L.subdivision_ms + L.mesh_ms + L.measure_ms <= call_ms);
   assert(g.seeded && g.separatrices.size() == 4 && g.failed == 0);
   for(const Trace& s : g.separatrices)
     assert(s.end == SS::Trace_end::EARLIER_TRACE && s.segments.size() == std::size_t(n / 2));

@@ -13,6 +13,7 @@
 #include <CGAL/Seamless_snapping/Patch_layout.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 #include <CGAL/Seamless_snapping/internal/tracing/motorcycle_graph.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/tracing/patch_layout.h>
 
 #include <array>
@@ -40,6 +41,7 @@ struct Motorcycle_graph
   std::size_t cones_with_wrong_ray_count = 0;             ///< cones of n quarter turns that do not emit n rays (inexact maps)
   bool seeded = false;                                    ///< no cones and no border corners: four seeded traces (+u, +v, -u, -v) instead
   Patch_layout layout;                                    ///< the patches and the refined mesh (if requested; see `build_motorcycle_graph()`)
+  double trace_ms = 0;                                    ///< wall time (ms) of tracing the separatrices (the layout's phases: in `layout`)
 };
 
 /*!
@@ -74,7 +76,9 @@ Motorcycle_graph<TriangleMesh> build_motorcycle_graph(const Isoline_tracer<Trian
   const internal::tracing::Separatrix_seeds seeds = internal::tracing::separatrix_seeds(map);
   std::vector<internal::tracing::Trace_run> runs;
   internal::tracing::Trail_registry trails;
+  const internal::Timing_clock::time_point t = internal::Timing_clock::now();
   internal::tracing::trace_separatrices(map, seeds, max_faces, runs, trails);
+  g.trace_ms = internal::ms_since(t);
   g.cones = seeds.cones;
   g.border_corners = seeds.border_corners;
   g.cones_with_wrong_ray_count = seeds.cones_with_wrong_ray_count;

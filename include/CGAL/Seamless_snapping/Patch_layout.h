@@ -95,6 +95,9 @@ struct Patch_layout
   std::vector<std::vector<Layout_mesh::Vertex_index> > arc_chains;   ///< every arc as the vertices of `mesh` from one node to the next along arc and border edges
   std::size_t unplaced_segments = 0;   ///< trace segments that fit no piece of their face (inexact maps only)
   CGAL::Gmpq uv_area;                  ///< UV area of the traced mesh, exact (sum over its faces); 0 where no layout was built
+  double subdivision_ms = 0;           ///< wall time (ms) of cutting the faces along the traces (exact polygons)
+  double mesh_ms = 0;                  ///< wall time (ms) of building `mesh` from the polygons
+  double measure_ms = 0;               ///< wall time (ms) of finding and measuring the patches and the arc/border graph
 
   /// every patch is a quad, every segment was placed, and the Euler characteristics agree
   bool is_valid() const

@@ -20,6 +20,7 @@
 
 #include <CGAL/Seamless_snapping/Patch_layout.h>
 #include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
+#include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/tracing/face_subdivision.h>
 
 #include <CGAL/Mpzf.h>
@@ -414,16 +415,23 @@ inline void build_patch_layout(const Tracing_map& map, const std::vector<Trace_r
   std::vector<const Raw_segment*> segments;
   for(const Trace_run& r : runs)
     for(const Raw_segment& s : r.segments) segments.push_back(&s);
+  Timing_clock::time_point t = Timing_clock::now();
   Face_subdivision S;
   Face_subdivider(map, S).run(segments);
   L.unplaced_segments = S.unplaced;
-  if(!refined_mesh(map, S, position, L.mesh, L.message)) return;
+  L.subdivision_ms = ms_since(t);
+  t = Timing_clock::now();
+  const bool built = refined_mesh(map, S, position, L.mesh, L.message);
+  L.mesh_ms = ms_since(t);
+  if(!built) return;
+  t = Timing_clock::now();
   auto patch_id = L.mesh.add_property_map<Layout_face_index, std::int32_t>("f:patch_id", -1).first;
   auto is_arc = L.mesh.property_map<Layout_edge_index, std::uint8_t>("e:is_arc").first;
   const std::size_t n = CGAL::Polygon_mesh_processing::connected_components(
       L.mesh, patch_id, CGAL::parameters::edge_is_constrained_map(is_arc));
   L.patches.assign(n, Layout_patch());
   Patch_measurer(map, S, L).run();
+  L.measure_ms = ms_since(t);
   L.status = SUCCESS;
   if(S.unplaced > 0) L.message = std::to_string(S.unplaced) + " trace segments not inserted; first: " + S.first_unplaced;
 }
