@@ -248,6 +248,26 @@ private:
     return stepper;
   }
 
+  // The barycentric coordinates (w.r.t. the corners c) of a point at a corner or inside a side of its face, read off
+  // its place: 1 at the corner; 1 - t and t at the side's ends, t its parameter along the side. False (b unset) where
+  // the point lies inside the face or its place is not confirmed exactly (then barycentric() decides).
+  bool place_weights(const internal::tracing::Raw_point& p, const int c[3], internal::tracing::FT b[3]) const
+  {
+    using namespace internal::tracing;
+    const internal::Corner_mesh& cm = map_.cm;
+    if(p.kind == IN_FACE || (p.h != c[0] && p.h != c[1] && p.h != c[2])) return false;
+    if(p.kind == AT_VERTEX) {
+      if(corner_uv(cm, p.h) != p.uv) return false;
+      for(int i = 0; i < 3; ++i) b[i] = FT(c[i] == p.h ? 1 : 0);
+      return true;
+    }
+    const Exact_uv A = corner_uv(cm, cm.prev[p.h]), B = corner_uv(cm, p.h);   // the side from corner prev(h) to h
+    const FT t = lerp_parameter(A, B, p.uv);
+    if(lerp(A, B, t) != p.uv) return false;
+    for(int i = 0; i < 3; ++i) b[i] = c[i] == p.h ? t : c[i] == cm.prev[p.h] ? FT(1) - t : FT(0);
+    return true;
+  }
+
   Trace_point<TriangleMesh> point(int f, const internal::tracing::Raw_point& p) const
   {
     using internal::tracing::Exact_uv;
@@ -261,11 +281,13 @@ private:
     // barycentric coordinates w.r.t. the targets of halfedge(f), next, next-next
     const halfedge_descriptor hf = halfedge(out.face, tm_);
     const int c[3] = {index(hf), index(next(hf, tm_)), index(next(next(hf, tm_), tm_))};
-    Exact_uv cuv[3];
-    for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_.cm, c[i]);
     if(internal::tracing::face_orientation(map_.cm, c[0]) != 0) {
       internal::tracing::FT b[3];
-      internal::tracing::barycentric(cuv, p.uv, b);
+      if(!place_weights(p, c, b)) {
+        Exact_uv cuv[3];
+        for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_.cm, c[i]);
+        internal::tracing::barycentric(cuv, p.uv, b);
+      }
       for(int i = 0; i < 3; ++i) {
         out.barycentric[i] = b[i];
         const auto q = get(CGAL::vertex_point, tm_, desc_.vertices[map_.cm.target[c[i]]]);
