@@ -200,6 +200,12 @@ private:
     const Layout_polygon& P = polygon(mesh_.face(h));
     return P.uv[corner_of(P, int(mesh_.target(h)))];
   }
+  // its double interval
+  const Uv_box& corner_box(Layout_halfedge_index h) const
+  {
+    const Layout_polygon& P = polygon(mesh_.face(h));
+    return P.box[corner_of(P, int(mesh_.target(h)))];
+  }
   Exact_uv in_patch(Layout_halfedge_index h) const { return to_patch_[std::size_t(mesh_.face(h))].apply(corner(h)); }
   // in_patch(g) == in_patch(h); where both faces have the same transition into the patch, the corners themselves are
   // compared (a transition is one-to-one), without applying it
@@ -316,11 +322,55 @@ private:
     return std::atan2(CGAL::to_double(cross), CGAL::to_double(dot));                   // in (0, pi): convex pieces
   }
 
+  // corner_angle(h) within 1e-9 radians or so, from the corners' double intervals (no rationals), where those decide
+  // that the angle is not 0 or pi and are narrow against the vectors; else corner_angle(h) itself
+  double filtered_corner_angle(Layout_halfedge_index h) const
+  {
+    const Uv_box& c = corner_box(h);
+    const Uv_box& a = corner_box(mesh_.prev(h));
+    const Uv_box& b = corner_box(mesh_.next(h));
+    bool decided = false;
+    double y = 0, x = 0;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;           // (restored before atan2)
+      typedef CGAL::Interval_nt<false> I;
+      const I ax = I(b.u) - I(c.u), ay = I(b.v) - I(c.v), bx = I(a.u) - I(c.u), by = I(a.v) - I(c.v);
+      const I cross = ax * by - ay * bx, dot = ax * bx + ay * by;
+      const double scale = (std::max)(CGAL::abs(cross).inf(), CGAL::abs(dot).inf());
+      decided = cross.inf() > 0 && cross.sup() - cross.inf() <= 1e-12 * scale && dot.sup() - dot.inf() <= 1e-12 * scale;
+      y = cross.inf() + (cross.sup() - cross.inf()) / 2;
+      x = dot.inf() + (dot.sup() - dot.inf()) / 2;
+    }
+    return decided ? std::atan2(y, x) : corner_angle(h);
+  }
+
+  // the quarter turns of the fan of corners from boundary halfedge h around target(h) to the next boundary halfedge
+  // (fan: its halfedges), std::lround of the sum of corner_angle(): where the filtered sum is within a quarter of a
+  // quarter turn of an integer, the exact one rounds to the same (its corners differ by far less), else it is summed
+  long fan_quarter_turns(Layout_halfedge_index h, std::vector<Layout_halfedge_index>& fan) const
+  {
+    const double quarter = std::acos(-1.) / 2;
+    fan.clear();
+    double angle = 0;
+    Layout_halfedge_index g = h;
+    for(std::size_t guard = 0; guard <= mesh_.number_of_halfedges(); ++guard) {
+      fan.push_back(g);
+      angle += filtered_corner_angle(g);
+      if(patch_boundary(mesh_.next(g))) break;
+      g = mesh_.opposite(mesh_.next(g));
+    }
+    const long q = std::lround(angle / quarter);
+    if(std::fabs(angle / quarter - double(q)) <= 0.25) return q;
+    angle = 0;
+    for(Layout_halfedge_index k : fan) angle += corner_angle(k);
+    return std::lround(angle / quarter);
+  }
+
   // walks every boundary loop of every patch (interior on the left): loops, corners, box test
   void walk_boundaries()
   {
-    const double quarter = std::acos(-1.) / 2;
     std::vector<char> done(mesh_.number_of_halfedges(), 0);
+    std::vector<Layout_halfedge_index> fan;
     for(Layout_halfedge_index h0 : mesh_.halfedges()) {
       if(done[std::size_t(h0)] || !patch_boundary(h0)) continue;
       Layout_patch& p = patch(mesh_.face(h0));
@@ -332,16 +382,9 @@ private:
         if(mesh_.is_border(mesh_.opposite(h))) p.on_border = true;
         const Exact_uv x = in_patch(h);
         if(x.u != b[0] && x.u != b[1] && x.v != b[2] && x.v != b[3]) p.is_rectangle = false;
-        double angle = 0;
-        Layout_halfedge_index g = h;
-        for(std::size_t guard = 0; guard <= mesh_.number_of_halfedges(); ++guard) {
-          angle += corner_angle(g);
-          if(patch_boundary(mesh_.next(g))) break;
-          g = mesh_.opposite(mesh_.next(g));
-        }
-        const long q = std::lround(angle / quarter);
+        const long q = fan_quarter_turns(h, fan);
         if(q != 2) { ++p.corners; if(q == 1) ++p.right_angle_corners; }
-        h = mesh_.next(g);
+        h = mesh_.next(fan.back());
       } while(h != h0 && !done[std::size_t(h)]);
     }
   }
