@@ -204,6 +204,7 @@ public:
     t.inexact_transfers = r.inexact_transfers;
     if(r.start_vertex >= 0) { t.has_start_vertex = true; t.start_vertex = desc_.vertices[std::size_t(r.start_vertex)]; }
     if(r.start_corner >= 0) { t.has_start_corner = true; t.start_corner = desc_.halfedges[std::size_t(r.start_corner)]; }
+    t.segments.reserve(r.segments.size());
     for(const internal::tracing::Raw_segment& s : r.segments) {
       Trace_segment<TriangleMesh> seg;
       seg.face = face(desc_.halfedges[map_.face_halfedge[s.face]], tm_);
@@ -262,8 +263,10 @@ private:
       return true;
     }
     const Exact_uv A = corner_uv(cm, cm.prev[p.h]), B = corner_uv(cm, p.h);   // the side from corner prev(h) to h
+    // t is taken along the coordinate in which A and B differ (lerp_parameter()), so that coordinate of A + t (B - A)
+    // is the point's: the point lies on the side iff the other one is too
     const FT t = lerp_parameter(A, B, p.uv);
-    if(lerp(A, B, t) != p.uv) return false;
+    if(A.u != B.u ? p.uv.v - A.v != t * (B.v - A.v) : p.uv.u != A.u) return false;
     for(int i = 0; i < 3; ++i) b[i] = c[i] == p.h ? t : c[i] == cm.prev[p.h] ? FT(1) - t : FT(0);
     return true;
   }
