@@ -41,7 +41,6 @@
 
 #include <array>
 #include <cassert>
-#include <chrono>
 #include <random>
 #include <cstdio>
 #include <set>
@@ -186,7 +185,7 @@ static void test_torus_closed_loops()
   // half-way round (as do +v and -v), each after n / 2 edges
   const auto start = std::chrono::steady_clock::now();
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
-  const double call_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double call_ms = ms_since(start);
   // the phases' times: each phase ran, and together they are a part of the call's time
   const SS::Patch_layout& L = g.layout;
   assert(g.trace_ms > 0 && L.subdivision_ms > 0 && L.mesh_ms > 0 && L.measure_ms > 0);
