@@ -81,7 +81,8 @@ public:
     ends.reserve(segments.size());
     edge_params_.assign(std::size_t(cm_.n_edges), {});
     for(const Raw_segment* s : segments) {
-      ends.push_back({{place(s->face, s->from.uv), place(s->face, s->to.uv)}});
+      const Uv_box from(s->from.uv), to(s->to.uv);
+      ends.push_back({{place(s->face, s->from.uv, from), place(s->face, s->to.uv, to)}});
       for(const Place& q : ends.back())
         if(q.kind == ON_EDGE) edge_params_[std::size_t(cm_.edge[q.h])].push_back(q.t);
     }
@@ -99,7 +100,13 @@ public:
   }
 
 private:
-  struct Place { Location_kind kind; int h; FT t; };   // h: the corner (AT_VERTEX) or the side's halfedge (ON_EDGE)
+  struct Place                                         // where a segment's end lies
+  {
+    Location_kind kind;
+    int h;                                             // the corner (AT_VERTEX) or the side's halfedge (ON_EDGE)
+    FT t;                                              // ON_EDGE: the parameter along the edge (edge_parameter())
+    Uv_box box;                                        // the end's UV box
+  };
 
   const Tracing_map& map_;
   const Corner_mesh& cm_;
@@ -125,11 +132,11 @@ private:
     return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : FT(1) - t;
   }
 
-  // where the point p of the closed UV triangle of face f lies
-  Place place(int f, const Exact_uv& p) const
+  // where the point p (box `box`) of the closed UV triangle of face f lies
+  Place place(int f, const Exact_uv& p, const Uv_box& box) const
   {
-    const Raw_point r = locate_in_face(cm_, map_.face_halfedge[std::size_t(f)], p);
-    return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0)};
+    const Raw_point r = locate_in_face(cm_, map_.face_halfedge[std::size_t(f)], p, box);
+    return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0), box};
   }
 
   // the Layout_vertex of the point of edge(q.h) at parameter q.t, or -1; k: the index of q.t in the edge's parameters,
@@ -180,9 +187,10 @@ private:
         const std::size_t i = along ? k : ts.size() - 1 - k;
         const FT& t_edge = ts[i];
         const Exact_uv p = lerp(A, B, along ? t_edge : FT(1) - t_edge);
-        P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge}, std::ptrdiff_t(i)));
+        const Uv_box p_box(p);
+        P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge, p_box}, std::ptrdiff_t(i)));
         P.uv.push_back(p);
-        P.box.emplace_back(p);
+        P.box.push_back(p_box);
       }
     }
     P.arc.assign(P.vertex.size(), 0);
@@ -237,7 +245,8 @@ private:
     const Exact_uv& q = s.to.uv;
     if(p == q) return;
     const int f = s.face;
-    const Uv_box p_box(p), q_box(q);
+    const Uv_box& p_box = ends[0].box;
+    const Uv_box& q_box = ends[1].box;
     int pick = -1;
     bool inside = false;
     for(int k : face_polygons_[std::size_t(f)]) {

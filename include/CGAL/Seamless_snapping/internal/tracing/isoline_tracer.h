@@ -73,15 +73,19 @@ struct Raw_point
 
 // location of a point x of the closed UV triangle of face(h): a corner (h, next, next-next, in this
 // order) it equals, else a side it lies on (its halfedge), else the interior
-inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x)
+inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x, const Uv_box& X)
 {
-  const int c[3] = {h, cm.next[h], cm.next[cm.next[h]]};
-  const Uv_box X(x);                                 // the rationals only where its box cannot decide
+  const int c[3] = {h, cm.next[h], cm.next[cm.next[h]]};   // the rationals only where x's box X cannot decide
   for(int i = 0; i < 3; ++i)
     if(X.may_be(cm.u[c[i]], cm.v[c[i]]) && corner_uv(cm, c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
   for(int j = 0; j < 3; ++j)
     if(corner_side_sign(cm, cm.prev[c[j]], c[j], x, X) == 0) return Raw_point{ON_EDGE, c[j], x};
   return Raw_point{IN_FACE, -1, x};
+}
+
+inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x)
+{
+  return locate_in_face(cm, h, x, Uv_box(x));
 }
 
 struct Raw_segment
