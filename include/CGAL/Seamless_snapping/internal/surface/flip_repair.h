@@ -89,9 +89,9 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mpzf.h>
 
 #include <algorithm>
 #include <array>
@@ -429,9 +429,7 @@ private:
 
   static double exact_orient_to_double(double qx, double qy, double ax, double ay, double bx, double by)
   {
-    const CGAL::Mpzf o = (CGAL::Mpzf(ax) - CGAL::Mpzf(qx)) * (CGAL::Mpzf(by) - CGAL::Mpzf(qy)) -
-                         (CGAL::Mpzf(ay) - CGAL::Mpzf(qy)) * (CGAL::Mpzf(bx) - CGAL::Mpzf(qx));
-    return o.to_double();
+    return twice_triangle_uv_area(qx, qy, ax, ay, bx, by).to_double();
   }
 
   // Clips the convex polygon `poly` (2D) by g . t >= h.

@@ -24,6 +24,13 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// twice the signed area of the UV triangle (a, b, c) of doubles, (b - a) x (c - a), exactly
+inline CGAL::Mpzf twice_triangle_uv_area(double au, double av, double bu, double bv, double cu, double cv)
+{
+  typedef CGAL::Mpzf Z;
+  return (Z(bu) - Z(au)) * (Z(cv) - Z(av)) - (Z(bv) - Z(av)) * (Z(cu) - Z(au));
+}
+
 inline CGAL::Mpzf twice_uv_area(const Corner_mesh& cm)
 {
   CGAL::Mpzf sum = 0;

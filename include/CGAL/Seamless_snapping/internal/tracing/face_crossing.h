@@ -92,6 +92,7 @@ struct Edge_transition
   Exact_uv t;
   // R^0 x + 0 (no rational arithmetic: most transitions of a patch layout are the identity)
   bool is_identity() const { return k == 0 && CGAL::is_zero(t.u) && CGAL::is_zero(t.v); }
+  bool operator==(const Edge_transition& o) const { return k == o.k && t == o.t; }
   Exact_uv apply(const Exact_uv& x) const
   {
     if(is_identity()) return x;

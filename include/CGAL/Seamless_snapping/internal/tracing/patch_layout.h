@@ -188,8 +188,7 @@ private:
   {
     const Corner_mesh& cm = map_.cm;
     const int a = cm.prev[h], c = cm.next[h];
-    typedef CGAL::Mpzf Z;
-    return (Z(cm.u[h]) - Z(cm.u[a])) * (Z(cm.v[c]) - Z(cm.v[a])) - (Z(cm.v[h]) - Z(cm.v[a])) * (Z(cm.u[c]) - Z(cm.u[a]));
+    return twice_triangle_uv_area(cm.u[a], cm.v[a], cm.u[h], cm.v[h], cm.u[c], cm.v[c]);
   }
   Layout_patch& patch(Layout_face_index f) const { return L_.patches[std::size_t(get(patch_, f))]; }
   bool cuts(Layout_halfedge_index h) const { return get(is_arc_, mesh_.edge(h)) != 0 || mesh_.is_border(mesh_.edge(h)); }
@@ -213,7 +212,7 @@ private:
   {
     const Edge_transition& A = to_patch_[std::size_t(mesh_.face(g))];
     const Edge_transition& B = to_patch_[std::size_t(mesh_.face(h))];
-    if(A.k == B.k && A.t == B.t) return corner(g) == corner(h);
+    if(A == B) return corner(g) == corner(h);
     return in_patch(g) == in_patch(h);
   }
 
