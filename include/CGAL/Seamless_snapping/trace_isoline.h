@@ -258,11 +258,12 @@ private:
     const internal::Corner_mesh& cm = map_.cm;
     if(p.kind == IN_FACE || (p.h != c[0] && p.h != c[1] && p.h != c[2])) return false;
     if(p.kind == AT_VERTEX) {
-      if(corner_uv(cm, p.h) != p.uv) return false;
+      if(corner_uv(map_, p.h) != p.uv) return false;
       for(int i = 0; i < 3; ++i) b[i] = FT(c[i] == p.h ? 1 : 0);
       return true;
     }
-    const Exact_uv A = corner_uv(cm, cm.prev[p.h]), B = corner_uv(cm, p.h);   // the side from corner prev(h) to h
+    const Exact_uv& A = corner_uv(map_, cm.prev[p.h]);   // the side from corner prev(h) to h
+    const Exact_uv& B = corner_uv(map_, p.h);
     // t is taken along the coordinate in which A and B differ (lerp_parameter()), so that coordinate of A + t (B - A)
     // is the point's: the point lies on the side iff the other one is too
     const FT t = lerp_parameter(A, B, p.uv);

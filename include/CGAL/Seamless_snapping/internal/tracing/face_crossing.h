@@ -26,8 +26,8 @@
 // (a dyadic translation of the start's) keeps the rationals small on long traces.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/tracing/chart_geometry.h>
+#include <CGAL/Seamless_snapping/internal/tracing/tracing_map.h>
 
 namespace CGAL {
 namespace Seamless_snapping {
@@ -47,15 +47,16 @@ struct Face_exit
 };
 
 // `h0`: any halfedge of the face; `p` in its chart, in the closed triangle.
-inline Face_exit cross_face(const Corner_mesh& cm, int h0, const Exact_uv& p, int m)
+inline Face_exit cross_face(const Tracing_map& map, int h0, const Exact_uv& p, int m)
 {
+  const Corner_mesh& cm = map.cm;
   const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
-  Exact_uv uv[3];
+  const Exact_uv* uv[3];
   FT a[3], s[3];
   int ss[3];
   for(int i = 0; i < 3; ++i) {
-    uv[i] = corner_uv(cm, c[i]);
-    frame_coordinates(m, uv[i].u - p.u, uv[i].v - p.v, a[i], s[i]);
+    uv[i] = &corner_uv(map, c[i]);
+    frame_coordinates(m, uv[i]->u - p.u, uv[i]->v - p.v, a[i], s[i]);
     ss[i] = CGAL::sign(s[i]);
   }
   Face_exit best;
@@ -72,7 +73,7 @@ inline Face_exit cross_face(const Corner_mesh& cm, int h0, const Exact_uv& p, in
       }
     }
   }
-  if(best.kind == EXIT_VERTEX) best.point = uv[best.h == c[0] ? 0 : (best.h == c[1] ? 1 : 2)];
+  if(best.kind == EXIT_VERTEX) best.point = *uv[best.h == c[0] ? 0 : (best.h == c[1] ? 1 : 2)];
   else if(best.kind == EXIT_EDGE) best.point = advance(p, m, best.along);
   return best;
 }
@@ -101,18 +102,20 @@ struct Edge_transition
   }
 };
 
-inline Edge_transition edge_transition(const Corner_mesh& cm, const Cut_rotations& rot, int h, bool anchor_target)
+inline Edge_transition edge_transition(const Tracing_map& map, int h, bool anchor_target)
 {
+  const Corner_mesh& cm = map.cm;
   const int o = cm.opp[h];
   Edge_transition T;
-  T.k = rot.k[h];
+  T.k = map.rot.k[h];
   // corner of the anchor in face(h) and in face(o)
   const int wi = anchor_target ? h : cm.prev[h];
   const int wj = anchor_target ? cm.prev[o] : o;
   double ru, rv;                                  // R^k of the anchor's doubles, exactly (negations and a swap)
   rotate_quarter_turns(T.k, cm.u[wi], cm.v[wi], ru, rv);
   if(ru == cm.u[wj] && rv == cm.v[wj]) return T;  // t = 0 (an edge that is no cut: no rational arithmetic)
-  const Exact_uv r = rotate(T.k, corner_uv(cm, wi)), q = corner_uv(cm, wj);
+  const Exact_uv r = rotate(T.k, corner_uv(map, wi));
+  const Exact_uv& q = corner_uv(map, wj);
   T.t = Exact_uv{q.u - r.u, q.v - r.v};
   return T;
 }
@@ -130,15 +133,16 @@ struct Edge_transfer
 
 // Moves the exit point `x` (on the edge of h, at parameter lambda from source(h)) with direction m
 // into face(opposite(h)), which must exist.
-inline Edge_transfer transfer_through_edge(const Corner_mesh& cm, const Cut_rotations& rot, int h,
-                                           const Exact_uv& x, const FT& lambda, int m)
+inline Edge_transfer transfer_through_edge(const Tracing_map& map, int h, const Exact_uv& x, const FT& lambda, int m)
 {
+  const Corner_mesh& cm = map.cm;
   const int o = cm.opp[h];
   Edge_transfer out;
-  out.m = direction_mod4(m + rot.k[h]);
-  const Exact_uv q = edge_transition(cm, rot, h, lambda > FT(1, 2)).apply(x);
+  out.m = direction_mod4(m + map.rot.k[h]);
+  const Exact_uv q = edge_transition(map, h, lambda > FT(1, 2)).apply(x);
   // the edge in face(o), from source(h) (corner o) to target(h) (corner prev(o))
-  const Exact_uv A = corner_uv(cm, o), B = corner_uv(cm, cm.prev[o]);
+  const Exact_uv& A = corner_uv(map, o);
+  const Exact_uv& B = corner_uv(map, cm.prev[o]);
   FT aA, sA, aB, sB;
   frame_coordinates(out.m, A.u - q.u, A.v - q.v, aA, sA);
   frame_coordinates(out.m, B.u - q.u, B.v - q.v, aB, sB);

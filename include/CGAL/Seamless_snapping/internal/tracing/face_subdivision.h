@@ -128,7 +128,7 @@ private:
   // parameter along the edge_halfedge of the edge of h, of the point p of h's side (chart of face(h))
   FT edge_parameter(int h, const Exact_uv& p) const
   {
-    const FT t = lerp_parameter(corner_uv(cm_, cm_.prev[h]), corner_uv(cm_, h), p);
+    const FT t = lerp_parameter(corner_uv(map_, cm_.prev[h]), corner_uv(map_, h), p);
     return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : FT(1) - t;
   }
 
@@ -175,14 +175,14 @@ private:
     P.vertex.reserve(n); P.uv.reserve(n); P.box.reserve(n);
     for(int i = 0; i < 3; ++i) {
       const int c = corner(f, i), h = cm_.next[c];          // the side from corner c to corner next(c) is halfedge h
-      const Exact_uv A = corner_uv(cm_, c);
+      const Exact_uv& A = corner_uv(map_, c);
       P.vertex.push_back(cm_.target[c]);
       P.uv.push_back(A);
       P.box.emplace_back(cm_.u[c], cm_.v[c]);
       const std::vector<FT>& ts = edge_params_[std::size_t(cm_.edge[h])];
       if(ts.empty()) continue;
       const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
-      const Exact_uv B = corner_uv(cm_, h);
+      const Exact_uv& B = corner_uv(map_, h);
       for(std::size_t k = 0; k < ts.size(); ++k) {           // strictly inside the side: its place is known
         const std::size_t i = along ? k : ts.size() - 1 - k;
         const FT& t_edge = ts[i];

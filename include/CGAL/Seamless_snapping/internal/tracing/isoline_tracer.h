@@ -18,10 +18,9 @@
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Trace_end.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
-#include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
-#include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/tracing/chart_geometry.h>
 #include <CGAL/Seamless_snapping/internal/tracing/face_crossing.h>
+#include <CGAL/Seamless_snapping/internal/tracing/tracing_map.h>
 #include <CGAL/Seamless_snapping/internal/tracing/vertex_passage.h>
 
 #include <cmath>
@@ -32,35 +31,6 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 namespace tracing {
-
-// The map as the tracer sees it: corner mesh, cut edges and cones, one rotation k per cut edge.
-struct Tracing_map
-{
-  Corner_mesh cm;
-  Seam_topology st;
-  Cut_rotations rot;
-  std::vector<int> fan_quarter_turns;   // per vertex: round(UV angle sum of its corners / 90 degrees)
-  std::vector<int> face_halfedge;       // per face: its smallest halfedge index
-};
-
-inline Status build_tracing_map(Tracing_map& map, double rotation_tolerance_degrees, std::string& message)
-{
-  const Corner_mesh& cm = map.cm;
-  Status s = compute_seam_topology(cm, std::vector<signed char>(), map.st, message);
-  if(s != SUCCESS) return s;
-  s = fit_rotations(cm, map.st, std::vector<int>(), rotation_tolerance_degrees, map.rot, message);
-  if(s != SUCCESS) return s;
-  std::vector<double> sum(cm.n_vertices, 0.);
-  map.face_halfedge.assign(cm.n_faces, -1);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    sum[cm.target[h]] += corner_angle(cm, h);
-    if(map.face_halfedge[cm.face[h]] < 0) map.face_halfedge[cm.face[h]] = h;
-  }
-  map.fan_quarter_turns.resize(cm.n_vertices);
-  for(int v = 0; v < cm.n_vertices; ++v) map.fan_quarter_turns[v] = int(std::lround(sum[v] / (std::acos(-1.) / 2)));
-  return SUCCESS;
-}
 
 enum Location_kind { AT_VERTEX = 0, ON_EDGE = 1, IN_FACE = 2 };
 
@@ -191,10 +161,10 @@ public:
   {
     const int c[3] = {h, cm().next[h], cm().next[cm().next[h]]};
     for(int i = 0; i < 3; ++i)
-      if(corner_uv(cm(), c[i]) == p) return start_at_vertex(r, c[i], m);
+      if(corner_uv(map, c[i]) == p) return start_at_vertex(r, c[i], m);
     FT det[3];
     for(int j = 0; j < 3; ++j)
-      det[j] = orientation_determinant(corner_uv(cm(), cm().prev[c[j]]), corner_uv(cm(), c[j]), p);
+      det[j] = orientation_determinant(corner_uv(map, cm().prev[c[j]]), corner_uv(map, c[j]), p);
     for(int j = 0; j < 3; ++j)
       if(CGAL::is_negative(det[j]) || face_orientation(cm(), h) <= 0)
         return finish(r, Trace_end::INVALID_START, "the start point is not inside the (non-folded) UV triangle of face " +
@@ -202,12 +172,12 @@ public:
     r.face_h = h; r.p = p; r.m = direction_mod4(m);
     r.loc = Raw_point{IN_FACE, -1, p};
     for(int j = 0; j < 3; ++j) if(CGAL::is_zero(det[j])) r.loc = Raw_point{ON_EDGE, c[j], p};
-    if(r.loc.kind == ON_EDGE && cross_face(cm(), h, p, r.m).kind == NO_PROGRESS) {
+    if(r.loc.kind == ON_EDGE && cross_face(map, h, p, r.m).kind == NO_PROGRESS) {
       const int e = r.loc.h;
       if(cm().is_border_halfedge(cm().opp[e]))
         return finish(r, Trace_end::INVALID_START, "the start direction leaves the mesh through a border edge");
-      const Exact_uv A = corner_uv(cm(), cm().prev[e]), B = corner_uv(cm(), e);
-      const Edge_transfer tr = transfer_through_edge(cm(), map.rot, e, p, lerp_parameter(A, B, p), r.m);
+      const Exact_uv A = corner_uv(map, cm().prev[e]), B = corner_uv(map, e);
+      const Edge_transfer tr = transfer_through_edge(map, e, p, lerp_parameter(A, B, p), r.m);
       if(tr.kind != TRANSFER_EDGE)
         return finish(r, Trace_end::INVALID_START, "the start point does not continue across its edge");
       r.face_h = cm().opp[e]; r.p = tr.point; r.m = tr.m; r.loc = Raw_point{ON_EDGE, cm().opp[e], tr.point};
@@ -224,7 +194,7 @@ public:
     if(orientation == 0 && pass_collapsed_face(r)) return;
     if(orientation <= 0)
       return finish(r, Trace_end::FOLDED_FACE, "face " + std::to_string(f) + " is flipped or degenerate in UV");
-    const Face_exit ex = cross_face(M, r.face_h, r.p, r.m);
+    const Face_exit ex = cross_face(map, r.face_h, r.p, r.m);
     if(ex.kind == NO_PROGRESS) {
       if(r.loc.kind == ON_EDGE && !r.at_start)
         return finish(r, Trace_end::OSCILLATION_AT_CUT, "behind the cut edge " + vertex_pair_name(M, r.loc.h) +
@@ -296,7 +266,7 @@ public:
     const int o = M.opp[h];
     if(M.is_border_halfedge(o))
       return finish(r, r.along_border ? Trace_end::FELL_OFF_BORDER : Trace_end::BORDER, "border edge " + vertex_pair_name(M, h));
-    const Edge_transfer tr = transfer_through_edge(M, map.rot, h, x, lambda, r.m);
+    const Edge_transfer tr = transfer_through_edge(map, h, x, lambda, r.m);
     if(tr.kind == TRANSFER_MISSED)
       return finish(r, Trace_end::MISSED_AT_CUT, "behind the cut edge " + vertex_pair_name(M, h) +
                                                  ", the isoline misses the edge in face " + std::to_string(M.face[o]));
@@ -320,11 +290,11 @@ public:
     const Corner_mesh& M = cm();
     const int c[3] = {r.face_h, M.next[r.face_h], M.next[M.next[r.face_h]]};
     for(int i = 0; i < 3; ++i)
-      if(corner_uv(M, c[i]) == corner_uv(M, c[(i + 1) % 3])) return false;
+      if(corner_uv(map, c[i]) == corner_uv(map, c[(i + 1) % 3])) return false;
     const int entry = r.loc.kind == ON_EDGE ? r.loc.h : -1;
     const Exact_uv d = advance(Exact_uv{FT(0), FT(0)}, r.m, FT(1));
     for(int g : c) {                               // the side of g: from corner prev(g) to corner g
-      const Exact_uv A = corner_uv(M, M.prev[g]), B = corner_uv(M, g);
+      const Exact_uv A = corner_uv(map, M.prev[g]), B = corner_uv(map, g);
       if(g == entry || r.p == A || r.p == B) continue;
       const FT lambda = lerp_parameter(A, B, r.p);
       if(!(CGAL::is_positive(lambda) && lambda < FT(1))) continue;
@@ -335,7 +305,7 @@ public:
     }
     if(entry >= 0)
       for(int g : c)
-        if(corner_uv(M, g) == r.p) { ++r.steps; r.face_h = g; arrive_at_vertex(r, g, r.m); return true; }
+        if(corner_uv(map, g) == r.p) { ++r.steps; r.face_h = g; arrive_at_vertex(r, g, r.m); return true; }
     return false;
   }
 
@@ -353,7 +323,7 @@ public:
 private:
   void depart(Trace_run& r, int corner, int m) const
   {
-    r.face_h = corner; r.m = m; r.p = corner_uv(cm(), corner);
+    r.face_h = corner; r.m = m; r.p = corner_uv(map, corner);
     r.loc = Raw_point{AT_VERTEX, corner, r.p};
   }
 
@@ -376,7 +346,7 @@ private:
         if(cm().is_border_halfedge(cm().opp[h]) || corner_side_sign(cm(), cm().prev[h], h, r.p, P) != 0 ||
            corner_side_sign(cm(), cm().prev[h], h, to.uv, Q) != 0)
           continue;
-        const Edge_transition T = edge_transition(cm(), map.rot, h, false);
+        const Edge_transition T = edge_transition(map, h, false);
         trails->per_face[cm().face[cm().opp[h]]].push_back(Trail_registry::Stored{r.id, T.apply(r.p), T.apply(to.uv)});
       }
     }

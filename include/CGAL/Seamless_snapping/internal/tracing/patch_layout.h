@@ -101,7 +101,7 @@ inline bool refined_mesh(const Tracing_map& map, const Face_subdivision& S,
       Exact_uv c[3];
       const int h = map.face_halfedge[std::size_t(lv.face)];
       const int hc[3] = {h, cm.next[h], cm.prev[h]};
-      for(int i = 0; i < 3; ++i) c[i] = corner_uv(cm, hc[i]);
+      for(int i = 0; i < 3; ++i) c[i] = corner_uv(map, hc[i]);
       FT b[3];
       barycentric(c, lv.uv, b);
       for(int i = 0; i < 3; ++i)
@@ -246,7 +246,7 @@ private:
       for(int i = 0; i < 3 && hin < 0; ++i, h = cm.next[h])
         if(cm.source(h) == s.vertex && cm.target[h] == t.vertex) hin = h;
     }
-    return hin < 0 ? Edge_transition() : edge_transition(cm, map_.rot, hin, false);
+    return hin < 0 ? Edge_transition() : edge_transition(map_, hin, false);
   }
 
   // breadth-first unfolding of every patch into the chart of its first face; checks every inner edge
