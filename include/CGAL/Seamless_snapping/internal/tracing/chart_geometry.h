@@ -109,13 +109,16 @@ inline int filtered_orientation_sign(const std::pair<double, double>& au, const 
   return d.inf() > 0 ? 1 : d.sup() < 0 ? -1 : 0;
 }
 
-// the sign of orientation_determinant(a, b, c), exactly: filtered on the boxes, else (always where it is zero) by the
-// rationals
+// the sign of orientation_determinant(a, b, c), exactly: filtered on the boxes, else (always where it is zero) 0 where c
+// is a or b, else by the rationals. In the face subdivision most signs the filter leaves are those of a polygon's
+// corner against its own sides (the duck_miq_8 untangled: 19,684 of 25,710; the rot-seamless dragon 99,600 of 150,638)
 inline int orientation_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b, const Uv_box& B, const Exact_uv& c,
                             const Uv_box& C)
 {
   const int s = filtered_orientation_sign(A.u, A.v, B.u, B.v, C.u, C.v);
-  return s != 0 ? s : CGAL::sign(orientation_determinant(a, b, c));
+  if(s != 0) return s;
+  if(c == a || c == b) return 0;
+  return CGAL::sign(orientation_determinant(a, b, c));
 }
 
 // the sign of (b - a) . (c - a), exactly: filtered on the boxes, else by the rationals
