@@ -176,7 +176,8 @@ public:
       const int e = r.loc.h;
       if(cm().is_border_halfedge(cm().opp[e]))
         return finish(r, Trace_end::INVALID_START, "the start direction leaves the mesh through a border edge");
-      const Exact_uv A = corner_uv(map, cm().prev[e]), B = corner_uv(map, e);
+      const Exact_uv& A = corner_uv(map, cm().prev[e]);
+      const Exact_uv& B = corner_uv(map, e);
       const Edge_transfer tr = transfer_through_edge(map, e, p, lerp_parameter(A, B, p), r.m);
       if(tr.kind != TRANSFER_EDGE)
         return finish(r, Trace_end::INVALID_START, "the start point does not continue across its edge");
@@ -294,7 +295,8 @@ public:
     const int entry = r.loc.kind == ON_EDGE ? r.loc.h : -1;
     const Exact_uv d = advance(Exact_uv{FT(0), FT(0)}, r.m, FT(1));
     for(int g : c) {                               // the side of g: from corner prev(g) to corner g
-      const Exact_uv A = corner_uv(map, M.prev[g]), B = corner_uv(map, g);
+      const Exact_uv& A = corner_uv(map, M.prev[g]);
+      const Exact_uv& B = corner_uv(map, g);
       if(g == entry || r.p == A || r.p == B) continue;
       const FT lambda = lerp_parameter(A, B, r.p);
       if(!(CGAL::is_positive(lambda) && lambda < FT(1))) continue;
