@@ -34,7 +34,9 @@ struct Tracing_map
   Corner_mesh cm;
   Seam_topology st;
   Cut_rotations rot;
-  std::vector<int> fan_quarter_turns;   // per vertex: round(UV angle sum of its corners / 90 degrees)
+  std::vector<int> fan_quarter_turns;   // per vertex: round(UV angle sum of its corners / 90 degrees); the seam
+                                        // topology's quarter_turns away from the border (the same rounding of the
+                                        // same sum, certified there), summed here only at border vertices
   std::vector<int> face_halfedge;       // per face: its smallest halfedge index
   std::vector<Exact_uv> sector_uv;      // per sector: the exact UV its corners share (their doubles), made once: a
                                         // whole-mesh pass (the face subdivision) copies handles instead of making
@@ -55,7 +57,7 @@ inline Status build_tracing_map(Tracing_map& map, double rotation_tolerance_degr
   map.face_halfedge.assign(cm.n_faces, -1);
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
-    sum[cm.target[h]] += corner_angle(cm, h);
+    if(cm.vertex_on_border[cm.target[h]]) sum[cm.target[h]] += corner_angle(cm, h);
     if(map.face_halfedge[cm.face[h]] < 0) map.face_halfedge[cm.face[h]] = h;
   }
   map.sector_uv.clear();
@@ -63,7 +65,8 @@ inline Status build_tracing_map(Tracing_map& map, double rotation_tolerance_degr
   for(std::size_t i = 0; i < std::size_t(map.st.n_sectors); ++i)
     map.sector_uv.push_back(Exact_uv{FT(map.st.ubar[2 * i]), FT(map.st.ubar[2 * i + 1])});
   map.fan_quarter_turns.resize(cm.n_vertices);
-  for(int v = 0; v < cm.n_vertices; ++v) map.fan_quarter_turns[v] = int(std::lround(sum[v] / (std::acos(-1.) / 2)));
+  for(int v = 0; v < cm.n_vertices; ++v)
+    map.fan_quarter_turns[v] = cm.vertex_on_border[v] ? int(std::lround(sum[v] / (std::acos(-1.) / 2))) : map.st.quarter_turns[v];
   return SUCCESS;
 }
 
