@@ -138,6 +138,19 @@ inline std::string format_double(double x, int precision = 6)
 }
 
 // `given_k[e]`: the caller's rotation for halfedge(e) (edge_halfedge), or empty to fit.
+// std::hypot(x, y) >= length, decided from x^2 + y^2 where that is far enough from length^2 (relative 1e-9, against
+// rounding errors of a few ulp in the squares and in std::hypot) and both are normal numbers, else by std::hypot
+// itself: the same answer as std::hypot, without its cost on almost every edge (48K calls, 2.5 ms on the 302K-face bunny)
+inline bool length_at_least(double x, double y, double length)
+{
+  const double q = x * x + y * y, l2 = length * length;
+  if(q >= 0x1p-1000 && l2 >= 0x1p-1000 && q <= 0x1p+1000 && l2 <= 0x1p+1000) {
+    if(q >= l2 * (1 + 1e-9)) return true;
+    if(q <= l2 * (1 - 1e-9)) return false;
+  }
+  return std::hypot(x, y) >= length;
+}
+
 inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, const std::vector<int>& given_k,
                             double tolerance_degrees, Cut_rotations& rot, std::string& message)
 {
@@ -148,7 +161,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
   for(int e : st.cut_edges) {
     double di[2], dj[2];
     transition_vectors(cm, cm.edge_halfedge[e], di, dj);
-    if(!(std::hypot(di[0], di[1]) >= min_length && std::hypot(dj[0], dj[1]) >= min_length) || min_length == 0) {
+    if(!(length_at_least(di[0], di[1], min_length) && length_at_least(dj[0], dj[1], min_length)) || min_length == 0) {
       rot.degenerate[e] = 1;
       ++rot.n_degenerate;
     }
@@ -197,15 +210,26 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     for(const std::pair<int, int>& hk : exact) set_k(hk.first, hk.second);
   }
 
-  // every non-degenerate transition must be a rotation by k * 90 degrees, up to the tolerance
-  const double rad = std::acos(-1.) / 180;
+  // every non-degenerate transition must be a rotation by k * 90 degrees, up to the tolerance. An edge whose
+  // deviation is bounded above by at most the largest one so far and by the tolerance (|angle| <= |sin| / cos for an
+  // acute angle; relative 1e-12 against rounding) changes neither, and passes: its std::atan2 is not needed; nor are
+  // its lengths' std::hypot where the squared lengths pass the length test by far (relative 1e-9, a tolerance of at
+  // least 1e-6 radians). On the 302K-face bunny 4 of the 5 ms of this loop; the same results
+  const double rad = std::acos(-1.) / 180, radians = tolerance_degrees * rad;
+  const double min_length_ratio2 = radians >= 1e-6 && radians < 1 ? (1 - 0.5 * radians) * (1 - 0.5 * radians) * (1 + 1e-9) : HUGE_VAL;
   for(int e : st.cut_edges) {
     if(rot.degenerate[e]) continue;
     const int h = cm.edge_halfedge[e];
     double di[2], dj[2], r[2];
     transition_vectors(cm, h, di, dj);
     rotate_quarter_turns(rot.k[h], di[0], di[1], r[0], r[1]);
-    const double deviation = std::fabs(std::atan2(r[0] * dj[1] - r[1] * dj[0], r[0] * dj[0] + r[1] * dj[1])) / rad;
+    const double sine = r[0] * dj[1] - r[1] * dj[0], cosine = r[0] * dj[0] + r[1] * dj[1];
+    const double bound = cosine > 0 ? std::fabs(sine) / cosine / rad * (1 + 1e-12) : HUGE_VAL;
+    const double qi = di[0] * di[0] + di[1] * di[1], qj = dj[0] * dj[0] + dj[1] * dj[1];
+    if(bound <= rot.max_deviation_degrees && bound <= tolerance_degrees && qi >= 0x1p-1000 && qj >= 0x1p-1000 &&
+       qi <= 0x1p+1000 && qj <= 0x1p+1000 && (std::min)(qi, qj) >= (std::max)(qi, qj) * min_length_ratio2)
+      continue;
+    const double deviation = std::fabs(std::atan2(sine, cosine)) / rad;
     if(deviation > rot.max_deviation_degrees) rot.max_deviation_degrees = deviation;
     if(!(deviation <= tolerance_degrees)) {
       const double angle = std::atan2(di[0] * dj[1] - di[1] * dj[0], di[0] * dj[0] + di[1] * dj[1]) / rad;
