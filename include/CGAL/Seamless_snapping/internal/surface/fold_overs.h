@@ -20,8 +20,7 @@
 
 #include <CGAL/Seamless_snapping/internal/io/name_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Seamless_snapping/internal/surface/face_orientations.h>
 
 #include <cstddef>
 #include <string>
@@ -53,21 +52,20 @@ struct Fold_overs
 
 inline Fold_overs find_fold_overs(const Corner_mesh& cm)
 {
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
   Fold_overs r;
-  std::vector<signed char> o(std::size_t(cm.n_faces), 1);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h) || h > cm.next[h] || h > cm.prev[h]) continue;   // once per face
-    const int a = cm.prev[h], c = cm.next[h];
-    const P pa(cm.u[a], cm.v[a]), ph(cm.u[h], cm.v[h]), pc(cm.u[c], cm.v[c]);
-    signed char& of = o[std::size_t(cm.face[h])];
-    of = static_cast<signed char>(CGAL::orientation(pa, ph, pc));
-    if(of == CGAL::ZERO && pa != ph && ph != pc && pc != pa) of = 2;   // zero area, three distinct corners
-  }
+  const std::vector<signed char> o = face_orientations(cm);
   for(int f = 0; f < cm.n_faces; ++f) {
     if(o[std::size_t(f)] == CGAL::NEGATIVE) r.negative.push_back(f);
-    else if(o[std::size_t(f)] == CGAL::ZERO || o[std::size_t(f)] == 2) r.degenerate.push_back(f);
-    if(o[std::size_t(f)] == 2) r.collinear.push_back(f);
+    if(o[std::size_t(f)] == CGAL::ZERO) r.degenerate.push_back(f);
+  }
+  if(r.degenerate.empty()) return r;
+  std::vector<int> corner(std::size_t(cm.n_faces), -1);          // of the zero-area faces: a halfedge
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && o[std::size_t(cm.face[h])] == CGAL::ZERO) corner[std::size_t(cm.face[h])] = h;
+  auto same = [&](int a, int b) { return cm.u[a] == cm.u[b] && cm.v[a] == cm.v[b]; };
+  for(int f : r.degenerate) {
+    const int h = corner[std::size_t(f)], a = cm.prev[h], c = cm.next[h];
+    if(!same(a, h) && !same(h, c) && !same(c, a)) r.collinear.push_back(f);   // zero area, three distinct corners
   }
   return r;
 }

@@ -397,7 +397,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   S.grid = Fixed_point_grid::from_max_abs(max_abs, 1);   // may grow on RANGE_EXCEEDED (project_stage)
   s = check_pins_on_grid(S.cm, S.pins, S.grid, message);
   if(s != SUCCESS) return s;
-  S.input_orientations = face_orientations(S.cm, S.st, ubar);
+  S.input_orientations = face_orientations(S.cm);   // = face_orientations(S.cm, S.st, ubar)
   const Orientation_counts input = count_orientations(S.input_orientations);
   report.flips_before = input.negative;
   report.degenerate_before = input.degenerate;

@@ -47,11 +47,7 @@ struct Face_corners
 
   explicit Face_corners(const Corner_mesh& cm) : halfedge(std::size_t(cm.n_faces), std::array<int, 3>{{-1, -1, -1}})
   {
-    for(int h = 0; h < cm.n_halfedges; ++h) {
-      const int f = cm.face[h];
-      if(f < 0 || halfedge[std::size_t(f)][0] >= 0) continue;
-      halfedge[std::size_t(f)] = {{h, cm.next[h], cm.next[cm.next[h]]}};
-    }
+    for(int h : face_first_halfedges(cm)) halfedge[std::size_t(cm.face[h])] = {{h, cm.next[h], cm.prev[h]}};
     vertex_faces.build(cm.n_vertices, [&](auto emit) {
       for(std::size_t f = 0; f < halfedge.size(); ++f)
         for(int h : halfedge[f]) emit(cm.target[h], int(f));
