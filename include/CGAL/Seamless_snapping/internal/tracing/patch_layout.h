@@ -343,10 +343,10 @@ private:
     return decided ? std::atan2(y, x) : corner_angle(h);
   }
 
-  // the quarter turns of the fan of corners from boundary halfedge h around target(h) to the next boundary halfedge
-  // (fan: its halfedges), std::lround of the sum of corner_angle(): where the filtered sum is within a quarter of a
+  // the quarter turns of the patch's corner at target(h): its fan of corners from boundary halfedge h around target(h) to
+  // the next boundary halfedge (fan: its halfedges; not Tracing_map::fan_quarter_turns, the whole vertex's), std::lround of the sum of corner_angle(): where the filtered sum is within a quarter of a
   // quarter turn of an integer, the exact one rounds to the same (its corners differ by far less), else it is summed
-  long fan_quarter_turns(Layout_halfedge_index h, std::vector<Layout_halfedge_index>& fan) const
+  long patch_corner_quarter_turns(Layout_halfedge_index h, std::vector<Layout_halfedge_index>& fan) const
   {
     const double quarter = std::acos(-1.) / 2;
     fan.clear();
@@ -381,7 +381,7 @@ private:
         if(mesh_.is_border(mesh_.opposite(h))) p.on_border = true;
         const Exact_uv x = in_patch(h);
         if(x.u != b[0] && x.u != b[1] && x.v != b[2] && x.v != b[3]) p.is_rectangle = false;
-        const long q = fan_quarter_turns(h, fan);
+        const long q = patch_corner_quarter_turns(h, fan);
         if(q != 2) { ++p.corners; if(q == 1) ++p.right_angle_corners; }
         h = mesh_.next(fan.back());
       } while(h != h0 && !done[std::size_t(h)]);
