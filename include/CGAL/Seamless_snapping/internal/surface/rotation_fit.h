@@ -137,7 +137,6 @@ inline std::string format_double(double x, int precision = 6)
   std::ostringstream s; s.precision(precision); s << x; return s.str();
 }
 
-// `given_k[e]`: the caller's rotation for halfedge(e) (edge_halfedge), or empty to fit.
 // std::hypot(x, y) >= length, decided from x^2 + y^2 where that is far enough from length^2 (relative 1e-9, against
 // rounding errors of a few ulp in the squares and in std::hypot) and both are normal numbers, else by std::hypot
 // itself: the same answer as std::hypot, without its cost on almost every edge (48K calls, 2.5 ms on the 302K-face bunny)
@@ -151,6 +150,7 @@ inline bool length_at_least(double x, double y, double length)
   return std::hypot(x, y) >= length;
 }
 
+// `given_k[e]`: the caller's rotation for halfedge(e) (edge_halfedge), or empty to fit.
 inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, const std::vector<int>& given_k,
                             double tolerance_degrees, Cut_rotations& rot, std::string& message)
 {

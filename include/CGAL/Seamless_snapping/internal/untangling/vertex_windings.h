@@ -68,21 +68,21 @@ inline std::vector<int> vertex_quarter_turns(const Corner_mesh& cm, const Seam_t
   bool all_exact = true;
   const std::vector<int> first = face_first_halfedges(cm);
   const std::size_t d = std::size_t(seam_prefetch_distance);
-  for(std::size_t i = 0; i < first.size(); ++i) {   // exact counts, once per face: its orientation holds at its 3 corners
+  for(std::size_t j = 0; j < first.size(); ++j) {   // exact counts, once per face: its orientation holds at its 3 corners
     // what the faces ahead read far away (in meshes whose faces are not listed in order of adjacency): their corners'
     // sectors and vertices 2d ahead, the sectors' values and the vertices' counts d ahead (the 302K-face bunny of
     // ../shared/large: 25-31 -> 9 ms, with face_first_halfedges())
-    if(i + 2 * d < first.size())
-      for(int c : {first[i + 2 * d], cm.next[std::size_t(first[i + 2 * d])], cm.prev[std::size_t(first[i + 2 * d])]}) {
+    if(j + 2 * d < first.size())
+      for(int c : {first[j + 2 * d], cm.next[std::size_t(first[j + 2 * d])], cm.prev[std::size_t(first[j + 2 * d])]}) {
         __builtin_prefetch(&st.sector_of[std::size_t(c)]);
         __builtin_prefetch(&cm.target[std::size_t(c)]);
       }
-    if(i + d < first.size())
-      for(int c : {first[i + d], cm.next[std::size_t(first[i + d])], cm.prev[std::size_t(first[i + d])]}) {
+    if(j + d < first.size())
+      for(int c : {first[j + d], cm.next[std::size_t(first[j + d])], cm.prev[std::size_t(first[j + d])]}) {
         __builtin_prefetch(&x[2 * std::size_t(st.sector_of[std::size_t(c)])]);
         __builtin_prefetch(&count[std::size_t(cm.target[std::size_t(c)])], 1);
       }
-    const int h = first[i];
+    const int h = first[j];
     const int corner[3] = {h, cm.next[h], cm.prev[h]};
     double p[3][2];
     for(int i = 0; i < 3; ++i) {
