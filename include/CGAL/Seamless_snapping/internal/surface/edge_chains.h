@@ -25,6 +25,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,7 +67,7 @@ inline void decompose_into_chains(const Corner_mesh& cm, const std::vector<char>
       if(used[cm.edge[hn]]) break;     // closed loop: back at its start
       h = hn;
     }
-    out.chains.push_back(chain);
+    out.chains.push_back(std::move(chain));
   };
 
   for(int v = 0; v < cm.n_vertices; ++v) {
