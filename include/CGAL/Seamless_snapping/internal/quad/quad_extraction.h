@@ -254,8 +254,7 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
 
   t0 = std::chrono::steady_clock::now();
   std::vector<int> face_halfedge(std::size_t(cm.n_faces), -1);
-  for(int h = 0; h < cm.n_halfedges; ++h)
-    if(!cm.is_border_halfedge(h) && face_halfedge[std::size_t(cm.face[h])] < 0) face_halfedge[std::size_t(cm.face[h])] = h;
+  for(int h : face_first_halfedges(cm)) face_halfedge[std::size_t(cm.face[h])] = h;
   const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
   const Collapsed_faces collapsed(cm.n_faces, collinear);
   Cell_pieces pieces;

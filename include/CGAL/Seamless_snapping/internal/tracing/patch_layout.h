@@ -344,8 +344,9 @@ private:
   }
 
   // the quarter turns of the patch's corner at target(h): its fan of corners from boundary halfedge h around target(h) to
-  // the next boundary halfedge (fan: its halfedges; not Tracing_map::fan_quarter_turns, the whole vertex's), std::lround of the sum of corner_angle(): where the filtered sum is within a quarter of a
-  // quarter turn of an integer, the exact one rounds to the same (its corners differ by far less), else it is summed
+  // the next boundary halfedge (fan: its halfedges; not Tracing_map::fan_quarter_turns, the whole vertex's), std::lround
+  // of the sum of corner_angle(): where the filtered sum is within a quarter of a quarter turn of an integer, the exact
+  // one rounds to the same (its corners differ by far less), else it is summed
   long patch_corner_quarter_turns(Layout_halfedge_index h, std::vector<Layout_halfedge_index>& fan) const
   {
     const double quarter = std::acos(-1.) / 2;

@@ -54,12 +54,10 @@ inline Status build_tracing_map(Tracing_map& map, double rotation_tolerance_degr
   s = fit_rotations(cm, map.st, std::vector<int>(), rotation_tolerance_degrees, map.rot, message);
   if(s != SUCCESS) return s;
   std::vector<double> sum(cm.n_vertices, 0.);
+  for(int h = 0; h < cm.n_halfedges; ++h)
+    if(!cm.is_border_halfedge(h) && cm.vertex_on_border[cm.target[h]]) sum[cm.target[h]] += corner_angle(cm, h);
   map.face_halfedge.assign(cm.n_faces, -1);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h)) continue;
-    if(cm.vertex_on_border[cm.target[h]]) sum[cm.target[h]] += corner_angle(cm, h);
-    if(map.face_halfedge[cm.face[h]] < 0) map.face_halfedge[cm.face[h]] = h;
-  }
+  for(int h : face_first_halfedges(cm)) map.face_halfedge[cm.face[h]] = h;
   map.sector_uv.clear();
   map.sector_uv.reserve(std::size_t(map.st.n_sectors));
   for(std::size_t i = 0; i < std::size_t(map.st.n_sectors); ++i)
