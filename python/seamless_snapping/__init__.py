@@ -84,7 +84,8 @@ def read_obj(path, *, weld=False):
 
 def write_obj(path, V, F, UV, FUV):
     """Writes the matrices as an OBJ file with per-corner texture coordinates: one `v` per row of V, one `vt` per row
-    of UV, one `f v/vt v/vt v/vt` per face, with 17 significant digits (read_obj reads the same doubles back).
+    of UV, one `f v/vt v/vt v/vt` per face, each number the shortest decimal that reads back to the same double
+    (read_obj reads them bit for bit).
     Atomic: the text goes to a temporary file that is then renamed. Raises InputError (nothing written) for arrays
     of the wrong shape, an index out of range, a value that is not finite, or a place that cannot be written.
     Returns the writer's one-line summary."""

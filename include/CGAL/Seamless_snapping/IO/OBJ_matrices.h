@@ -93,8 +93,8 @@ Status read_OBJ_matrices(const std::string& filename, Eigen::MatrixXd& V, Eigen:
 /*!
  * \ingroup PkgSeamlessSnappingRef
  * writes libigl-style matrices as an OBJ file: every row of `V` as a `v` line and of `UV` as a `vt` line,
- * in order, and every face as `f v/vt v/vt v/vt` (1-based), numbers with 17 significant digits (the
- * doubles read back bit for bit). Written atomically (temporary file + rename); `INVALID_INPUT` without
+ * in order, and every face as `f v/vt v/vt v/vt` (1-based), each number the shortest decimal that reads
+ * back to the same double, bit for bit. Written atomically (temporary file + rename); `INVALID_INPUT` without
  * writing anything for matrices of the wrong shape, an index out of range or a non-finite value.
  */
 template <class DV, class DF, class DUV, class DFUV>

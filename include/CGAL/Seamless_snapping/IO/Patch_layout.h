@@ -27,7 +27,7 @@ namespace IO {
 /*!
  * \ingroup PkgSeamlessSnappingRef
  *
- * writes the refined mesh of a patch layout as OBJ: the vertices (`v`, 17 significant digits), one `vt` per
+ * writes the refined mesh of a patch layout as OBJ: the vertices (`v`, bit-exact shortest decimals), one `vt` per
  * corner (its UV in the chart of its input face, `"h:uv"`), the faces grouped by patch (`g patch_<id>` before
  * the faces of each patch, in patch order) and, with `arc_lines`, every arc edge as a line element (`l i j`).
  * Viewers show the patches as groups and the layout as lines. CGAL's `CGAL::IO::read_OBJ()` refuses line
@@ -52,7 +52,7 @@ inline Status write_patch_layout_OBJ(const std::string& filename, const Patch_la
   auto is_arc = m.property_map<Layout_mesh::Edge_index, std::uint8_t>("e:is_arc").first;
   std::string out = "# patch layout: " + std::to_string(layout.patches.size()) + " patches (" +
                     std::to_string(layout.quad_patches) + " quads)" + (arc_lines ? ", arcs as 'l' lines" : "") +
-                    "; 17 significant digits\n";
+                    "; numbers read back to the same doubles\n";
   for(auto v : m.vertices()) {
     out += "v ";
     for(int i = 0; i < 3; ++i) { internal::append_double(out, m.point(v)[i]); out += i < 2 ? " " : "\n"; }
