@@ -23,7 +23,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
-#include <CGAL/Seamless_snapping/internal/io/huge_page_heap.h>
+#include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -97,7 +97,7 @@ static Reference read_reference(const fs::path& file)
 
 int main(int argc, char** argv)
 {
-  CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
+  CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::vector<fs::path> inputs, files;
   int repeat = 5;
   double grid_scale = 1;

@@ -42,7 +42,7 @@
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
-#include <CGAL/Seamless_snapping/internal/io/huge_page_heap.h>
+#include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include "obj_inputs.h"
 #include "../test/Seamless_snapping/connection_test_utils.h"
@@ -471,7 +471,7 @@ static int large_study(const std::vector<fs::path>& files, int repeat)
 
 int main(int argc, char** argv)
 {
-  CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
+  CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   int repeat = 3;
   bool connections = false, change_only = false, integer_grid = false, untangle = false, large = false;
   int subdivide_levels = -1;

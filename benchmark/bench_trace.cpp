@@ -24,7 +24,7 @@
 #include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
-#include <CGAL/Seamless_snapping/internal/io/huge_page_heap.h>
+#include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include <algorithm>
 #include <chrono>
@@ -77,7 +77,7 @@ static void row(const std::string& name, const char* which, const Mesh& m, UV_ma
 
 int main(int argc, char** argv)
 {
-  CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
+  CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::vector<fs::path> inputs, files;
   std::string svg_dir;
   long long max_faces_option = -1;   // -1: bounded on large maps only

@@ -1,5 +1,5 @@
 """CTest test of the seamless_snap command line: automatic welding of a cut mesh (the same output bits with the
-default heap, SEAMLESS_SNAPPING_HEAP=default, as with the huge-page heap of the program's restart), --no-weld refusing an
+default heap, SEAMLESS_SNAPPING_HEAP=default, as with the retained heap of the program's restart), --no-weld refusing an
 input whose seams are invisible, --keep-layout, --fail-on-new-flips, the JSON report's keys, --pin, --outdir with
 --summary (several inputs), and --integer-grid --vval (libQEx's vertex valence file; IN.obj is CGAL's Orbifold Tutte square map of a
 closed genus-0 mesh, which is near an integer-grid map).
@@ -52,11 +52,11 @@ r = json.load(open(rep1))
 check(r["status"] == "SUCCESS" and r["cut_edges"] > 0, "cut mesh: seams seen after welding")
 check(r["input"] == cut and r["output"] == out1 and r["version"], "JSON report names input, output, version")
 
-# 1b. the heap (huge pages after the program's restart on glibc, or the default heap) does not change the output bits
+# 1b. the heap (the retained heap after the program's restart on glibc, or the default heap) does not change the output bits
 out1b = os.path.join(work, "welded_default_heap.obj")
 rc, text = run(cut, out1b, env=dict(os.environ, SEAMLESS_SNAPPING_HEAP="default"))
 check(rc == 0 and open(out1b, "rb").read() == open(out1, "rb").read(),
-      "SEAMLESS_SNAPPING_HEAP=default: the same output bits as with the huge-page heap: %d %s" % (rc, text))
+      "SEAMLESS_SNAPPING_HEAP=default: the same output bits as with the retained heap: %d %s" % (rc, text))
 
 # 2. --no-weld: no seam is visible; an error, not 'already exactly seamless'
 out2 = os.path.join(work, "noweld.obj")

@@ -18,7 +18,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/version.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
-#include <CGAL/Seamless_snapping/internal/io/huge_page_heap.h>
+#include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/IO/OBJ.h>
@@ -119,7 +119,7 @@ static std::string extension_of(const std::string& file)
 
 int main(int argc, char** argv)
 {
-  CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
+  CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::string in, out, report_file;
   bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;

@@ -23,7 +23,7 @@
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
-#include <CGAL/Seamless_snapping/internal/io/huge_page_heap.h>
+#include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include <chrono>
 #include <cstdio>
@@ -41,7 +41,7 @@ using SS::IO::internal::json_string;
 
 int main(int argc, char** argv)
 {
-  CGAL::Seamless_snapping::IO::internal::use_huge_page_heap(argv);   // large maps: see the header
+  CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   const char* usage = "usage: seamless_trace IN.obj [--weld | --no-weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]\n";
   std::string in, json, svg, layout_obj, layout_ply;
   bool weld = false, no_weld = false;
