@@ -406,6 +406,8 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   Seamless_snapping::internal::Halfedge_arrays a(n_used, nf);
   std::array<int, 3> fv;
   for(std::size_t f = 0; f < nf; ++f) {
+    if(f + 2 < nf)
+      for(int k = 0; k < 3; ++k) a.prefetch_vertex(mesh_vertex[soup.face_v[f + 2][std::size_t(k)]]);
     for(int k = 0; k < 3; ++k) fv[std::size_t(k)] = mesh_vertex[soup.face_v[f][std::size_t(k)]];
     if(fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])
       return fail(soup.face_line[f], std::string("degenerate face: a vertex appears twice") +
@@ -422,28 +424,13 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
                                      "surrounded by faces) or non-manifold edge");
     }
   }
-  // A vertex where two fans meet is accepted by add_face in two cases; reject both here:
-  // two closed fans (the cycle around the vertex misses some halfedges pointing to it), and
-  // two open fans, a "bowtie" (two border halfedges point to it).
-  {
-    std::vector<int> in_degree(n_used, 0);
-    for(std::size_t h = 0; h < a.number_of_halfedges(); ++h) ++in_degree[std::size_t(a.target(int(h)))];
-    for(std::size_t i = 0; i < n_used; ++i) {
-      const int hh = a.vertex_halfedge[i];
-      int h = hh, around = 0, border_fans = 0;
-      do {
-        ++around;
-        if(a.is_border(h)) ++border_fans;
-        h = a.next_around_target(h);
-      } while(h != hh);
-      if(around != in_degree[i] || border_fans > 1) {
-        std::size_t file_index = 0;
-        for(std::size_t j = 0; j < nv; ++j) if(rep[j] == j && id[j] == i) { file_index = j; break; }
-        message = where + ": non-manifold vertex " + std::to_string(file_index + 1) +
-                  " (several fans of faces meet at it)";
-        return INVALID_INPUT;
-      }
-    }
+  // A vertex where two fans meet is accepted by add_face in two cases (two closed fans, or a "bowtie"): reject it
+  const int several_fans = a.first_vertex_with_several_fans();
+  if(several_fans >= 0) {
+    std::size_t file_index = 0;
+    for(std::size_t j = 0; j < nv; ++j) if(rep[j] == j && id[j] == std::size_t(several_fans)) { file_index = j; break; }
+    message = where + ": non-manifold vertex " + std::to_string(file_index + 1) + " (several fans of faces meet at it)";
+    return INVALID_INPUT;
   }
 
   // 4. the arrays onto tm: every element in the order Euler::add_face() creates it
