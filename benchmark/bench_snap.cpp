@@ -3,7 +3,7 @@
 // the unreduced (full sector system) to the reduced pipeline, input violation, change, flips.
 //
 // usage: bench_snap [--repeat N] [--connections] [--subdivide L] [--change] [--integer-grid] [--untangle] [--large]
-//                   [--max-reference-faces F] <file.obj | directory>...
+//                   [--threads N] [--max-reference-faces F] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are read
 //        with weld_vertices(true), as Directional writes cut meshes). Without arguments the directory
 //        in the environment variable SS_SHARED_DATA_DIR is used.
@@ -20,6 +20,7 @@
 // and the write (each phase's own peak: the kernel's high-water mark is reset before it through
 // /proc/self/clear_refs where Linux allows it, else the peak so far is printed with a '+'). Wall clock in ms, the
 // minimum over N runs (default 3); CPU columns: the process's CPU time of the same phase (the machine may be shared).
+// --threads N: the snap and the write with number_of_threads(N) (default 1; the CPU columns then add up the threads).
 //
 // After the timing table (or alone with --change): the size of the change against the smallest exact
 // change u* = argmin ||u - ubar||_2 s.t. C u = 0 over the same sector system (Eq. 4 per cut edge,
@@ -400,8 +401,9 @@ static bool reset_peak_rss()
   return bool(os);
 }
 
-static int large_study(const std::vector<fs::path>& files, int repeat)
+static int large_study(const std::vector<fs::path>& files, int repeat, unsigned threads)
 {
+  std::printf("number_of_threads(%u)\n", threads);
   std::printf("%-34s %7s %6s %6s | %8s %8s | %8s %8s %8s %8s %8s %8s %8s %8s %8s %8s | %6s %8s | %8s %8s | %6s | %7s %7s %7s\n",
               "model", "#F", "#cones", "#nodes", "read", "cpu", "extract", "reduce", "LS", "IRREF", "evaluate", "repair",
               "explain", "verify", "snap", "cpu", "us/F", "extr/F", "write", "cpu", "s/r", "MB read", "MB snap", "MB write");
@@ -425,7 +427,7 @@ static int large_study(const std::vector<fs::path>& files, int repeat)
       const double m_read = peak_rss_mb();
       peaks_reset = reset_peak_rss() && peaks_reset;
       c0 = cpu_ms();
-      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv);
+      const SS::Snap_report rep = SS::snap_seamless_parameterization(m, uv, SS::parameters::number_of_threads(threads));
       const double c_snap = cpu_ms() - c0;
       const double m_snap = peak_rss_mb();
       if(rep.status != SS::SUCCESS) {
@@ -436,7 +438,7 @@ static int large_study(const std::vector<fs::path>& files, int repeat)
       c0 = cpu_ms();
       t0 = std::chrono::steady_clock::now();
       std::string msg;
-      if(SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, msg) != SS::SUCCESS) {
+      if(SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, msg, SS::parameters::number_of_threads(threads)) != SS::SUCCESS) {
         std::printf("%-34s write FAILED: %s\n", p.filename().string().c_str(), msg.c_str());
         ++failures; ok = false; break;
       }
@@ -474,6 +476,7 @@ int main(int argc, char** argv)
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   int repeat = 3;
   bool connections = false, change_only = false, integer_grid = false, untangle = false, large = false;
+  unsigned threads = 1;                      // --large: number_of_threads of the snap and the write
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
@@ -484,6 +487,7 @@ int main(int argc, char** argv)
     if(std::strcmp(argv[i], "--untangle") == 0) { untangle = true; continue; }
     if(std::strcmp(argv[i], "--subdivide") == 0 && i + 1 < argc) { subdivide_levels = (std::max)(0, std::atoi(argv[++i])); continue; }
     if(std::strcmp(argv[i], "--large") == 0) { large = true; continue; }
+    if(std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) { threads = unsigned((std::max)(0, std::atoi(argv[++i]))); continue; }
     if(std::strcmp(argv[i], "--max-reference-faces") == 0 && i + 1 < argc) {
       max_reference_faces = std::size_t(std::strtoull(argv[++i], nullptr, 10));
       continue;
@@ -491,8 +495,8 @@ int main(int argc, char** argv)
     inputs.emplace_back(argv[i]);
   }
   std::vector<fs::path> files;
-  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--large] [--connections | --change | --integer-grid | --untangle | --subdivide L] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
-  if(large) return large_study(files, repeat);
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--large [--threads N]] [--connections | --change | --integer-grid | --untangle | --subdivide L] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
+  if(large) return large_study(files, repeat, threads);
   if(connections) return connection_study(files, repeat);
   if(integer_grid) return integer_grid_study(files, repeat);
   if(untangle) return untangle_study(files, repeat);

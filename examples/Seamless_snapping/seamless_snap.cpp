@@ -58,7 +58,7 @@ static const char* usage_text =
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
   "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
   "                     [--max-untangle-change C] [--merge-cone-pairs] [--separate-cone-pairs]\n"
-  "                     [--quiet]\n"
+  "                     [--threads N] [--quiet]\n"
   "       seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]\n";
 
 static const char* help_text =
@@ -149,6 +149,8 @@ static const char* help_text =
   "                       exit status 0 only if every input was written and verified. One process, one input\n"
   "                       after the other; for several cores run one process per file (README, 'Many maps')\n"
   "  --summary FILE.md    with --outdir: also write the summary table to FILE.md\n"
+  "  --threads N          threads for independent steps of the snap and the output (the same output bits\n"
+  "                       whatever N): 0, the default, takes the machine's cores; 1 runs on one thread\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
   "\n"
@@ -276,6 +278,7 @@ struct Options
   int untangle = -1;                 // -1: the default (with --integer-grid)
   double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
+  unsigned threads = 0;              // 0: the machine's cores
   std::string features_file, vval_file, pin_file;
   double sharp_angle = -1;
 };
@@ -361,7 +364,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)
                      .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change)
-                     .merge_cone_pairs(o.merge_cone_pairs).separate_cone_pairs(o.separate_cone_pairs);
+                     .merge_cone_pairs(o.merge_cone_pairs).separate_cone_pairs(o.separate_cone_pairs)
+                     .number_of_threads(o.threads);
   t = Clock::now();
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
@@ -445,7 +449,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   }
   const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
                                          : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message,
-                                                                             params::vt_per_corner(vt_per_corner));
+                                                                             params::vt_per_corner(vt_per_corner)
+                                                                               .number_of_threads(o.threads));
   if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
   if(!vval_file.empty()) {
@@ -522,6 +527,15 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--vt-per-corner") vt_per_corner = true;
+    else if(a == "--threads") {
+      char* end = nullptr;
+      const unsigned long n = i + 1 < argc ? std::strtoul(argv[i + 1], &end, 10) : 0;
+      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n > 1024) {
+        std::cerr << "seamless_snap: --threads needs a number of threads in [0, 1024]\n" << usage_text; return 2;
+      }
+      o.threads = unsigned(n);
+      ++i;
+    }
     else if(a == "--pin") {
       if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
       pin_file = argv[++i];

@@ -271,6 +271,11 @@ def test_snap_shared_data(name, weld):
     assert cut > 0 and bad == 0
     assert ss.is_exactly_seamless(V, F, UV2, FUV2, weld=weld)
     assert report["max_change"] < 1e-5
+    # two threads: the same bits
+    UV3, FUV3, report3 = ss.snap(V, F, UV, FUV, weld=weld, threads=2)
+    assert UV3.tobytes() == UV2.tobytes() and np.array_equal(FUV3, FUV2) and report3["nodes"] == report["nodes"]
+    with pytest.raises(ss.InputError):
+        ss.snap(V, F, UV, FUV, weld=weld, threads=-1)
 
 
 # ---- tracing (motorcycle graph, isolines) ----

@@ -245,6 +245,14 @@ static void test_shared_data(const fs::path& tmp)
     // the package's own writer and reader (to_chars / from_chars): the same bits on every machine
     CHECK(s == SS::SUCCESS && bit_identical(m, uv, m2, uv2, why), "bit-exact round trip of " << file << ": " << why);
     fs::remove(out);
+    // two threads (every other block of lines formatted by a second one; 8192 lines a block): the same text
+    {
+      std::ostringstream one, two;
+      const SS::Status s1 = SS::IO::write_OBJ_with_corner_uvs(one, m, uv, wmsg);
+      const SS::Status s2 = SS::IO::write_OBJ_with_corner_uvs(two, m, uv, wmsg, SS::parameters::number_of_threads(2));
+      CHECK(s1 == SS::SUCCESS && s2 == SS::SUCCESS && one.str() == two.str(),
+            file << ": number_of_threads(2) writes the text of one thread (" << one.str().size() << " / " << two.str().size() << " bytes)");
+    }
     // one vt per face corner
     s = SS::IO::write_OBJ_with_corner_uvs(out.string(), m, uv, wmsg, SS::parameters::vt_per_corner(true));
     CHECK(s == SS::SUCCESS, "write (vt per corner) " << out << ": " << wmsg);

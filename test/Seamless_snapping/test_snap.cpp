@@ -153,13 +153,16 @@ static void test_data_meshes(std::vector<File_result>& results)
         assert(l2_reference::meets_target(opt, cmp, sys.quantum));
         if(opt.l2 > 0) l2_ratios.push_back(cmp.ratio_l2);
       }
-      // deterministic (the same input bits, snapped twice in this run)
+      // deterministic (the same input bits, snapped twice in this run), also on two threads (number_of_threads)
       {
         Mesh m2 = input;
         UV_map uv2 = uv_of(m2);
-        SS::Snap_report r2 = SS::snap_seamless_parameterization(m2, uv2, SS::parameters::use_reduced_system(reduced == 1));
+        SS::Snap_report r2 = SS::snap_seamless_parameterization(m2, uv2, SS::parameters::use_reduced_system(reduced == 1)
+                                                                             .number_of_threads(2));
         assert(r2.status == SS::SUCCESS);
         assert(uv_bits(m2, uv2) == uv_bits(m, uv));
+        assert(r2.nodes == r.nodes && r2.cones == r.cones && r2.system_rows == r.system_rows && r2.max_change == r.max_change &&
+               r2.flips_after_repair == r.flips_after_repair && r2.repair_moves == r.repair_moves);
       }
       if(reduced) { fr.reduced = r; bits_reduced = uv_bits(m, uv); } else fr.unreduced = r;
     }

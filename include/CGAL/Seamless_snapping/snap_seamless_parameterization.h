@@ -332,6 +332,17 @@ namespace Seamless_snapping {
  *                    as key type and a 3D point type as value type}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_threads}
+ *     \cgalParamDescription{with 2 or more, steps that depend on each other's results in no way run on two threads (the
+ *                           node system of Sec. 5.3 and the minimal-change start point of the full system; the cone test
+ *                           and the sectors of Sec. 5.1); `0` takes the machine's cores. The results are the same bits
+ *                           whatever the number (only the report's times change). The 302K-face map of `../shared/large`
+ *                           on two cores: see the user manual, "Large maps".}
+ *     \cgalParamType{unsigned integer}
+ *     \cgalParamDefault{`1` (the calling thread only)}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::number_of_threads()`; implemented with
+ *                     `std::thread` (`internal/threads.h`)}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether the status and message are printed to `std::cout`}
  *     \cgalParamType{Boolean}

@@ -14,6 +14,7 @@
 #include <CGAL/Seamless_snapping/internal/parameters.h>
 #include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
 #include <CGAL/Seamless_snapping/internal/io/line_reader.h>
+#include <CGAL/Seamless_snapping/internal/threads.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -37,13 +38,17 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <condition_variable>
 #include <cstring>
 #include <fstream>
 #include <istream>
+#include <mutex>
 #include <ostream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -555,48 +560,131 @@ public:
     return SUCCESS;
   }
 
-  // Emits the text of the prepared mesh: flush(data, size) per block; false as soon as flush() fails.
+  // Emits the text of the prepared mesh: flush(data, size) per block, in order; false as soon as flush() fails.
+  // With `threads` >= 2 a second thread formats every other block while this one formats the others and
+  // flushes them all in order (the text is the same; if the thread cannot be started, one thread does it all).
   template <class Flush>
-  bool write(const Flush& flush) const
+  bool write(const Flush& flush, unsigned threads = 1) const
   {
-    const std::size_t block = std::size_t(1) << 20, longest_line = 256;
-    std::vector<char> buffer(block + longest_line);
-    char* const begin = buffer.data();
-    char* p = begin;
-    auto line_done = [&]() {
-      if(std::size_t(p - begin) < block) return true;
-      const bool ok = flush(begin, std::size_t(p - begin));
-      p = begin;
-      return ok;
-    };
     const std::string header =
       "# OBJ with per-corner texture coordinates (CGAL Seamless_snapping): f v/vt, vt = UV of the corner,\n"
       "# numbers read back to the same doubles, bit for bit. " + std::to_string(points_.size()) + " vertices, " +
       std::to_string(vts_.size()) + " texture coordinates, " + std::to_string(faces_.size()) + " faces\n";
     if(!flush(header.data(), header.size())) return false;
-    for(const std::array<double, 3>& x : points_) {
+    const std::size_t n_blocks = (number_of_lines() + block_lines - 1) / block_lines;
+    if(threads >= 2 && n_blocks >= 4) {
+      Block_pipeline pipeline(*this, n_blocks);
+      if(pipeline.start()) return pipeline.run(flush);
+    }
+    std::vector<char> buffer(block_bytes);
+    for(std::size_t b = 0; b < n_blocks; ++b)
+      if(!flush(buffer.data(), std::size_t(format_block(b, buffer.data()) - buffer.data()))) return false;
+    return true;
+  }
+
+private:
+  // blocks of block_lines lines; a line has at most 1 + 3 (1 + 24) + 1 characters (to_chars: at most 24 per double)
+  static constexpr std::size_t block_lines = 8192, block_bytes = block_lines * 80;
+
+  std::size_t number_of_lines() const { return points_.size() + vts_.size() + faces_.size(); }
+
+  // the text of block b (points, then vts, then faces) at p; returns the end
+  char* format_block(std::size_t b, char* p) const
+  {
+    const std::size_t np = points_.size(), nt = vts_.size();
+    const std::size_t end = (std::min)((b + 1) * block_lines, number_of_lines());
+    std::size_t i = b * block_lines;
+    for(; i < end && i < np; ++i) {
       *p++ = 'v';
-      for(double c : x) { *p++ = ' '; p = write_double(p, c); }
+      for(double c : points_[i]) { *p++ = ' '; p = write_double(p, c); }
       *p++ = '\n';
-      if(!line_done()) return false;
     }
-    for(const std::array<double, 2>& t : vts_) {
+    for(; i < end && i < np + nt; ++i) {
       *p++ = 'v'; *p++ = 't';
-      for(double c : t) { *p++ = ' '; p = write_double(p, c); }
+      for(double c : vts_[i - np]) { *p++ = ' '; p = write_double(p, c); }
       *p++ = '\n';
-      if(!line_done()) return false;
     }
-    for(const std::array<std::uint32_t, 6>& r : faces_) {
+    for(; i < end; ++i) {
+      const std::array<std::uint32_t, 6>& r = faces_[i - np - nt];
       *p++ = 'f';
       for(int k = 0; k < 3; ++k) {
         *p++ = ' '; p = write_index(p, std::uint64_t(r[std::size_t(2 * k)]) + 1);
         *p++ = '/'; p = write_index(p, std::uint64_t(r[std::size_t(2 * k + 1)]) + 1);
       }
       *p++ = '\n';
-      if(!line_done()) return false;
     }
-    return p == begin || flush(begin, std::size_t(p - begin));
+    return p;
   }
+
+  // write() with a second thread: it formats the odd blocks into two slots (one block ahead), the caller's
+  // thread the even ones, and flushes every block in order.
+  class Block_pipeline
+  {
+    struct Slot { std::vector<char> text; std::size_t size = 0; bool full = false; };
+    const Obj_text& text_;
+    const std::size_t n_blocks_;
+    Slot slots_[2];
+    bool stop_ = false;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::thread helper_;
+
+    void format_odd_blocks()
+    {
+      for(std::size_t b = 1; b < n_blocks_; b += 2) {
+        Slot& slot = slots_[(b / 2) % 2];
+        {
+          std::unique_lock<std::mutex> lock(mutex_);
+          changed_.wait(lock, [&] { return stop_ || !slot.full; });
+          if(stop_) return;
+        }
+        const std::size_t size = std::size_t(text_.format_block(b, slot.text.data()) - slot.text.data());
+        std::lock_guard<std::mutex> lock(mutex_);
+        slot.size = size;
+        slot.full = true;
+        changed_.notify_all();
+      }
+    }
+    void stop()
+    {
+      { std::lock_guard<std::mutex> lock(mutex_); stop_ = true; }
+      changed_.notify_all();
+      helper_.join();
+    }
+
+  public:
+    Block_pipeline(const Obj_text& text, std::size_t n_blocks) : text_(text), n_blocks_(n_blocks)
+    {
+      for(Slot& s : slots_) s.text.resize(block_bytes);
+    }
+    bool start()
+    {
+      try { helper_ = std::thread([this] { format_odd_blocks(); }); }
+      catch(const std::system_error&) { return false; }
+      return true;
+    }
+    template <class Flush>
+    bool run(const Flush& flush)
+    {
+      std::vector<char> own(block_bytes);
+      bool ok = true;
+      try {
+        for(std::size_t b = 0; b < n_blocks_ && ok; ++b) {
+          if(b % 2 == 0) { ok = flush(own.data(), std::size_t(text_.format_block(b, own.data()) - own.data())); continue; }
+          Slot& slot = slots_[(b / 2) % 2];
+          {
+            std::unique_lock<std::mutex> lock(mutex_);
+            changed_.wait(lock, [&] { return slot.full; });
+          }
+          ok = flush(slot.text.data(), slot.size);
+          { std::lock_guard<std::mutex> lock(mutex_); slot.full = false; }
+          changed_.notify_all();
+        }
+      } catch(...) { stop(); throw; }
+      stop();
+      return ok;
+    }
+  };
 };
 
 // A name for a temporary file next to `filename` (same directory, so std::rename is atomic).
@@ -679,6 +767,15 @@ Status read_obj_impl(std::istream& is, const std::string& where, TriangleMesh& t
   Obj_soup soup;
   if(parse_obj(is, soup, where, message) != SUCCESS) return INVALID_INPUT;
   return build_mesh(soup, weld, tm, vpm, uv, where, message);
+}
+
+// the number_of_threads parameter of the writer (default 1, 0 = the machine's cores)
+template <class NamedParameters>
+unsigned number_of_threads(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return Seamless_snapping::internal::resolve_number_of_threads(choose_parameter(get_parameter(np, snap_np::number_of_threads), 1u));
 }
 
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
@@ -832,6 +929,13 @@ Status read_OBJ_with_corner_uvs(std::istream& is, TriangleMesh& tm, HalfedgeUVMa
  *     \cgalParamDefault{`false`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::vt_per_corner()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_threads}
+ *     \cgalParamDescription{with 2 or more, a second thread formats every other block of lines while the calling thread
+ *                           formats the others and writes them all in order (the same text); `0` takes the machine's cores}
+ *     \cgalParamType{unsigned integer}
+ *     \cgalParamDefault{`1`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::number_of_threads()`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \return `SUCCESS`, or `INVALID_INPUT` (the message says why) for a mesh without faces, a face that is
@@ -849,7 +953,8 @@ Status write_OBJ_with_corner_uvs(const std::string& filename, const TriangleMesh
     return INVALID_INPUT;
   }
   const std::string summary = message;
-  if(internal::write_atomically(filename, [&](std::ostream& os) { return text.write(internal::Stream_flush{os}); },
+  const unsigned threads = internal::number_of_threads(np);
+  if(internal::write_atomically(filename, [&](std::ostream& os) { return text.write(internal::Stream_flush{os}, threads); },
                                 message) != SUCCESS)
     return INVALID_INPUT;
   message = summary + " to " + filename;
@@ -870,7 +975,7 @@ Status write_OBJ_with_corner_uvs(std::ostream& os, const TriangleMesh& tm, Halfe
 {
   internal::Obj_text text;
   if(internal::prepare_obj_text(tm, uv, text, message, np) != SUCCESS) return INVALID_INPUT;
-  const bool ok = text.write(internal::Stream_flush{os});
+  const bool ok = text.write(internal::Stream_flush{os}, internal::number_of_threads(np));
   os.flush();
   if(!ok || !os) {
     message = "stream: write failed";

@@ -23,6 +23,7 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
+#include <CGAL/Seamless_snapping/internal/threads.h>
 
 #include <algorithm>
 #include <cmath>
@@ -137,12 +138,11 @@ inline void prefetch_uv(const Corner_mesh& cm, int h)
   __builtin_prefetch(&cm.v[std::size_t(h)]);
 }
 
-// `seam_override[e]`: -1 = decide from the UVs, 0 = not a seam, 1 = seam (the caller's seam_edge_map).
-// Border edges are never cut edges.
-inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
-                                    Seam_topology& st, std::string& message)
+// The UV bounding box, the cut edges and the sectors of compute_seam_topology(); st.quarter_turns and st.is_cone
+// are left alone (cone_quarter_turns()).
+inline Status compute_cuts_and_sectors(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
+                                       Seam_topology& st, std::string& message)
 {
-  st = Seam_topology();
   const int nh = cm.n_halfedges;
 
   // UV bounding box
@@ -227,7 +227,14 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
               " have different UVs but are joined by edges that are not seams (check the seam_edge_map)";
     return INVALID_INPUT;
   }
+  return SUCCESS;
+}
 
+// The cones of compute_seam_topology(): per vertex, its UV angle sum in quarter turns (4 on the border) and whether
+// that is not 4. Reads the corner mesh only.
+inline void cone_quarter_turns(const Corner_mesh& cm, std::vector<int>& quarter_turns, std::vector<char>& is_cone)
+{
+  const int nh = cm.n_halfedges;
   // cones: quarter_turns[v] = lround(angle sum / (pi / 2)), the angle sum being the sum of the corners'
   // std::atan2 angles in halfedge order. The sums are first taken of atan2_within_3e_9(), which is several
   // times cheaper than std::atan2; a vertex whose approximate sum is provably rounded to the same number of
@@ -252,8 +259,8 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
     if(y == 0 || x == 0) { sums[v].exact = true; continue; }    // signed zeros and angles of exactly 0, +-pi/2, pi
     sums[v].approximate += atan2_within_3e_9(y, x);
   }
-  st.quarter_turns.assign(cm.n_vertices, 4);
-  st.is_cone.assign(cm.n_vertices, 0);
+  quarter_turns.assign(cm.n_vertices, 4);
+  is_cone.assign(cm.n_vertices, 0);
   bool any_exact = false;
   for(int v = 0; v < cm.n_vertices; ++v) {
     if(cm.vertex_on_border[v] || sums[v].corners == 0 || sums[v].exact) { any_exact = any_exact || sums[v].exact; continue; }
@@ -262,8 +269,8 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
     const double turns = sums[v].approximate / quarter;
     const double k = std::nearbyint(turns);
     if(std::fabs(turns - k) <= 0.5 - bound && std::fabs(k) < 1e9) {
-      st.quarter_turns[v] = int(k);
-      st.is_cone[v] = st.quarter_turns[v] != 4;
+      quarter_turns[v] = int(k);
+      is_cone[v] = quarter_turns[v] != 4;
     } else {
       sums[v].exact = true;
       any_exact = true;
@@ -275,11 +282,23 @@ inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<sig
       if(!cm.is_border_halfedge(h) && sums[cm.target[h]].exact) angle_sum[cm.target[h]] += corner_angle(cm, h);
     for(int v = 0; v < cm.n_vertices; ++v) {
       if(cm.vertex_on_border[v] || sums[v].corners == 0 || !sums[v].exact) continue;   // border or isolated vertex
-      st.quarter_turns[v] = int(std::lround(angle_sum[v] / quarter));
-      st.is_cone[v] = st.quarter_turns[v] != 4;
+      quarter_turns[v] = int(std::lround(angle_sum[v] / quarter));
+      is_cone[v] = quarter_turns[v] != 4;
     }
   }
-  return SUCCESS;
+}
+
+// `seam_override[e]`: -1 = decide from the UVs, 0 = not a seam, 1 = seam (the caller's seam_edge_map).
+// Border edges are never cut edges. The cones and the sectors share nothing that either writes: with `threads` >= 2
+// they are found on two threads (internal/threads.h), the same results.
+inline Status compute_seam_topology(const Corner_mesh& cm, const std::vector<signed char>& seam_override,
+                                    Seam_topology& st, std::string& message, unsigned threads = 1)
+{
+  st = Seam_topology();
+  Status s = SUCCESS;
+  run_concurrently(threads, [&] { s = compute_cuts_and_sectors(cm, seam_override, st, message); },
+                   [&] { cone_quarter_turns(cm, st.quarter_turns, st.is_cone); });
+  return s;
 }
 
 } // namespace internal

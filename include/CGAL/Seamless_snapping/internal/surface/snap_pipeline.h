@@ -54,6 +54,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
+#include <CGAL/Seamless_snapping/internal/threads.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
@@ -102,6 +103,7 @@ struct Snap_options
   bool separate_cone_pairs = false;    // integer-grid mode: move cone pairs rounded onto one point apart (cone_separation.h)
   bool untangle_polish = true;         // step 4b's minimal-change polish (untangler.h); off in the separation trials
   double untangle_budget = 1;          // step 4b's work budget, a fraction of Untangle_options::work_per_face; 1/2 in the trials
+  unsigned threads = 1;                // >= 2: independent steps on two threads (internal/threads.h); the same results
 };
 
 // number of cut edges whose UV vector is zero on at least one side (the edge collapsed to a point
@@ -287,7 +289,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
     constrained.assign(cm.n_edges, 0);
     for(int e = 0; e < cm.n_edges; ++e) constrained[e] = constrained_of(S.desc.edges[e]) ? 1 : 0;
   }
-  s = compute_seam_topology(cm, seam_override, S.st, message);
+  s = compute_seam_topology(cm, seam_override, S.st, message, opt.threads);
   if(s != SUCCESS) return s;
   if(has_rotations) {
     given_k.assign(cm.n_edges, 0);
@@ -305,7 +307,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
       given_k.assign(cm.n_edges, 0);
       for(int e : S.st.cut_edges) { seam_override[e] = 1; given_k[e] = S.rot.k[cm.edge_halfedge[e]]; }
       for(int e : added) seam_override[e] = 1;
-      s = compute_seam_topology(cm, seam_override, S.st, message);
+      s = compute_seam_topology(cm, seam_override, S.st, message, opt.threads);
       if(s == SUCCESS) s = fit_rotations(cm, S.st, given_k, opt.rotation_tolerance, S.rot, message);
       if(s != SUCCESS) return s;
       report.added_cut_edges = added.size();
@@ -551,25 +553,31 @@ Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Sna
   }
 }
 
-// 3.-4. from ubar (or its L2-closest point), see snap_from_start()
+// the start of 3.-4.: ubar, or its L2-closest point (3a); nothing to do for an input that is already exact. Needs
+// neither the node system nor anything reduce_stage() writes: solve_stages() runs the two together
+template <class TriangleMesh>
+Status start_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
+{
+  S.x = S.st.ubar;
+  S.already_exact = first_violated_row(S.full, S.st.ubar) < 0;
+  if(S.already_exact) return SUCCESS;
+  const Status s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, message);
+  if(s != SUCCESS) return s;
+  return least_squares_stage(opt, S, report, message);
+}
+
+// 3.-4. from the start of start_stage(), see snap_from_start()
 template <class TriangleMesh>
 Status project_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
-  const std::size_t n_vars = 2 * std::size_t(S.st.n_sectors);
-  S.x = S.st.ubar;
-  S.already_exact = first_violated_row(S.full, S.st.ubar) < 0;
   if(S.already_exact) {     // nothing to project, nothing to write
     const Constraint_rows& system = opt.use_reduced_system ? S.rs.node_rows : S.full;
     std::vector<int> system_vars, system_column_of;
-    used_variables(system, n_vars, system_vars, system_column_of);
+    used_variables(system, 2 * std::size_t(S.st.n_sectors), system_vars, system_column_of);
     report.system_rows = system.size();
     report.system_columns = system_vars.size();
     return SUCCESS;
   }
-  Status s = check_grid_fits_uv_scale(S.grid, S.cm.uv_exponent, message);
-  if(s != SUCCESS) return s;
-  s = least_squares_stage(opt, S, report, message);
-  if(s != SUCCESS) return s;
   return snap_from_start(opt, S, report, message);
 }
 
@@ -981,10 +989,16 @@ Status solve_stages(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_r
   Status s = build_constraints(opt, S, report, message);
   report.extract_ms += ms_since(t);
   if(s != SUCCESS) return s;
-  t = Snap_clock::now();
-  s = reduce_stage(S, report, message);
-  if(s != SUCCESS) return s;
-  report.reduce_ms = opt.use_reduced_system ? ms_since(t) : 0.;
+  // 2. and 3a. share nothing that either writes: on two threads with number_of_threads >= 2
+  Status reduced = SUCCESS, started = SUCCESS;
+  std::string start_message;
+  run_concurrently(opt.threads, [&] {
+    const Snap_clock::time_point t_reduce = Snap_clock::now();
+    reduced = reduce_stage(S, report, message);
+    report.reduce_ms = opt.use_reduced_system ? ms_since(t_reduce) : 0.;
+  }, [&] { started = start_stage(opt, S, report, start_message); });
+  if(reduced != SUCCESS) return reduced;
+  if(started != SUCCESS) { message = start_message; return started; }
   s = project_stage(opt, S, report, message);
   if(s == SUCCESS) s = untangle_stage(opt, S, report, message);
   if(s != SUCCESS) return s;
