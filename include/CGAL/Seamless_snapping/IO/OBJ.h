@@ -623,7 +623,8 @@ private:
     struct Slot { std::vector<char> text; std::size_t size = 0; bool full = false; };
     const Obj_text& text_;
     const std::size_t n_blocks_;
-    Slot slots_[2];
+    Slot slots_[2];                       // the second thread's blocks
+    std::vector<char> own_;               // the calling thread's block (allocated before the thread starts)
     bool stop_ = false;
     std::mutex mutex_;
     std::condition_variable changed_;
@@ -656,6 +657,7 @@ private:
     Block_pipeline(const Obj_text& text, std::size_t n_blocks) : text_(text), n_blocks_(n_blocks)
     {
       for(Slot& s : slots_) s.text.resize(block_bytes);
+      own_.resize(block_bytes);
     }
     bool start()
     {
@@ -666,11 +668,10 @@ private:
     template <class Flush>
     bool run(const Flush& flush)
     {
-      std::vector<char> own(block_bytes);
       bool ok = true;
       try {
         for(std::size_t b = 0; b < n_blocks_ && ok; ++b) {
-          if(b % 2 == 0) { ok = flush(own.data(), std::size_t(text_.format_block(b, own.data()) - own.data())); continue; }
+          if(b % 2 == 0) { ok = flush(own_.data(), std::size_t(text_.format_block(b, own_.data()) - own_.data())); continue; }
           Slot& slot = slots_[(b / 2) % 2];
           {
             std::unique_lock<std::mutex> lock(mutex_);

@@ -785,12 +785,10 @@ void repair_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_rep
 template <class TriangleMesh>
 void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report)
 {
-  const std::vector<int> faces = non_positive_faces(orientations_of_x(S));
+  const std::vector<signed char>& orientations = orientations_of_x(S);
+  const std::vector<int> faces = non_positive_faces(orientations);
   if(faces.empty() && !opt.untangle) return;   // windings are checked where the untangling ran or folds remain
   const Face_corners fc(S.cm);
-  const Target_valences target = target_valences(S, fc);
-  const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
-  const std::vector<int> K = field_rotation_sums(S.cm, S.st, S.rot);
   const std::vector<std::pair<int, int> > pairs =
       opt.integer_grid_map ? collapsed_cone_pairs_of_x(S) : std::vector<std::pair<int, int> >();
   std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
@@ -802,23 +800,33 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     }
   };
   std::vector<int> forced_face(std::size_t(S.cm.n_vertices), -1);   // per vertex: a face proven non-positive at it
-  if(!faces.empty()) {
-    const Variable_rows incidence(S.full, S.x.size());
-    Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
-    report.folds = prover.explain(faces, S.x);
-    for(Fold_explanation& e : report.folds) {
-      if(e.forced()) {
-        ++report.folds_forced;
-        for(std::size_t v : e.vertices) if(forced_face[v] < 0) forced_face[v] = int(e.face);
-        continue;
+  // the proofs of the faces (this thread) and the windings of the vertices share nothing either writes: on two threads
+  // with number_of_threads >= 2
+  Target_valences target;
+  std::vector<int> turns, K;
+  run_concurrently(opt.threads, [&] {
+    if(!faces.empty()) {
+      const Variable_rows incidence(S.full, S.x.size());
+      Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
+      report.folds = prover.explain(faces, S.x);
+      for(Fold_explanation& e : report.folds) {
+        if(e.forced()) {
+          ++report.folds_forced;
+          for(std::size_t v : e.vertices) if(forced_face[v] < 0) forced_face[v] = int(e.face);
+          continue;
+        }
+        if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
+        else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
+        else if(report.untangle_budget_spent)
+          e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
+        name_collapsed_pairs(S.cm.target[fc.halfedge[e.face][0]], e.message);
       }
-      if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
-      else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
-      else if(report.untangle_budget_spent)
-        e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
-      name_collapsed_pairs(S.cm.target[fc.halfedge[e.face][0]], e.message);
     }
-  }
+  }, [&] {
+    target = target_valences(S, fc);
+    turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations);
+    K = field_rotation_sums(S.cm, S.st, S.rot);
+  });
   // windings; at a corner of a face proven non-positive no solution is locally injective (its triangles are not all
   // positive), whatever the angle sum
   for(int v = 0; v < S.cm.n_vertices; ++v) {
