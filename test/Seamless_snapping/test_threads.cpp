@@ -1,0 +1,81 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+// number_of_threads under ThreadSanitizer (built only in the sanitizer build directory, with -fsanitize=thread:
+// test/Seamless_snapping/CMakeLists.txt; a data race aborts the test): every step that runs on two threads (the cones
+// and the sectors, the node system and the minimal-change start point, the proofs and the windings of the explain
+// stage, the OBJ writer's blocks) on maps of ../shared/data, in the default mode and as an untangled integer-grid map,
+// and the results of two threads against those of one, bit for bit. Without ../shared: a generated map.
+
+#include "mesh_test_support.h"
+
+#include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+
+#include <sstream>
+
+namespace {
+
+int failures = 0;
+#define CHECK(cond, what) do { if(!(cond)) { ++failures; std::cerr << "FAILED: " << what << std::endl; } } while(0)
+
+// the OBJ text of (m, uv) written with `threads` threads
+std::string obj_text(const Mesh& m, UV_map uv, unsigned threads)
+{
+  std::ostringstream os;
+  std::string message;
+  const SS::Status s = SS::IO::write_OBJ_with_corner_uvs(os, m, uv, message, SS::parameters::number_of_threads(threads));
+  return s == SS::SUCCESS ? os.str() : std::string();
+}
+
+void check_map(const std::string& name, const Mesh& input)
+{
+  for(int igm = 0; igm < 2; ++igm) {
+    Mesh one = input, two = input;
+    UV_map uv1 = uv_of(one), uv2 = uv_of(two);
+    const auto np = SS::parameters::integer_grid_map(igm == 1).untangle(igm == 1);
+    const SS::Snap_report r1 = SS::snap_seamless_parameterization(one, uv1, np.number_of_threads(1));
+    const SS::Snap_report r2 = SS::snap_seamless_parameterization(two, uv2, np.number_of_threads(2));
+    const std::string mode = igm == 1 ? "integer-grid map, untangled" : "default";
+    CHECK(r1.status == r2.status && r1.message == r2.message, name << " (" << mode << "): the same status and message");
+    CHECK(uv_bits(one, uv1) == uv_bits(two, uv2), name << " (" << mode << "): the same UVs, bit for bit");
+    CHECK(r1.nodes == r2.nodes && r1.folds.size() == r2.folds.size() && r1.winding_defects.size() == r2.winding_defects.size(),
+          name << " (" << mode << "): the same report");
+    const std::string text = obj_text(two, uv2, 2);
+    CHECK(!text.empty() && text == obj_text(two, uv2, 1), name << " (" << mode << "): the OBJ text of two threads is that of one");
+    std::cout << "threads: " << name << " (" << mode << "): " << SS::status_name(r2.status) << ", " << r2.faces << " faces, "
+              << text.size() << " bytes of OBJ text" << std::endl;
+  }
+}
+
+} // namespace
+
+int main()
+{
+  std::vector<fs::path> files;
+  if(shared_obj_files_or_skip("threads: shared maps", files)) {
+    for(const char* name : {"libqex/fandisk_param.obj", "directional/horsers-param-full-seamless.obj"}) {
+      Mesh m;
+      if(load_shared_or_skip(name, "threads", m)) check_map(name, m);
+    }
+  } else {
+    // a generated map: a flat 120 x 120 torus (28,800 faces, enough for the OBJ writer's second thread) with its two
+    // seams, the UVs moved by up to 1e-9 (a function of the UV, so that the corners of one chart stay equal)
+    Mesh m;
+    UV_map uv;
+    make_flat_torus(m, uv, 120, 120.);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) {
+        const Point_2 t = get(uv, h);
+        put(uv, h, Point_2(t.x() + 1e-9 * std::sin(7 * t.y() + 3 * t.x()), t.y() + 1e-9 * std::cos(5 * t.x() + 2 * t.y())));
+      }
+    check_map("generated torus", m);
+  }
+  std::cout << "test_threads: " << (failures == 0 ? "OK" : "FAILED") << " (" << failures << " failures)" << std::endl;
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
