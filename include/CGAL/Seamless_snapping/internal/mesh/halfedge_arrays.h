@@ -17,8 +17,9 @@
 // add_face() is CGAL::Euler::add_face() (CGAL 5.5, boost/graph/Euler_operations.h) step for step:
 // the same tests in the same order (isolated/border vertices, halfedge(u, v) found by walking around v
 // from halfedge(v), the "patch re-linking" of existing border halfedges, the cached set_next() calls,
-// adjust_incoming_halfedge()), on arrays instead of a generic FaceGraph. So it accepts and refuses the
-// same faces, and the replayed mesh has the same halfedges, edges, faces and vertex/face halfedges, in
+// adjust_incoming_halfedge()), on arrays instead of a generic FaceGraph; a walk is skipped only where what is
+// kept per vertex proves that it would find nothing (no border halfedge, no edge to that neighbour). So it accepts
+// and refuses the same faces, and the replayed mesh has the same halfedges, edges, faces and vertex/face halfedges, in
 // the same order, as a mesh built face by face with Euler::add_face() (and the corner UVs, sectors and
 // results of the snap do not change). Why: Euler::add_face() on a Surface_mesh costs about 1800
 // instructions per triangle (generic descriptors, three std::vector per call), and the reader used to
