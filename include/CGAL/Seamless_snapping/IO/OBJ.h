@@ -770,15 +770,6 @@ Status read_obj_impl(std::istream& is, const std::string& where, TriangleMesh& t
   return build_mesh(soup, weld, tm, vpm, uv, where, message);
 }
 
-// the number_of_threads parameter of the writer (default 1, 0 = the machine's cores)
-template <class NamedParameters>
-unsigned number_of_threads(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return Seamless_snapping::internal::resolve_number_of_threads(choose_parameter(get_parameter(np, snap_np::number_of_threads), 1u));
-}
-
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>
 Status prepare_obj_text(const TriangleMesh& tm, HalfedgeUVMap uv, Obj_text& text, std::string& message,
                         const NamedParameters& np)
@@ -954,7 +945,7 @@ Status write_OBJ_with_corner_uvs(const std::string& filename, const TriangleMesh
     return INVALID_INPUT;
   }
   const std::string summary = message;
-  const unsigned threads = internal::number_of_threads(np);
+  const unsigned threads = Seamless_snapping::internal::number_of_threads_parameter(np);
   if(internal::write_atomically(filename, [&](std::ostream& os) { return text.write(internal::Stream_flush{os}, threads); },
                                 message) != SUCCESS)
     return INVALID_INPUT;
@@ -976,7 +967,7 @@ Status write_OBJ_with_corner_uvs(std::ostream& os, const TriangleMesh& tm, Halfe
 {
   internal::Obj_text text;
   if(internal::prepare_obj_text(tm, uv, text, message, np) != SUCCESS) return INVALID_INPUT;
-  const bool ok = text.write(internal::Stream_flush{os}, internal::number_of_threads(np));
+  const bool ok = text.write(internal::Stream_flush{os}, Seamless_snapping::internal::number_of_threads_parameter(np));
   os.flush();
   if(!ok || !os) {
     message = "stream: write failed";

@@ -16,6 +16,10 @@
 // 2.34 and later need no -pthread, older systems link Threads::Threads, which the package's CMake target
 // does).
 
+#include <CGAL/Seamless_snapping/internal/parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
 #include <exception>
 #include <system_error>
 #include <thread>
@@ -30,6 +34,15 @@ inline unsigned resolve_number_of_threads(unsigned requested)
   if(requested != 0) return requested;
   const unsigned cores = std::thread::hardware_concurrency();
   return cores == 0 ? 1u : cores;
+}
+
+// the number_of_threads named parameter of `np`, resolved (`default_threads` where it is not given)
+template <class NamedParameters>
+unsigned number_of_threads_parameter(const NamedParameters& np, unsigned default_threads = 1)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return resolve_number_of_threads(choose_parameter(get_parameter(np, snap_np::number_of_threads), default_threads));
 }
 
 // a() on the calling thread and b() on a second thread when `threads` >= 2, else (or when no thread can be

@@ -16,6 +16,7 @@
 #include <CGAL/Seamless_snapping/internal/parameters.h>
 #include <CGAL/Seamless_snapping/internal/surface/connection_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/snap_pipeline.h>
+#include <CGAL/Seamless_snapping/internal/threads.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -99,7 +100,7 @@ struct Snap_inputs
     options.max_untangle_change = choose_parameter(get_parameter(np, snap_np::max_untangle_change), defaults.max_untangle_change);
     options.merge_cone_pairs = choose_parameter(get_parameter(np, snap_np::merge_cone_pairs), defaults.merge_cone_pairs);
     options.separate_cone_pairs = choose_parameter(get_parameter(np, snap_np::separate_cone_pairs), defaults.separate_cone_pairs);
-    options.threads = resolve_number_of_threads(choose_parameter(get_parameter(np, snap_np::number_of_threads), defaults.threads));
+    options.threads = number_of_threads_parameter(np, defaults.threads);
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),
                                     options.connections);

@@ -616,12 +616,11 @@ std::vector<char> input_positive_faces(const Snap_state<TriangleMesh>& S)
 
 // per vertex: the angle sum in quarter turns a locally injective map has there (vertex_windings.h); at the cones of
 // merged pairs, the valence the merge gave them (4: a regular point of the field; at a joined cone any other member
-// of its class of at least 2 as well)
+// of its class of at least 2 as well). K: field_rotation_sums() of S
 template <class TriangleMesh>
-Target_valences target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc)
+Target_valences target_valences(const Snap_state<TriangleMesh>& S, const Face_corners& fc, const std::vector<int>& K)
 {
-  Target_valences target = vertex_valences(S.cm, field_rotation_sums(S.cm, S.st, S.rot), S.st.quarter_turns,
-                                           input_positive_faces(S), S.points, fc.halfedge);
+  Target_valences target = vertex_valences(S.cm, K, S.st.quarter_turns, input_positive_faces(S), S.points, fc.halfedge);
   for(std::size_t v = 0; v < S.merged_valence.size(); ++v)
     if(S.merged_valence[v] != 0) {
       target.valence[v] = S.merged_valence[v];
@@ -674,7 +673,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   report.snap_rms_change = snap.rms;
   if(!opt.untangle) return SUCCESS;
   const Face_corners fc(S.cm);
-  Target_valences target = target_valences(S, fc);
+  Target_valences target = target_valences(S, fc, field_rotation_sums(S.cm, S.st, S.rot));
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   auto wound_at = [&](int v) { return target.wound(std::size_t(v), turns[std::size_t(v)]); };
   std::vector<char> from_3d(std::size_t(S.cm.n_faces), 0);
@@ -823,9 +822,9 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       }
     }
   }, [&] {
-    target = target_valences(S, fc);
-    turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations);
     K = field_rotation_sums(S.cm, S.st, S.rot);
+    target = target_valences(S, fc, K);
+    turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations);
   });
   // windings; at a corner of a face proven non-positive no solution is locally injective (its triangles are not all
   // positive), whatever the angle sum
