@@ -262,11 +262,12 @@ static int fail(const std::string& why)
   return EXIT_FAILURE;
 }
 
-static bool read_mesh(const std::string& in, bool weld, Mesh& mesh, UV_map& uv, std::string& message)
+static bool read_mesh(const std::string& in, bool weld, unsigned threads, Mesh& mesh, UV_map& uv, std::string& message)
 {
   mesh = Mesh();
   uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
-  return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) == SS::SUCCESS;
+  return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld).number_of_threads(threads))
+         == SS::SUCCESS;
 }
 
 // The options of a run (one input, or each input of --outdir).
@@ -325,12 +326,12 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   UV_map uv;
   std::string message;
   Clock::time_point t = Clock::now();
-  if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
+  if(!read_mesh(in, weld, o.threads, mesh, uv, message)) return fail("cannot read input: " + message);
   const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
   const bool cut_mesh = cut.is_cut_mesh();
   if(cut_mesh && !no_weld) {
     weld = true;
-    if(!read_mesh(in, weld, mesh, uv, message)) return fail("cannot read input: " + message);
+    if(!read_mesh(in, weld, o.threads, mesh, uv, message)) return fail("cannot read input: " + message);
     if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
                          << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }

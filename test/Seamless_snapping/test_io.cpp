@@ -373,6 +373,97 @@ static void test_malformed()
 }
 
 // ------------------------------------------------------------------------------------------
+// parse_obj_file() with two threads (the file parsed in two halves, joined) against parse_obj() of the same text on
+// one thread: the same status and message, and on success the same soup, bit for bit. Random texts of valid and
+// broken records (relative indices, forward references, comments, CR LF, a byte-order mark, a last line without
+// '\n', bad numbers, out-of-range indices), so that the cut falls anywhere; and the shared OBJ files.
+static bool same_soup(const SS::IO::internal::Obj_soup& a, const SS::IO::internal::Obj_soup& b)
+{
+  auto bits = [](const auto& x, const auto& y) {
+    return x.size() == y.size() && (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+  };
+  return bits(a.points, b.points) && bits(a.uvs, b.uvs) && a.face_v == b.face_v && a.face_vt == b.face_vt &&
+         a.face_line == b.face_line && a.skipped_records == b.skipped_records;
+}
+
+static void compare_split_parse(const fs::path& file, const std::string& name, std::size_t& split_successes,
+                                std::size_t& in_halves)
+{
+  namespace I = SS::IO::internal;
+  I::Obj_soup one, two;
+  std::string m1, m2;
+  std::ifstream is(file, std::ios::binary);
+  const SS::Status s1 = I::parse_obj(is, one, file.string(), m1);
+  bool halves = false;
+  const SS::Status s2 = I::parse_obj_file(file.string(), two, m2, 2, 0, &halves);
+  in_halves += halves ? 1 : 0;
+  CHECK(s1 == s2 && m1 == m2, name << ": one thread " << SS::status_name(s1) << " '" << m1 << "', two threads "
+                                   << SS::status_name(s2) << " '" << m2 << "'");
+  if(s1 == SS::SUCCESS && s2 == SS::SUCCESS) {
+    CHECK(same_soup(one, two), name << ": the two threads' soup differs from one thread's");
+    ++split_successes;
+  }
+}
+
+static void test_split_parse(const fs::path& tmp)
+{
+  std::cout << "io: the file parsed in two halves on two threads = on one thread\n";
+  std::mt19937 rng(26);
+  std::size_t files = 0, successes = 0, halves = 0;
+  for(int t = 0; t < 400; ++t) {
+    std::uniform_int_distribution<int> pick(0, 99), small(1, 12);
+    const bool broken = t % 4 == 3;                      // a quarter with a bad record somewhere
+    std::string text = pick(rng) < 10 ? "\xEF\xBB\xBF" : "";
+    int nv = 0, nvt = 0;
+    const int lines = 5 + pick(rng) * (t % 3 + 1);
+    const int bad_at = broken ? int(rng() % unsigned(lines)) : -1;
+    for(int l = 0; l < lines; ++l) {
+      const int r = pick(rng);
+      std::string line;
+      if(l == bad_at) {
+        const char* bad[] = {"v 0 0 1x", "f 1/1 2/2", "vt inf 0", "f 0/1 1/1 2/1", "f 1/1 2/2 3/3 4/4", "f 1 2 3",
+                             "f -99/1 1/1 2/1", "f 1/1 2/2 999/1"};
+        line = bad[rng() % 8];
+      } else if(r < 30 || nv < 3) {
+        line = "v " + std::to_string(small(rng)) + " " + std::to_string(pick(rng)) + ".25 -" + std::to_string(small(rng));
+        ++nv;
+      } else if(r < 55 || nvt < 1) {
+        line = "vt 0." + std::to_string(pick(rng)) + " " + std::to_string(small(rng));
+        ++nvt;
+      } else if(r < 90) {
+        line = "f";
+        for(int k = 0; k < 3; ++k) {
+          const int a = int(rng() % unsigned(nv)), b = int(rng() % unsigned(nvt));
+          const bool relative = t % 3 == 0 && pick(rng) < 15, forward = pick(rng) < 3;
+          line += " " + (relative ? std::to_string(a - nv) : std::to_string(a + 1 + (forward ? 1 : 0))) + "/" +
+                  (relative ? std::to_string(b - nvt) : std::to_string(b + 1)) + (pick(rng) < 20 ? "/1" : "");
+        }
+      } else if(r < 94) line = "# a comment f 1/1";
+      else if(r < 97) line = "vn 0 0 1";
+      else line = "";
+      text += line + (pick(rng) < 10 ? "\r\n" : "\n");
+    }
+    if(pick(rng) < 20 && !text.empty()) text.pop_back();   // no '\n' at the end
+    const fs::path file = tmp / ("split_" + std::to_string(t) + ".obj");
+    { std::ofstream os(file, std::ios::binary); os << text; }
+    compare_split_parse(file, "random text " + std::to_string(t), successes, halves);
+    ++files;
+    fs::remove(file);
+  }
+  const fs::path root(SS_SHARED_DATA_DIR);
+  if(!root.empty() && fs::is_directory(root))
+    for(const auto& e : fs::recursive_directory_iterator(root))
+      if(e.is_regular_file() && e.path().extension() == ".obj" && shared_data_file_in_subset(e.file_size())) {
+        compare_split_parse(e.path(), e.path().filename().string(), successes, halves);
+        ++files;
+      }
+  std::cout << "  " << files << " files, " << successes << " read (" << halves << " of them in two halves), the others "
+               "refused with the same message\n";
+  CHECK(successes > 100 && successes < files && halves > 100 && halves < successes,
+        "split parse: every outcome exercised (" << successes << " read, " << halves << " in halves, of " << files << ")");
+}
+
+// ------------------------------------------------------------------------------------------
 // The reader's connectivity (Halfedge_arrays, internal/mesh/halfedge_arrays.h) against CGAL::Euler::add_face(), face by
 // face on a Surface_mesh, as the reader built it before issue 26, followed by the same fan test: the same faces refused
 // or the same halfedge structure, element by element (target, next, prev, face of every halfedge; halfedge of every
@@ -531,11 +622,22 @@ static void test_quad_arrays_equivalence()
       quads.push_back(q);
     }
     Mesh ref, got;
-    for(int i = 0; i < n * n; ++i) ref.add_vertex(Point_3(i, 0, 0));
+    // copy_to() appends: every third mesh starts with a triangle, every third with a triangle removed again (garbage:
+    // add_vertex() and friends recycle its elements; without garbage, copy_to() creates the elements at once)
+    for(Mesh* m : {&ref, &got})
+      if(round % 3 != 0) {
+        const std::array<vertex_descriptor, 3> t = {m->add_vertex(Point_3(0, 0, 1)), m->add_vertex(Point_3(1, 0, 1)),
+                                                    m->add_vertex(Point_3(0, 1, 1))};
+        const face_descriptor f = CGAL::Euler::add_face(t, *m);
+        if(round % 3 == 2) CGAL::Euler::remove_face(halfedge(f, *m), *m);
+      }
+    CHECK(got.has_garbage() == (round % 3 == 2), "quad soup " << round << ": the mesh has garbage iff a face was removed");
+    std::vector<vertex_descriptor> rv;
+    for(int i = 0; i < n * n; ++i) rv.push_back(ref.add_vertex(Point_3(i, 0, 0)));
     SS::internal::Halfedge_arrays a(std::size_t(n * n), quads.size(), 4);
     for(std::size_t q = 0; q < quads.size(); ++q) {
-      const std::array<vertex_descriptor, 4> fv = {vertex_descriptor(quads[q][0]), vertex_descriptor(quads[q][1]),
-                                                   vertex_descriptor(quads[q][2]), vertex_descriptor(quads[q][3])};
+      const std::array<vertex_descriptor, 4> fv = {rv[std::size_t(quads[q][0])], rv[std::size_t(quads[q][1])],
+                                                   rv[std::size_t(quads[q][2])], rv[std::size_t(quads[q][3])]};
       const bool ref_ok = CGAL::Euler::add_face(fv, ref) != Mesh::null_face();
       const bool got_ok = a.add_face(quads[q]);
       CHECK(ref_ok == got_ok, "quad soup " << round << ", quad " << q << ": Euler::add_face " << (ref_ok ? "adds" : "refuses")
@@ -1146,6 +1248,7 @@ int main(int argc, char** argv)
   const fs::path tmp = scratch_dir();
   test_json_strings();
   test_malformed();
+  test_split_parse(tmp);
   test_euler_equivalence();
   test_quad_arrays_equivalence();
   test_valid_variants();

@@ -17,6 +17,7 @@
 // as much time in std::getline as in parsing the numbers. Memory: one block (larger only for a line
 // longer than a block).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <istream>
@@ -29,18 +30,20 @@ namespace internal {
 
 // Calls use(begin, end, line_number) for each line (line numbers from 1) until it returns false.
 // Returns the number of lines handed out; `read_error` = the stream went bad (istream::bad()) while reading.
+// At most `limit` bytes of the stream are read (the part of a file before a given offset).
 template <class Use>
-std::size_t for_each_line(std::istream& is, const Use& use, bool& read_error)
+std::size_t for_each_line(std::istream& is, const Use& use, bool& read_error, std::size_t limit = std::size_t(-1))
 {
   std::vector<char> block(std::size_t(1) << 20);
   std::size_t kept = 0, lineno = 0;   // kept: bytes of an unfinished line at the start of the block
   read_error = false;
   for(;;) {
     if(kept == block.size()) block.resize(2 * block.size());   // a line longer than the block
-    is.read(block.data() + kept, std::streamsize(block.size() - kept));
+    is.read(block.data() + kept, std::streamsize((std::min)(block.size() - kept, limit)));
     const std::size_t got = std::size_t(is.gcount());
+    limit -= got;
     const std::size_t size = kept + got;
-    const bool last = got == 0 || !is;
+    const bool last = got == 0 || !is || limit == 0;
     const char* p = block.data();
     const char* const end = p + size;
     for(;;) {
