@@ -26,6 +26,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
+#include <CGAL/Seamless_snapping/internal/threads.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
@@ -429,18 +430,11 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                 std::to_string(report.degenerate_unrepaired) + " degenerate UV triangles introduced and not repaired; "
                 "nothing was written");
 
-  // 3. verify independently, in rational arithmetic; 4. write atomically
+  // 3. verify independently, in rational arithmetic; 4. write atomically. The valences come first, so that a failure
+  //    leaves no OUT.obj behind. With two threads or more, the OBJ text is written to the temporary file while the map
+  //    is verified, and the file becomes OUT.obj only if it is (write_atomically(); the 302K-face bunny: verification
+  //    28 ms, writing 80-90 ms)
   t = Clock::now();
-  const bool exact = keep_layout ? SS::is_exactly_seamless(V, F, UV_out, FUV_out, params::weld_vertices(weld))
-                                 : SS::is_exactly_seamless(mesh, uv, params::edge_is_constrained_map(features));
-  if(!exact) return fail("verification failed: the snapped map is not exactly seamless (internal error; please report)");
-  if(!quiet) std::cout << "verified: every seam transition holds exactly\n";
-  if(integer_grid && !keep_layout &&
-     !SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale).edge_is_constrained_map(features)))
-    return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
-  if(integer_grid && !keep_layout && !quiet)
-    std::cout << "verified: integer translations on every cut edge, every cone on an integer point\n";
-  // the valences before anything is written, so that a failure leaves no OUT.obj behind
   SS::Quad_valences valences;
   if(!vval_file.empty()) {
     valences = SS::quad_valences(mesh, uv);
@@ -448,10 +442,44 @@ static int snap_file(const Options& options, const std::string& in, const std::s
       return fail("--vval: " + std::string(SS::status_name(valences.status)) + ": " + valences.message +
                   (valences.status == SS::FOLD_OVERS ? " (libQEx does better without a VVAL file here); nothing was written" : ""));
   }
-  const SS::Status written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
-                                         : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message,
-                                                                             params::vt_per_corner(vt_per_corner)
-                                                                               .number_of_threads(o.threads));
+  bool checked = false, exact = false, grid_exact = true;
+  auto verify = [&] {
+    checked = true;
+    exact = keep_layout ? SS::is_exactly_seamless(V, F, UV_out, FUV_out, params::weld_vertices(weld))
+                        : SS::is_exactly_seamless(mesh, uv, params::edge_is_constrained_map(features));
+    if(exact && integer_grid && !keep_layout)
+      grid_exact = SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale).edge_is_constrained_map(features));
+  };
+  auto verification_failure = [&] {
+    return fail(!exact ? "verification failed: the snapped map is not exactly seamless (internal error; please report)"
+                       : "verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
+  };
+  auto verified = [&] {
+    if(quiet) return;
+    std::cout << "verified: every seam transition holds exactly\n";
+    if(integer_grid && !keep_layout) std::cout << "verified: integer translations on every cut edge, every cone on an integer point\n";
+  };
+  const auto write_np = params::vt_per_corner(vt_per_corner).number_of_threads(o.threads);
+  SS::Status written = SS::INVALID_INPUT;
+  if(keep_layout || SS::internal::resolve_number_of_threads(o.threads) < 2) {
+    verify();
+    if(!exact || !grid_exact) return verification_failure();
+    verified();
+    written = keep_layout ? SS::IO::write_OBJ_matrices(out, V, F, UV_out, FUV_out, message)
+                          : SS::IO::write_OBJ_with_corner_uvs(out, mesh, uv, message, write_np);
+  } else {
+    std::string summary;
+    SS::Status text_written = SS::INVALID_INPUT;
+    written = SS::IO::internal::write_atomically(out, [&](std::ostream& os) {
+      SS::internal::run_concurrently(2, verify, [&] { text_written = SS::IO::write_OBJ_with_corner_uvs(os, mesh, uv, summary, write_np); });
+      return text_written == SS::SUCCESS && exact && grid_exact;   // else the temporary file is removed
+    }, message);
+    if(!checked) verify();                                           // the temporary file could not be created
+    if(!exact || !grid_exact) return verification_failure();
+    verified();
+    if(written == SS::SUCCESS) message = summary + " to " + out;
+    else if(text_written != SS::SUCCESS && !summary.empty()) message += " (" + summary + ")";
+  }
   if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
   if(!vval_file.empty()) {
