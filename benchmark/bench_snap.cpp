@@ -20,7 +20,8 @@
 // and the write (each phase's own peak: the kernel's high-water mark is reset before it through
 // /proc/self/clear_refs where Linux allows it, else the peak so far is printed with a '+'). Wall clock in ms, the
 // minimum over N runs (default 3); CPU columns: the process's CPU time of the same phase (the machine may be shared).
-// --threads N: the snap and the write with number_of_threads(N) (default 1; the CPU columns then add up the threads).
+// --threads N: the read, the snap and the write with number_of_threads(N) (default 1; the CPU columns then add up the
+// threads); with --untangle, both snaps of each row.
 //
 // After the timing table (or alone with --change): the size of the change against the smallest exact
 // change u* = argmin ||u - ubar||_2 s.t. C u = 0 over the same sector system (Eq. 4 per cut edge,
@@ -84,12 +85,13 @@ namespace fs = std::filesystem;
 
 // Reads a model; files under a "directional" folder are cut meshes (Directional) and get welded.
 // On failure, prints a "cannot read" table row, counts it in `failures` and returns false.
-static bool read_model(const fs::path& p, Mesh& m, UV_map& uv, int& failures)
+static bool read_model(const fs::path& p, Mesh& m, UV_map& uv, int& failures, unsigned threads = 1)
 {
   uv = m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
   const bool weld = p.string().find("directional") != std::string::npos;
   std::string msg;
-  if(SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld)) == SS::SUCCESS) return true;
+  if(SS::IO::read_OBJ_with_corner_uvs(p.string(), m, uv, msg, SS::parameters::weld_vertices(weld).number_of_threads(threads))
+     == SS::SUCCESS) return true;
   std::printf("%-36s cannot read: %s\n", p.filename().string().c_str(), msg.c_str());
   ++failures;
   return false;
@@ -307,8 +309,9 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
 // injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
 // (max / RMS beyond the snap, and the snap alone's max); the times of the snap alone (untangle(false)) and of
 // untangling + snap (of it, the polish), and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
-static int untangle_study(const std::vector<fs::path>& files, int repeat)
+static int untangle_study(const std::vector<fs::path>& files, int repeat, unsigned threads)
 {
+  std::printf("number_of_threads(%u)\n", threads);
   std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %7s %6s | %s\n", "model", "mode", "#F",
               "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
               "snap ms", "unt.+snap", "polish", "ratio", "exact");
@@ -327,11 +330,13 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat)
         Mesh m0 = input;
         UV_map uv0 = m0.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
         const SS::Snap_report a = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::integer_grid_map(igm).untangle(false)
-                                                                               .merge_cone_pairs(merge).separate_cone_pairs(separate));
+                                                                               .merge_cone_pairs(merge).separate_cone_pairs(separate)
+                                                                               .number_of_threads(threads));
         Mesh m = input;
         UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
         const SS::Snap_report b = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(igm).untangle(true)
-                                                                             .merge_cone_pairs(merge).separate_cone_pairs(separate));
+                                                                             .merge_cone_pairs(merge).separate_cone_pairs(separate)
+                                                                             .number_of_threads(threads));
         if(r == 0 || a.total_ms < alone.total_ms) alone = a;
         if(r == 0 || b.total_ms < best.total_ms) { best = b; out = m; }
       }
@@ -421,7 +426,7 @@ static int large_study(const std::vector<fs::path>& files, int repeat, unsigned 
       auto t0 = std::chrono::steady_clock::now();
       Mesh m;
       UV_map uv;
-      if(!read_model(p, m, uv, fails)) { ++failures; ok = false; break; }
+      if(!read_model(p, m, uv, fails, threads)) { ++failures; ok = false; break; }
       const double t_read = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const double c_read = cpu_ms() - c0;
       const double m_read = peak_rss_mb();
@@ -476,7 +481,7 @@ int main(int argc, char** argv)
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   int repeat = 3;
   bool connections = false, change_only = false, integer_grid = false, untangle = false, large = false;
-  unsigned threads = 1;                      // --large: number_of_threads of the snap and the write
+  unsigned threads = 1;                      // --large, --untangle: number_of_threads
   int subdivide_levels = -1;
   std::vector<fs::path> inputs;
   for(int i = 1; i < argc; ++i) {
@@ -495,11 +500,11 @@ int main(int argc, char** argv)
     inputs.emplace_back(argv[i]);
   }
   std::vector<fs::path> files;
-  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--large [--threads N]] [--connections | --change | --integer-grid | --untangle | --subdivide L] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--threads N] [--large] [--connections | --change | --integer-grid | --untangle | --subdivide L] <file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files)) return EXIT_FAILURE;
   if(large) return large_study(files, repeat, threads);
   if(connections) return connection_study(files, repeat);
   if(integer_grid) return integer_grid_study(files, repeat);
-  if(untangle) return untangle_study(files, repeat);
+  if(untangle) return untangle_study(files, repeat, threads);
   if(subdivide_levels >= 0) return scaling_study(files, subdivide_levels, repeat);
   if(change_only) return change_study(files);
 

@@ -9,14 +9,16 @@
 
 // number_of_threads under ThreadSanitizer (built only in the sanitizer build directory, with -fsanitize=thread:
 // test/Seamless_snapping/CMakeLists.txt; a data race aborts the test): every step that runs on two threads (the cones
-// and the sectors, the node system and the minimal-change start point, the proofs and the windings of the explain
-// stage, the OBJ writer's blocks) on maps of ../shared/data, in the default mode and as an untangled integer-grid map,
-// and the results of two threads against those of one, bit for bit. Without ../shared: a generated map.
+// and the sectors, the node system and the minimal-change start point, the two halves of the untangling's independent
+// parts (duck_miq_8), the proofs and the windings of the explain stage, the OBJ writer's blocks, the OBJ reader's two
+// halves of a file) on maps of ../shared/data, in the default mode and as an untangled integer-grid map, and the results
+// of two threads against those of one, bit for bit. Without ../shared: a generated map.
 
 #include "mesh_test_support.h"
 
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
+#include <fstream>
 #include <sstream>
 
 namespace {
@@ -59,10 +61,20 @@ int main()
 {
   std::vector<fs::path> files;
   if(shared_obj_files_or_skip("threads: shared maps", files)) {
-    for(const char* name : {"libqex/fandisk_param.obj", "directional/horsers-param-full-seamless.obj"}) {
+    for(const char* name : {"libqex/fandisk_param.obj", "directional/horsers-param-full-seamless.obj", "libqex/duck_miq_8_param.obj"}) {
       Mesh m;
       if(load_shared_or_skip(name, "threads", m)) check_map(name, m);
     }
+    const fs::path file = fs::path(SS_SHARED_DATA_DIR) / "libqex/fandisk_param.obj";   // the reader: its two halves
+    SS::IO::internal::Obj_soup one, two;
+    std::string m1, m2;
+    std::ifstream is(file, std::ios::binary);
+    bool halves = false;
+    CHECK(SS::IO::internal::parse_obj(is, one, file.string(), m1) == SS::SUCCESS &&
+          SS::IO::internal::parse_obj_file(file.string(), two, m2, 2, 0, &halves) == SS::SUCCESS && halves &&
+          one.points == two.points && one.uvs == two.uvs && one.face_v == two.face_v && one.face_vt == two.face_vt,
+          "fandisk read in two halves on two threads as on one");
+    std::cout << "threads: fandisk read in two halves: " << two.face_v.size() << " faces" << std::endl;
   } else {
     // a generated map: a flat 120 x 120 torus (28,800 faces, enough for the OBJ writer's second thread) with its two
     // seams, the UVs moved by up to 1e-9 (a function of the UV, so that the corners of one chart stay equal)

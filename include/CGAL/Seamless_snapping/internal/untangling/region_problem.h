@@ -265,15 +265,15 @@ public:
     return n;
   }
 
-  // the gradient g and, with `hessian`, the PSD Hessian (into the values of H) of the energy of the groups that
-  // are not -1 (group_values()); the other entries of g and H are 0
+  // the gradient g and, with `hessian`, the PSD Hessian (added to the values of H, which the caller sets to 0 in the
+  // columns of the groups first) of the energy of the groups that are not -1 (group_values()); the other entries of g
+  // are 0, those of H untouched
   void derivatives(const std::vector<double>& w, const std::vector<double>& eps, double weight_proximity,
                    const std::vector<int>& group_of_face, const std::vector<int>& group_of_var, Eigen::VectorXd& g,
                    bool hessian)
   {
     g.setZero();
     double* values = H.valuePtr();
-    if(hessian) std::fill(values, values + H.nonZeros(), 0.);
     std::vector<double> HB;
     for(std::size_t i = 0; i < faces.size(); ++i) {
       const Face& e = faces[i];

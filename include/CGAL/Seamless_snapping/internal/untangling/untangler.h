@@ -116,6 +116,8 @@ struct Untangle_options
                                               // 0.0271 -> 0.0257 (bench_snap --untangle)
   double work_per_face = 400;                 // budget of the untangling (step 1): face evaluations (energy or
                                               // derivatives of one face) per face of the mesh; deterministic
+  unsigned threads = 1;                       // >= 2: two halves of the independent parts at once (independent_parts.h);
+                                              // the same results
 };
 
 struct Untangle_statistics
@@ -348,7 +350,7 @@ private:
   void untangle(Region_problem& p, const Untangle_options& opt, std::vector<double>& w, Untangle_statistics& stats) const
   {
     if(p.dimension() == 0 || p.faces.empty()) return;
-    Independent_parts parts(p);
+    Independent_parts parts(p, opt.threads);
     const std::size_t n = std::size_t(parts.n);
     std::vector<char> active(n, 1);
     std::vector<double> eps(n, opt.eps0), E_prev, D, E, slope, t;
@@ -429,7 +431,7 @@ private:
     // the energy is lambda-weighted f (barrier) + proximity; group_values() weighs proximity, so scale by 1 / lambda
     const std::vector<double> eps(1, 1e-12);
     const double weight = 1 / lambda;
-    Independent_parts parts(p);                                  // each part steps and stops on its own
+    Independent_parts parts(p, opt.threads);                                  // each part steps and stops on its own
     std::vector<char> active(std::size_t(parts.n), 1);
     std::vector<double> E, D, slope, t;
     Eigen::VectorXd d;
@@ -439,7 +441,7 @@ private:
       ++stats.polish_steps;
       parts.newton_directions(p, w, eps, weight, it % 2 == 0, active, d, slope);   // odd steps: the last factorizations
       t.assign(std::size_t(parts.n), HUGE_VAL);
-      p.group_positive_steps(w, d, opt.polish_min_det, parts.masked(parts.of_face, active), t);
+      parts.positive_steps(p, w, d, opt.polish_min_det, active, t);
       for(double& tc : t) tc = (std::min)(1., 0.8 * tc);
       parts.line_search(p, w, d, slope, t, eps, weight, opt.polish_tolerance, active, E, D);
     }
