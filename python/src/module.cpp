@@ -1,7 +1,7 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
 // project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...),
-// read_obj(filename, weld), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...).
+// read_obj(filename, weld, threads), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text. Arguments refused
 // before any computation raise InputError (a ValueError), registered here for the Python side too.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
@@ -42,7 +42,7 @@ struct Input_error : std::invalid_argument
 
 // (V, F, UV, FUV, message) of the OBJ file in its own layout (rows of V welded with `weld`); InputError with the
 // reader's message ("<file>:<line>: <reason>") when it cannot be read
-py::tuple read_obj(const std::string& filename, bool weld)
+py::tuple read_obj(const std::string& filename, bool weld, unsigned threads)
 {
   Eigen::MatrixXd V, UV;
   Eigen::MatrixXi F, FUV;
@@ -50,7 +50,7 @@ py::tuple read_obj(const std::string& filename, bool weld)
   SS::Status s;
   {
     py::gil_scoped_release release;
-    s = SS::IO::read_OBJ_matrices(filename, V, F, UV, FUV, message, SS::parameters::weld_vertices(weld));
+    s = SS::IO::read_OBJ_matrices(filename, V, F, UV, FUV, message, SS::parameters::weld_vertices(weld).number_of_threads(threads));
   }
   if(s != SS::SUCCESS) throw Input_error(message);
   return py::make_tuple(V, F, UV, FUV, message);
@@ -408,7 +408,7 @@ PYBIND11_MODULE(_core, m)
 {
   m.doc() = "Exact seamless snapping (Mandad & Campen 2019): C++ core of the seamless_snapping package";
   py::register_exception<Input_error>(m, "InputError", PyExc_ValueError);
-  m.def("read_obj", &read_obj, py::arg("filename"), py::arg("weld"));
+  m.def("read_obj", &read_obj, py::arg("filename"), py::arg("weld"), py::arg("threads"));
   m.def("write_obj", &write_obj, py::arg("filename"), py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"));
   m.def("snap", &snap, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("repair_flips"), py::arg("align_boundary"), py::arg("use_reduced_system"),

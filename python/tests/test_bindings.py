@@ -502,6 +502,31 @@ def test_read_obj_weld(tmp_path):
     assert report["cut_edges"] == ss.snap(V, F, UV, FUV)[2]["cut_edges"] > 0 and ss.is_exactly_seamless(Vw, Fw, UV2, FUV2)
 
 
+def test_read_obj_threads(tmp_path):
+    # a file of more than 4 MiB is parsed in two halves with threads=2: the same matrices, bit for bit, and the same
+    # message for an error in its second half
+    V, F, UV, FUV = cut_grid(n=160, noise=1e-9)
+    path = tmp_path / "big.obj"
+    ss.write_obj(path, V, F, UV, FUV)
+    assert os.path.getsize(path) > 4 << 20
+    one, two = ss.read_obj(path, threads=1), ss.read_obj(path, threads=2)
+    for a, b in zip(one, two):
+        assert a.dtype == b.dtype and a.shape == b.shape
+        assert np.array_equal(bits(a), bits(b)) if a.dtype == np.float64 else np.array_equal(a, b)
+    bad = tmp_path / "bad_big.obj"
+    lines = path.read_text().splitlines()
+    lines[-10] = "f 1/1 2/2"
+    bad.write_text("\n".join(lines) + "\n")
+    messages = []
+    for threads in (1, 2):
+        with pytest.raises(ss.InputError) as e:
+            ss.read_obj(bad, threads=threads)
+        messages.append(str(e.value))
+    assert messages[0] == messages[1] and ":%d: face with 2 vertices" % (len(lines) - 9) in messages[0]
+    with pytest.raises(ss.InputError, match="threads must be in"):
+        ss.read_obj(path, threads=-1)
+
+
 def test_obj_errors(tmp_path):
     bad = tmp_path / "bad.obj"
     bad.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 4/1\n")

@@ -45,6 +45,13 @@ namespace IO {
  *     \cgalParamDefault{`false`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::weld_vertices()`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_threads}
+ *     \cgalParamDescription{with 2 or more, a file of 4 MiB or more is parsed in two halves at once, on two threads
+ *                           (the same matrices and messages as on one thread); `0` takes the machine's cores}
+ *     \cgalParamType{unsigned integer}
+ *     \cgalParamDefault{`1`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::number_of_threads()`}
+ *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
  * \sa `write_OBJ_matrices()`, `read_OBJ_with_corner_uvs()`
@@ -58,10 +65,9 @@ Status read_OBJ_matrices(const std::string& filename, Eigen::MatrixXd& V, Eigen:
   using CGAL::parameters::get_parameter;
   const bool weld = choose_parameter(get_parameter(np, snap_np::weld_vertices), false);
 
-  std::ifstream is(filename, std::ios::binary);
-  if(!is) { message = "cannot open '" + filename + "' for reading"; return INVALID_INPUT; }
   internal::Obj_soup soup;
-  if(internal::parse_obj(is, soup, filename, message) != SUCCESS) return INVALID_INPUT;
+  if(internal::parse_obj_file(filename, soup, message, Seamless_snapping::internal::number_of_threads_parameter(np)) != SUCCESS)
+    return INVALID_INPUT;
   if(soup.points.size() > std::size_t(2147483647) || soup.uvs.size() > std::size_t(2147483647)) {
     message = filename + ": more vertices or texture coordinates than 32-bit indices hold";
     return INVALID_INPUT;
