@@ -1,7 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
-//                 [--report FILE.json] [--quiet]
+//                 [--report FILE.json] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -47,7 +47,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--report FILE.json] [--quiet]\n";
+  "                     [--report FILE.json] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
@@ -84,6 +84,9 @@ static const char* help_text =
   "                       merges such pairs too), and other pairs on one point are not joined into one\n"
   "                       cone. The snap report lists the merged pairs\n"
   "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
+  "  --threads N          threads for independent steps of the reading and the snap (its untangling\n"
+  "                       included; the same quad mesh whatever N): 0, the default, takes the machine's\n"
+  "                       cores; 1 runs on one thread\n"
   "  --quiet              print nothing but errors\n"
   "  --help               print this help\n"
   "\n"
@@ -123,6 +126,7 @@ int main(int argc, char** argv)
   std::string in, out, report_file;
   bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;
+  unsigned threads = 0;                 // 0: the machine's cores
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--help" || a == "-h") { std::cout << usage_text << "\n" << help_text; return EXIT_SUCCESS; }
@@ -136,6 +140,15 @@ int main(int argc, char** argv)
       if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
         std::cerr << "seamless_quad: --grid-scale needs a number\n" << usage_text; return 2;
       }
+      ++i;
+    }
+    else if(a == "--threads") {
+      char* end = nullptr;
+      const unsigned long n = i + 1 < argc ? std::strtoul(argv[i + 1], &end, 10) : 0;
+      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n > 1024) {
+        std::cerr << "seamless_quad: --threads needs a number of threads in [0, 1024]\n" << usage_text; return 2;
+      }
+      threads = unsigned(n);
       ++i;
     }
     else if(a == "--report") {
@@ -161,7 +174,8 @@ int main(int argc, char** argv)
   auto read = [&]() {
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
-    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld)) == SS::SUCCESS;
+    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld).number_of_threads(threads))
+           == SS::SUCCESS;
   };
   if(!read()) return fail("cannot read input: " + message);
   const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
@@ -178,7 +192,9 @@ int main(int argc, char** argv)
   if(!quiet) std::cout << message << "\n";
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)
-  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle).merge_cone_pairs(merge).grid_scale(grid_scale));
+  const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle)
+                                                                               .merge_cone_pairs(merge).grid_scale(grid_scale)
+                                                                               .number_of_threads(threads));
   if(!quiet)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
                 "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,
