@@ -614,6 +614,49 @@ Linear_system doubling_sum_chain(int N)
   return small_system(2 * std::size_t(N) + 1, rows, std::vector<long>(rows.size(), 0));
 }
 
+// number_of_threads(2): the implied rows in two halves at once; the same status, message and x, bit for bit, as one
+// thread, for a system large enough to be split (checked), homogeneous and with b != 0 (b = C z for an integer z,
+// scaled by 3 so that pivots other than +-1 meet shifts), in both modes, and for x̄ far from the constraints on a grid
+// without margin (implied variables out of range: the first failing row in row order is the one named)
+void test_threads()
+{
+  std::cout << "== threads: the implied rows in two halves on two threads = on one" << std::endl;
+  SS_test::Seamless_options so; so.target_rows = 30000; so.seed = 4242;
+  Linear_system s = SS_test::seamless_system(so);
+  Linear_system inhomogeneous = s;
+  {
+    SS_test::Rng rng(17);
+    std::vector<long> z(s.n);
+    for(long& v : z) v = long(rng.index(7)) - 3;
+    inhomogeneous.b.assign(s.m, 0);
+    for(const Triplet& t : s.triplets) inhomogeneous.b[std::size_t(t.row())] += 3 * t.value() * z[std::size_t(t.col())];
+  }
+  std::size_t split = 0, compared = 0, implied_failures = 0;
+  for(const Linear_system* sys : {&s, &inhomogeneous}) {
+    for(int variant = 0; variant < 3; ++variant) {
+      // variant 2: x̄ far from C x = b (noise 0.5) on a grid without margin: implied variables leave the range
+      const std::vector<double> xbar = SS_test::noisy_input(*sys, variant == 2 ? 0.5 : 1e-7, 3);
+      SS::Projection_options o1;
+      o1.minimal_change = variant == 0;
+      if(variant == 2) o1.delta_margin_bits = 0;
+      SS::Projection_options o2 = o1;
+      o2.number_of_threads = 2;
+      const Outcome a = run(*sys, xbar, o1), b = run(*sys, xbar, o2);
+      const bool same = a.report.status == b.report.status && a.report.message == b.report.message &&
+                        (a.report.status != SS::SUCCESS || bit_identical(a.x, b.x));
+      if(!same) std::cout << "  differ: " << describe(a) << " / " << describe(b) << std::endl;
+      assert(same);
+      assert(variant == 2 || a.report.status == SS::SUCCESS);
+      implied_failures += a.report.message.find("implied variable") != std::string::npos ? 1 : 0;
+      split += a.stats.irref_nonzeros >= 2 * SS::internal::min_terms_per_thread + sys->m ? 1 : 0;   // free terms: less the pivots
+      ++compared;
+    }
+  }
+  std::cout << compared << " projections (" << split << " with IRREFs large enough to be split, " << implied_failures
+            << " with an implied variable out of range) on " << s.m << " rows: one thread = two" << std::endl;
+  assert(split == compared && implied_failures > 0);
+}
+
 void test_wide_range()
 {
   std::cout << "== 2b. wide range (doubling chain y_i = x_i, x_{i+1} = x_i + y_i): near the L2 optimum, or flagged" << std::endl;
@@ -1114,6 +1157,7 @@ int main(int argc, char** argv)
   test_inhomogeneous_and_invalid();
   test_coefficient_growth();
   test_wide_range();
+  test_threads();
   test_determinism();
   test_generated_systems();
   if(!sanitizer_subset()) test_qp_reference();      // exact QP: minutes under ASan

@@ -11,11 +11,13 @@
 // test/Seamless_snapping/CMakeLists.txt; a data race aborts the test): every step that runs on two threads (the cones
 // and the sectors, the node system and the minimal-change start point, the two halves of the untangling's independent
 // parts (duck_miq_8), the proofs and the windings of the explain stage, the OBJ writer's blocks, the OBJ reader's two
-// halves of a file) on maps of ../shared/data, in the default mode and as an untangled integer-grid map, and the results
+// halves of a file, the core's implied rows in two halves on a generated 30000-row system) on maps of ../shared/data, in the default mode and as an untangled integer-grid map, and the results
 // of two threads against those of one, bit for bit. Without ../shared: a generated map.
 
+#include "generators.h"
 #include "mesh_test_support.h"
 
+#include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
 #include <fstream>
@@ -55,10 +57,33 @@ void check_map(const std::string& name, const Mesh& input)
   }
 }
 
+// the core's implied rows in two halves (Projection_options::number_of_threads) on a generated system large enough
+void check_projection()
+{
+  SS_test::Seamless_options so; so.target_rows = 30000; so.seed = 4242;
+  const SS_test::Linear_system s = SS_test::seamless_system(so);
+  const std::vector<double> xbar = SS_test::noisy_input(s, 1e-7, 3);
+  std::vector<double> x[2];
+  SS::Projection_report r[2];
+  for(unsigned t = 1; t <= 2; ++t) {
+    SS::Projection_options o;
+    o.number_of_threads = t;
+    o.minimal_change = false;                     // (its least squares would take most of the time under TSan)
+    SS::Exact_constraint_projection p(o);
+    CHECK(p.initialize(s.m, s.n, s.triplets, s.b) == SS::SUCCESS, "projection: initialize");
+    r[t - 1] = p.project(xbar, x[t - 1]);
+  }
+  CHECK(r[0].status == SS::SUCCESS && r[1].status == SS::SUCCESS && r[0].message == r[1].message &&
+        std::memcmp(x[0].data(), x[1].data(), x[0].size() * sizeof(double)) == 0 && x[0].size() == x[1].size(),
+        "projection: two threads = one");
+  std::cout << "threads: the projection of a " << s.m << "-row system, implied rows in two halves" << std::endl;
+}
+
 } // namespace
 
 int main()
 {
+  check_projection();
   std::vector<fs::path> files;
   if(shared_obj_files_or_skip("threads: shared maps", files)) {
     for(const char* name : {"libqex/fandisk_param.obj", "directional/horsers-param-full-seamless.obj", "libqex/duck_miq_8_param.obj"}) {

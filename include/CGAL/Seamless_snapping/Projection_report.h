@@ -67,6 +67,10 @@ struct Projection_options
   /// and fill-in"). `false`: the pivot rule alone.
   /// Both give exact solutions, with other free variables, so the results differ slightly.
   bool fill_reducing_order = true;
+  /// With 2 or more, `project()` evaluates the implied variables (Alg. 3 with the safe dot product, Alg. 5) in two
+  /// halves of the IRREF rows at once, on two threads: each row depends on the free variables only, so the result,
+  /// status and message are those of one thread, bit for bit. `0` takes the machine's cores.
+  unsigned number_of_threads = 1;
 };
 
 /*!

@@ -136,7 +136,7 @@ inline void used_variables(const Constraint_rows& rows, std::size_t n_vars, std:
 // on `grid` (the addendum's Eq. 2' when b != 0).
 // Writes the constrained variables of x (others untouched).
 inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& grid, bool minimal_change,
-                           std::vector<double>& x, Snap_report& report, std::string& message)
+                           std::vector<double>& x, Snap_report& report, std::string& message, unsigned threads = 1)
 {
   std::vector<int> vars, column_of;
   used_variables(rows, x.size(), vars, column_of);
@@ -158,6 +158,7 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
                                              // little; with COLAMD's order (another choice of free variables) the
                                              // dragon's repair left 2 unforced degenerate triangles, not 0 (not
                                              // measured with the static degree order of column_ordering.h)
+  options.number_of_threads = threads;       // the implied rows in two halves (the same bits)
   Exact_constraint_projection projection(options);
   Status s = projection.initialize(rows.size(), vars.size(), triplets, rows.rhs);
   const Irref_statistics& stats = projection.statistics();
@@ -490,11 +491,12 @@ Status least_squares_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S,
 // (Sec. 5.3.1), both from S.start. Node sectors used by the propagation but absent from C (e.g. the
 // node of a closed loop, whose node rows cancel) are free: rounded to the grid.
 template <class TriangleMesh>
-Status project_node_system(Snap_state<TriangleMesh>& S, bool minimal_change, Snap_report& report, std::string& message)
+Status project_node_system(Snap_state<TriangleMesh>& S, bool minimal_change, Snap_report& report, std::string& message,
+                           unsigned threads)
 {
   const Reduced_system& rs = S.rs;
   const std::vector<double>& start = S.start;
-  Status s = project_rows(rs.node_rows, S.grid, minimal_change, S.x, report, message);
+  Status s = project_rows(rs.node_rows, S.grid, minimal_change, S.x, report, message, threads);
   if(s != SUCCESS) { message = "node system: " + message; return s; }
   std::vector<int> node_vars, node_column_of;
   used_variables(rs.node_rows, S.x.size(), node_vars, node_column_of);
@@ -538,8 +540,8 @@ Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Sna
   Status s = SUCCESS;
   for(int retry = 0;; ++retry) {
     S.x = S.start;
-    s = opt.use_reduced_system ? project_node_system(S, opt.minimal_change, report, message)
-                               : project_rows(S.full, S.grid, opt.minimal_change, S.x, report, message);
+    s = opt.use_reduced_system ? project_node_system(S, opt.minimal_change, report, message, opt.threads)
+                               : project_rows(S.full, S.grid, opt.minimal_change, S.x, report, message, opt.threads);
     if(s != SUCCESS && !opt.use_reduced_system) message = "full system: " + message;
     if(s != RANGE_EXCEEDED || retry == 5) return s == SUCCESS ? s : failed(s);
     S.grid = Fixed_point_grid(S.grid.K + 4);
