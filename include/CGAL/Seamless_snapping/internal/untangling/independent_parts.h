@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstddef>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -127,14 +128,15 @@ public:
               const std::vector<char>& which, std::vector<double>& E, std::vector<double>& D,
               std::vector<std::size_t>* non_positive = nullptr) const
   {
-    std::vector<char> first, second;
-    if(!split(which, first, second)) { values_of(p, w, eps, weight, which, E, D, non_positive); return; }
     std::vector<double> E1, D1;
     std::vector<std::size_t> bad1;
-    run_concurrently(2, [&] { values_of(p, w, eps, weight, first, E, D, non_positive); },
-                        [&] { values_of(p, w, eps, weight, second, E1, D1, non_positive != nullptr ? &bad1 : nullptr); });
-    for(std::size_t c = 0; c < std::size_t(n); ++c)
-      if(half_[c]) { E[c] = E1[c]; D[c] = D1[c]; if(non_positive != nullptr) (*non_positive)[c] = bad1[c]; }
+    if(!in_halves(which, [&](const std::vector<char>& part, int h) {
+         values_of(p, w, eps, weight, part, h ? E1 : E, h ? D1 : D, h && non_positive != nullptr ? &bad1 : non_positive);
+       }))
+      return;
+    take_second_half(E1, E);
+    take_second_half(D1, D);
+    if(non_positive != nullptr) take_second_half(bad1, *non_positive);
   }
 
   // One Newton direction d of the energy per part with `which` set (0 elsewhere), and per part its slope g.d;
@@ -144,17 +146,14 @@ public:
   void newton_directions(Region_problem& p, const std::vector<double>& w, const std::vector<double>& eps, double weight,
                          bool refactor, std::vector<char>& which, Eigen::VectorXd& d, std::vector<double>& slope)
   {
-    std::vector<char> first, second;
-    if(!split(which, first, second)) { directions_of(p, w, eps, weight, refactor, which, d, slope); return; }
     Eigen::VectorXd d1;
     std::vector<double> slope1;
-    run_concurrently(2, [&] { directions_of(p, w, eps, weight, refactor, first, d, slope); },
-                        [&] { directions_of(p, w, eps, weight, refactor, second, d1, slope1); });
+    if(!in_halves(which, [&](std::vector<char>& part, int h) {
+         directions_of(p, w, eps, weight, refactor, part, h ? d1 : d, h ? slope1 : slope);
+       }))
+      return;
     for(std::size_t i = 0; i < of_w.size(); ++i) if(half_[std::size_t(of_w[i])]) d[Eigen::Index(i)] = d1[Eigen::Index(i)];
-    for(std::size_t c = 0; c < std::size_t(n); ++c) {
-      if(half_[c]) slope[c] = slope1[c];
-      which[c] = half_[c] ? second[c] : first[c];
-    }
+    take_second_half(slope1, slope);
   }
 
   // Armijo backtracking of every part c with `which` set from its step t[c] along d; a part moves if its energy
@@ -164,15 +163,13 @@ public:
                      const std::vector<double>& t, const std::vector<double>& eps, double weight, double tolerance,
                      std::vector<char>& which, std::vector<double>& E, std::vector<double>& D) const
   {
-    std::vector<char> first, second;
-    if(!split(which, first, second)) return search_of(p, w, d, slope, t, eps, weight, tolerance, which, E, D);
     std::vector<double> E1 = E, D1 = D;               // each half writes only its parts' entries of w
     double evaluations[2] = {0, 0};
-    run_concurrently(2, [&] { evaluations[0] = search_of(p, w, d, slope, t, eps, weight, tolerance, first, E, D); },
-                        [&] { evaluations[1] = search_of(p, w, d, slope, t, eps, weight, tolerance, second, E1, D1); });
-    for(std::size_t c = 0; c < std::size_t(n); ++c) {
-      if(half_[c]) { E[c] = E1[c]; D[c] = D1[c]; }
-      which[c] = half_[c] ? second[c] : first[c];
+    if(in_halves(which, [&](std::vector<char>& part, int h) {
+         evaluations[h] = search_of(p, w, d, slope, t, eps, weight, tolerance, part, h ? E1 : E, h ? D1 : D);
+       })) {
+      take_second_half(E1, E);
+      take_second_half(D1, D);
     }
     return evaluations[0] + evaluations[1];            // counts of faces: exact in any order
   }
@@ -182,12 +179,11 @@ public:
   void positive_steps(const Region_problem& p, const std::vector<double>& w, const Eigen::VectorXd& d, double floor,
                       const std::vector<char>& which, std::vector<double>& t) const
   {
-    std::vector<char> first, second;
-    if(!split(which, first, second)) { p.group_positive_steps(w, d, floor, masked(of_face, which), t); return; }
     std::vector<double> t1 = t;
-    run_concurrently(2, [&] { p.group_positive_steps(w, d, floor, masked(of_face, first), t); },
-                        [&] { p.group_positive_steps(w, d, floor, masked(of_face, second), t1); });
-    for(std::size_t c = 0; c < std::size_t(n); ++c) if(half_[c]) t[c] = t1[c];
+    if(in_halves(which, [&](const std::vector<char>& part, int h) {
+         p.group_positive_steps(w, d, floor, masked(of_face, part), h ? t1 : t);
+       }))
+      take_second_half(t1, t);
   }
 
   // the groups of the parts with `keep` set (-1 elsewhere), for Region_problem's group functions
@@ -204,17 +200,29 @@ private:
   // the dragon's and the 302K-face bunny's the same within their noise)
   static constexpr std::size_t min_half_faces = 500;
 
-  // `which` as its two halves, if a pass over it is to run them at once
-  bool split(const std::vector<char>& which, std::vector<char>& first, std::vector<char>& second) const
+  // A pass over the parts with `which` set: pass(which, 0) on one thread, or, where each half has enough faces to
+  // step, pass(first, 0) and pass(second, 1) at once on the two halves of `which`, whose flags (a pass may unset
+  // some) are then those of `which` again. Returns whether it ran the halves; the caller then takes the second
+  // half's outputs from where pass(., 1) wrote them.
+  template <class Which, class Pass>
+  bool in_halves(Which& which, const Pass& pass) const
   {
-    if(threads_ < 2) return false;
     std::size_t load[2] = {0, 0};
     for(std::size_t c = 0; c < std::size_t(n); ++c) if(which[c]) load[int(half_[c])] += faces[c];
-    if((std::min)(load[0], load[1]) < min_half_faces) return false;
-    first = which;
-    second = which;
-    for(std::size_t c = 0; c < std::size_t(n); ++c) (half_[c] ? first[c] : second[c]) = 0;
+    if(threads_ < 2 || (std::min)(load[0], load[1]) < min_half_faces) { pass(which, 0); return false; }
+    std::vector<char> halves[2] = {which, which};
+    for(std::size_t c = 0; c < std::size_t(n); ++c) halves[half_[c] ? 0 : 1][c] = 0;
+    run_concurrently(2, [&] { pass(halves[0], 0); }, [&] { pass(halves[1], 1); });
+    if constexpr(!std::is_const<Which>::value)
+      for(std::size_t c = 0; c < std::size_t(n); ++c) which[c] = halves[int(half_[c])][c];
     return true;
+  }
+
+  // per part c of the second half: to[c] = from[c]
+  template <class T>
+  void take_second_half(const std::vector<T>& from, std::vector<T>& to) const
+  {
+    for(std::size_t c = 0; c < std::size_t(n); ++c) if(half_[c]) to[c] = from[c];
   }
 
   void values_of(const Region_problem& p, const std::vector<double>& w, const std::vector<double>& eps, double weight,
