@@ -211,6 +211,127 @@ bool rows_hold_exactly(const Csr_rows<Int>& rows, const Fixed_point_grid& grid, 
   return true;
 }
 
+// The first failing IRREF row of evaluate_implied_rows() (row = -1: none), with its status and message
+struct Row_failure { std::size_t row = std::size_t(-1); Status status = SUCCESS; std::string message; };
+
+// The implied variables of the IRREF rows [begin, end) (Alg. 3 with Alg. 5; Eq. 2' for b != 0), from the free ones
+// (var[i].z, out[i] set): var and out of each row's implied variable written. B: the right-hand side on the grid
+// (empty for b = 0), z0 the shifts of Eq. 2'. A row reads free variables only and writes its own implied one, so
+// disjoint ranges of rows may run at once. Stops at the first failing row.
+// With z_i = z0_i + p_j t_i (z_i - z0_i is a multiple of l_i, hence of p_j), Eq. (2') reads
+//     z_pi(j) = c0_j - sum_i Ĉ_ji (z_i - z0_i) / p_j,   c0_j = (B_j - sum_i Ĉ_ji z0_i) / p_j,
+// where c0_j is an exact integer (z0 solves the congruences). So every summand is divided by the
+// pivot *before* the safe dot product, as in the paper's Alg. 3, and the range argument of Sec. 4.3
+// holds for b != 0 as well; for b = 0, z0 = 0 and c0 = 0.
+template <typename Int>
+Row_failure evaluate_implied_rows(const Irref<Int>& ir, const std::vector<CGAL::Gmpz>& B,
+                                  const std::map<std::uint32_t, CGAL::Gmpz>& z0, const Fixed_point_grid& grid,
+                                  const std::vector<double>& xbar, Grid_variable* var, std::vector<double>& out,
+                                  std::size_t begin, std::size_t end)
+{
+  typedef Integer_ops<Int> Ops;
+  const bool shifted = !B.empty();                         // b != 0: constants c0_j and shifts z0
+  const std::size_t terms_total = ir.col.size();
+  std::vector<std::pair<Int, std::int64_t> > terms;     // (coefficient, grid integer) of the summands
+  Safe_dot_workspace ws;
+  CGAL::Gmpz c0;                                         // reused: no allocation per row
+  auto fail = [](std::size_t j, Status st, const std::string& msg) { return Row_failure{j, st, msg}; };
+  for(std::size_t j = begin; j < end; ++j) {
+    const Int& p = ir.pivot[j];
+    const bool unit = Ops::is_unit(p);
+    if(unit && !shifted && z0.empty()) {
+      // The common case (seamless systems): z_pi(j) = -sum_i Ĉ_ji z_i. When the sum of magnitudes
+      // is below 2^52, this is the safe dot product's own fast path (safe_dot.h): no partial sum
+      // can leave the range, and the value is the exact integer sum.
+      Grid_sum acc;
+      const std::size_t first = ir.ptr[j], last = ir.ptr[j + 1];
+      const bool bounded = last - first < Grid_sum::unchecked_terms;
+      for(std::size_t q = first; q < last; ++q) {
+        if(q + prefetch_distance < terms_total) __builtin_prefetch(&var[ir.col[q + prefetch_distance]].z);
+        if(bounded) acc.add_unchecked(ir.val[q], var[ir.col[q]].z);
+        else        acc.add(ir.val[q], var[ir.col[q]].z);
+      }
+      if(acc.is_safe()) {
+        const std::int64_t zp = -std::int64_t(acc.sum);
+        var[ir.pivot_col[j]].z = zp;
+        out[ir.pivot_col[j]] = grid.from_integer(zp);
+        continue;
+      }                                                    // else: the general path below
+    }
+    std::int64_t p64 = 1;
+    if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every z_i (resp. z_i - z0_i) must be 0
+    if(shifted) c0 = B[j];
+    terms.clear();
+    for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
+      const std::uint32_t c = ir.col[q];
+      auto it = z0.empty() ? z0.end() : z0.find(c);
+      std::int64_t t;                                        // (z_c - z0_c) / p_j
+      if(it == z0.end()) {
+        t = var[c].z;
+        if(t == 0) continue;
+        if(unit) { terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t)); continue; }   // the common case
+        if(p64 == 0 || var[c].z % p64 != 0) {
+          return fail(j, EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c)
+                                                 + " is not divisible by the pivot " + Ops::to_string(p) + " of IRREF row "
+                                                 + std::to_string(j) + " (Alg. 4)");
+        }
+        t = var[c].z / p64;
+      } else {                                               // shifted (b != 0): exact in Gmpz
+        c0 -= to_gmpz(ir.val[q]) * it->second;
+        CGAL::Gmpz d = to_gmpz(var[c].z) - it->second;
+        const CGAL::Gmpz pz = to_gmpz(p);
+        if(!mpz_divisible_p(d.mpz(), pz.mpz())) {
+          return fail(j, EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c)
+                                                 + " is not congruent to its shift modulo the pivot " + Ops::to_string(p)
+                                                 + " of IRREF row " + std::to_string(j) + " (Eq. 2')");
+        }
+        d = Integer_ops<CGAL::Gmpz>::exact_div(d, pz);
+        if(!Integer_ops<CGAL::Gmpz>::to_int64(d, t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
+          return fail(j, RANGE_EXCEEDED, "the shifted free variable " + std::to_string(c)
+                                         + " is outside the fixed-point range (Eq. 2')");
+        }
+        if(t == 0) continue;
+      }
+      terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t));
+    }
+    if(shifted && c0 != 0) {
+      const CGAL::Gmpz pz = to_gmpz(p);
+      if(!mpz_divisible_p(c0.mpz(), pz.mpz())) {
+        return fail(j, EXACTNESS_CHECK_FAILED, "internal error: IRREF row " + std::to_string(j)
+                                               + " violates its divisibility congruence (Eq. 2')");
+      }
+      c0 = Integer_ops<CGAL::Gmpz>::exact_div(c0, pz);   // c0 may share B[j]'s representation: no in-place write
+      std::int64_t c064;
+      if(!Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) || c064 > Fixed_point_grid::max_integer() || c064 < -Fixed_point_grid::max_integer()) {
+        return fail(j, RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
+                                       + " is outside the fixed-point range (Eq. 2', Sec. 7)");
+      }
+      terms.push_back(std::make_pair(Ops::from_int64(1), c064));
+    }
+    double r = 0;
+    const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
+    if(sr == SAFE_DOT_OUT_OF_RANGE) {
+      return fail(j, RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
+                                     + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
+                                     + ") (Sec. 7; its input was " + std::to_string(xbar[ir.pivot_col[j]])
+                                     + "): x̄ is far from satisfying this constraint, or a larger delta margin is needed");
+    }
+    if(sr == SAFE_DOT_STUCK) {
+      return fail(j, SAFE_DOT_FAILED, "the safe dot product (Alg. 5) for implied variable " + std::to_string(ir.pivot_col[j])
+                                      + " (IRREF row " + std::to_string(j) + ") got stuck although its exact value lies inside (-2^"
+                                      + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K) + ")");
+    }
+    if(!(std::fabs(r) < grid.delta)) {
+      return fail(j, RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
+                                     + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
+                                     + ") (Sec. 7); its input was " + std::to_string(xbar[ir.pivot_col[j]]));
+    }
+    var[ir.pivot_col[j]].z = grid.to_integer(r);
+    out[ir.pivot_col[j]] = r;
+  }
+  return Row_failure();
+}
+
 // The implied rows run in two halves on two threads only where each half has this many IRREF terms (a thread's start
 // costs about as much as a few thousand terms)
 constexpr std::size_t min_terms_per_thread = std::size_t(1) << 14;
@@ -298,128 +419,18 @@ void evaluate_on_grid(const Irref<Int>& ir, const Integer_system& sys, const std
   }
   if(refine) refine_free_rounding(ir, grid, var.get(), out);
 
-  // -- implied variables (Alg. 3 with Alg. 5; Eq. 2' for b != 0)
-  // With z_i = z0_i + p_j t_i (z_i - z0_i is a multiple of l_i, hence of p_j), Eq. (2') reads
-  //     z_pi(j) = c0_j - sum_i Ĉ_ji (z_i - z0_i) / p_j,   c0_j = (B_j - sum_i Ĉ_ji z0_i) / p_j,
-  // where c0_j is an exact integer (z0 solves the congruences). So every summand is divided by the
-  // pivot *before* the safe dot product, as in the paper's Alg. 3, and the range argument of Sec. 4.3
-  // holds for b != 0 as well; for b = 0, z0 = 0 and c0 = 0.
-  // A row reads free variables only and writes its own implied one: with `threads` >= 2 the rows are cut into two
-  // halves of about as many terms, evaluated at once; the first failing row (in row order) is reported, as on one thread.
-  const bool shifted = !B.empty();                         // b != 0: constants c0_j and shifts z0
+  // -- implied variables (Alg. 3 with Alg. 5; Eq. 2' for b != 0): with `threads` >= 2 the rows are cut into two
+  //    halves of about as many terms, evaluated at once; the first failing row (in row order) is reported, as on one thread
   const std::size_t terms_total = ir.col.size();
-  struct Row_failure { std::size_t row = std::size_t(-1); Status status = SUCCESS; std::string message; };
-  auto implied_rows = [&](std::size_t begin, std::size_t end, Row_failure& failure) {
-    std::vector<std::pair<Int, std::int64_t> > terms;     // (coefficient, grid integer) of the summands
-    Safe_dot_workspace ws;
-    CGAL::Gmpz c0;                                         // reused: no allocation per row
-    auto fail = [&](std::size_t j, Status st, const std::string& msg) { failure.row = j; failure.status = st; failure.message = msg; };
-    for(std::size_t j = begin; j < end; ++j) {
-      const Int& p = ir.pivot[j];
-      const bool unit = Ops::is_unit(p);
-      if(unit && !shifted && z0.empty()) {
-        // The common case (seamless systems): z_pi(j) = -sum_i Ĉ_ji z_i. When the sum of magnitudes
-        // is below 2^52, this is the safe dot product's own fast path (safe_dot.h): no partial sum
-        // can leave the range, and the value is the exact integer sum.
-        Grid_sum acc;
-        const std::size_t first = ir.ptr[j], last = ir.ptr[j + 1];
-        const bool bounded = last - first < Grid_sum::unchecked_terms;
-        for(std::size_t q = first; q < last; ++q) {
-          if(q + prefetch_distance < terms_total) __builtin_prefetch(&var[ir.col[q + prefetch_distance]].z);
-          if(bounded) acc.add_unchecked(ir.val[q], var[ir.col[q]].z);
-          else        acc.add(ir.val[q], var[ir.col[q]].z);
-        }
-        if(acc.is_safe()) {
-          const std::int64_t zp = -std::int64_t(acc.sum);
-          var[ir.pivot_col[j]].z = zp;
-          out[ir.pivot_col[j]] = grid.from_integer(zp);
-          continue;
-        }                                                    // else: the general path below
-      }
-      std::int64_t p64 = 1;
-      if(!unit && !Ops::to_int64(p, p64)) p64 = 0;          // huge pivot: every z_i (resp. z_i - z0_i) must be 0
-      if(shifted) c0 = B[j];
-      terms.clear();
-      for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
-        const std::uint32_t c = ir.col[q];
-        auto it = z0.empty() ? z0.end() : z0.find(c);
-        std::int64_t t;                                        // (z_c - z0_c) / p_j
-        if(it == z0.end()) {
-          t = var[c].z;
-          if(t == 0) continue;
-          if(unit) { terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t)); continue; }   // the common case
-          if(p64 == 0 || var[c].z % p64 != 0) {
-            fail(j, EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c) + " is not divisible by the pivot "
-                                            + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Alg. 4)");
-            return;
-          }
-          t = var[c].z / p64;
-        } else {                                               // shifted (b != 0): exact in Gmpz
-          c0 -= to_gmpz(ir.val[q]) * it->second;
-          CGAL::Gmpz d = to_gmpz(var[c].z) - it->second;
-          const CGAL::Gmpz pz = to_gmpz(p);
-          if(!mpz_divisible_p(d.mpz(), pz.mpz())) {
-            fail(j, EXACTNESS_CHECK_FAILED, "internal error: free variable " + std::to_string(c) + " is not congruent to its shift modulo the pivot "
-                                            + Ops::to_string(p) + " of IRREF row " + std::to_string(j) + " (Eq. 2')");
-            return;
-          }
-          d = Integer_ops<CGAL::Gmpz>::exact_div(d, pz);
-          if(!Integer_ops<CGAL::Gmpz>::to_int64(d, t) || t > Fixed_point_grid::max_integer() || t < -Fixed_point_grid::max_integer()) {
-            fail(j, RANGE_EXCEEDED, "the shifted free variable " + std::to_string(c) + " is outside the fixed-point range (Eq. 2')");
-            return;
-          }
-          if(t == 0) continue;
-        }
-        terms.push_back(std::make_pair(Ops::neg(ir.val[q]), t));
-      }
-      if(shifted && c0 != 0) {
-        const CGAL::Gmpz pz = to_gmpz(p);
-        if(!mpz_divisible_p(c0.mpz(), pz.mpz())) {
-          fail(j, EXACTNESS_CHECK_FAILED, "internal error: IRREF row " + std::to_string(j) + " violates its divisibility congruence (Eq. 2')");
-          return;
-        }
-        c0 = Integer_ops<CGAL::Gmpz>::exact_div(c0, pz);   // c0 may share B[j]'s representation: no in-place write
-        std::int64_t c064;
-        if(!Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) || c064 > Fixed_point_grid::max_integer() || c064 < -Fixed_point_grid::max_integer()) {
-          fail(j, RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
-                                  + " is outside the fixed-point range (Eq. 2', Sec. 7)");
-          return;
-        }
-        terms.push_back(std::make_pair(Ops::from_int64(1), c064));
-      }
-      double r = 0;
-      const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
-      if(sr == SAFE_DOT_OUT_OF_RANGE) {
-        fail(j, RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
-                                + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
-                                + ") (Sec. 7; its input was " + std::to_string(xbar[ir.pivot_col[j]])
-                                + "): x̄ is far from satisfying this constraint, or a larger delta margin is needed");
-        return;
-      }
-      if(sr == SAFE_DOT_STUCK) {
-        fail(j, SAFE_DOT_FAILED, "the safe dot product (Alg. 5) for implied variable " + std::to_string(ir.pivot_col[j])
-                                 + " (IRREF row " + std::to_string(j) + ") got stuck although its exact value lies inside (-2^"
-                                 + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K) + ")");
-        return;
-      }
-      if(!(std::fabs(r) < grid.delta)) {
-        fail(j, RANGE_EXCEEDED, "implied variable " + std::to_string(ir.pivot_col[j]) + " (IRREF row " + std::to_string(j)
-                                + ") leaves the fixed-point range (-2^" + std::to_string(grid.K) + ", 2^" + std::to_string(grid.K)
-                                + ") (Sec. 7); its input was " + std::to_string(xbar[ir.pivot_col[j]]));
-        return;
-      }
-      var[ir.pivot_col[j]].z = grid.to_integer(r);
-      out[ir.pivot_col[j]] = r;
-    }
-  };
   Row_failure failure, second_failure;
   if(threads >= 2 && terms_total >= min_terms_per_thread * 2) {
     const std::size_t half = std::size_t(std::lower_bound(ir.ptr.begin(), ir.ptr.begin() + std::ptrdiff_t(m) + 1, terms_total / 2)
                                          - ir.ptr.begin());   // the first row starting past half of the terms
-    run_concurrently(2, [&] { implied_rows(0, half, failure); }, [&] { implied_rows(half, m, second_failure); });
+    run_concurrently(2, [&] { failure = evaluate_implied_rows(ir, B, z0, grid, xbar, var.get(), out, 0, half); },
+                        [&] { second_failure = evaluate_implied_rows(ir, B, z0, grid, xbar, var.get(), out, half, m); });
     if(failure.row == std::size_t(-1)) failure = second_failure;
   } else {
-    implied_rows(0, m, failure);
+    failure = evaluate_implied_rows(ir, B, z0, grid, xbar, var.get(), out, 0, m);
   }
   if(failure.row != std::size_t(-1)) { fail(failure.status, failure.message); return; }
 
