@@ -392,9 +392,10 @@ inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::s
   if(threads >= 2) {
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
-    std::ifstream second(filename, std::ios::binary);
+    std::ifstream second;             // opened only for a file large enough to be split
     std::streamoff cut = -1;
-    if(size > 0 && std::size_t(size) >= min_split && second && second.seekg(size / 2)) {
+    if(size > 0 && std::size_t(size) >= min_split) second.open(filename, std::ios::binary);
+    if(second.is_open() && second.seekg(size / 2)) {
       std::streamoff at = size / 2;   // the first byte after a '\n' from the middle on
       char c;
       while(second.get(c)) { ++at; if(c == '\n') { cut = at; break; } }
