@@ -11,8 +11,9 @@
 // test/Seamless_snapping/CMakeLists.txt; a data race aborts the test): every step that runs on two threads (the cones
 // and the sectors, the node system and the minimal-change start point, the two halves of the untangling's independent
 // parts (duck_miq_8), the proofs and the windings of the explain stage, the OBJ writer's blocks, the OBJ reader's two
-// halves of a file, the core's implied rows in two halves on a generated 30000-row system) on maps of ../shared/data, in the default mode and as an untangled integer-grid map, and the results
-// of two threads against those of one, bit for bit. Without ../shared: a generated map.
+// halves of a file, the core's implied rows in two halves on a generated 30000-row system) on maps of ../shared/data,
+// in the default mode and as an untangled integer-grid map, and the results of two threads against those of one, bit
+// for bit. Without ../shared: a generated map.
 
 #include "generators.h"
 #include "mesh_test_support.h"
@@ -74,7 +75,7 @@ void check_projection()
     r[t - 1] = p.project(xbar, x[t - 1]);
   }
   CHECK(r[0].status == SS::SUCCESS && r[1].status == SS::SUCCESS && r[0].message == r[1].message &&
-        std::memcmp(x[0].data(), x[1].data(), x[0].size() * sizeof(double)) == 0 && x[0].size() == x[1].size(),
+        x[0].size() == x[1].size() && std::memcmp(x[0].data(), x[1].data(), x[0].size() * sizeof(double)) == 0,
         "projection: two threads = one");
   std::cout << "threads: the projection of a " << s.m << "-row system, implied rows in two halves" << std::endl;
 }
