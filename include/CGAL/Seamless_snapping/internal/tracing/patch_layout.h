@@ -268,8 +268,10 @@ private:
   bool on_box(Layout_halfedge_index h, const std::array<FT, 4>& b, const std::array<Interval, 4>& B) const
   {
     if(to_patch_[std::size_t(mesh_.face(h))].is_identity()) {
-      const Exact_uv& x = corner(h);
-      const Uv_box& X = corner_box(h);
+      const Layout_polygon& P = polygon(mesh_.face(h));
+      const std::size_t i = corner_of(P, int(mesh_.target(h)));   // one search for the corner and its box
+      const Exact_uv& x = P.uv[i];
+      const Uv_box& X = P.box[i];
       return equal(x.u, X.u, b[0], B[0]) || equal(x.u, X.u, b[1], B[1]) || equal(x.v, X.v, b[2], B[2]) ||
              equal(x.v, X.v, b[3], B[3]);
     }
