@@ -90,7 +90,8 @@ inline Map_facts map_facts(const Corner_mesh& cm)
 }
 
 // The collapsed cone pairs within coincident_cone_rings face rings of vertex v (winding_defects.h, cone_merging.h's
-// collapsed_cone_pairs() on the map's own integer translations) as a clause of a message, or "" if none. `edge_k`: the
+// collapsed_cone_pairs() on the map's own integer translations) as a clause of a message, or "" if none: the nearest
+// named_collapsed_pairs of them named, the others counted. `edge_k`: the
 // rotation of halfedge(e) of every cut edge e (is_exact_integer_grid_map_impl()).
 inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std::vector<int>& edge_k, int v)
 {
@@ -108,9 +109,13 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
   if(round_translations(cm, st, rot, st.ubar, 1e-6, t, ignored) != SUCCESS) return std::string();
   const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs(cm, st, rot, t, st.ubar, default_collapsed_cone_reach);
   std::string clause;
-  for(const std::pair<int, int>& c : collapsed_cone_pairs_near(cm, Face_corners(cm), pairs, {v}))
-    clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(c.first) + " and " + std::to_string(c.second);
+  const std::vector<std::pair<int, int> > near = collapsed_cone_pairs_near(cm, Face_corners(cm), pairs, {v});
+  for(std::size_t i = 0; i < near.size() && i < named_collapsed_pairs; ++i)
+    clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(near[i].first) + " and " + std::to_string(near[i].second);
   if(clause.empty()) return clause;
+  if(near.size() > named_collapsed_pairs)
+    clause += "; " + std::to_string(near.size() - named_collapsed_pairs) + " more such pairs within " +
+              std::to_string(coincident_cone_rings) + " face rings";
   return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +
          "): the translations fix both cones on that point, so no move of the UVs separates them, and the map winds "
          "wrongly around them, where no quad mesh follows it; snap with merge_cone_pairs(true) (seamless_quad's default), "

@@ -793,13 +793,22 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   const Face_corners fc(S.cm);
   const std::vector<std::pair<int, int> > pairs =
       opt.integer_grid_map ? collapsed_cone_pairs_of_x(S) : std::vector<std::pair<int, int> >();
-  std::set<std::pair<int, int> > collapsed;   // the cone pairs named below
-  auto name_collapsed_pairs = [&](int v, std::string& message) {   // those within coincident_cone_rings of v
-    for(const std::pair<int, int>& c : collapsed_cone_pairs_near(S.cm, fc, pairs, {v})) {
-      message += "; the cones at vertices " + std::to_string(c.first) + " and " + std::to_string(c.second) +
-                 " nearby are rounded onto one integer point (a cone pair the integer translations collapse)";
-      collapsed.insert(std::minmax(c.first, c.second));
+  std::set<std::pair<int, int> > collapsed;   // the cone pairs within coincident_cone_rings of a defect
+  auto name_collapsed_pairs = [&](int v, std::string& message) {   // the nearest few within coincident_cone_rings of v
+    std::vector<int> rings;
+    const std::vector<std::pair<int, int> > near = collapsed_cone_pairs_near(S.cm, fc, pairs, {v}, &rings);
+    const std::size_t named = (std::min)(near.size(), named_collapsed_pairs);
+    for(std::size_t i = 0; i < near.size(); ++i) {
+      collapsed.insert(std::minmax(near[i].first, near[i].second));
+      if(i < named)
+        message += "; the cones at vertices " + std::to_string(near[i].first) + " and " + std::to_string(near[i].second) +
+                   " nearby (" + (rings[i] == 0 ? "one of them is vertex " + std::to_string(v) :
+                                  std::to_string(rings[i]) + " face ring" + (rings[i] == 1 ? "" : "s") + " away") + ") are " +
+                   "rounded onto one integer point (a cone pair the integer translations collapse)";
     }
+    if(near.size() > named)
+      message += "; " + std::to_string(near.size() - named) + " more such pair" + (near.size() - named == 1 ? "" : "s") +
+                 " within " + std::to_string(coincident_cone_rings) + " face rings (Snap_report::collapsed_cone_pairs)";
   };
   std::vector<int> forced_face(std::size_t(S.cm.n_vertices), -1);   // per vertex: a face proven non-positive at it
   // the proofs of the faces (this thread) and the windings of the vertices share nothing either writes: on two threads

@@ -34,6 +34,8 @@ namespace internal {
 
 // how far (face rings) from a wrongly wound vertex a collapsed cone pair is named as lying next to it
 constexpr int coincident_cone_rings = 16;
+// how many of the collapsed cone pairs near a defect a message names (the nearest; the others are counted)
+constexpr std::size_t named_collapsed_pairs = 3;
 
 // The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring), found
 // breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh)
@@ -59,18 +61,50 @@ inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const 
 }
 
 // The pairs of `pairs` (collapsed_cone_pairs(), cone_merging.h) with a cone within coincident_cone_rings face rings
-// of a vertex of `seeds`
+// of a vertex of `seeds`, nearest first (in the order of `pairs` among as near ones); `rings`, if given, receives the
+// face rings between the seeds and each pair's nearer cone
 inline std::vector<std::pair<int, int> > collapsed_cone_pairs_near(const Corner_mesh& cm, const Face_corners& fc,
                                                                    const std::vector<std::pair<int, int> >& pairs,
-                                                                   const std::vector<int>& seeds)
+                                                                   const std::vector<int>& seeds,
+                                                                   std::vector<int>* rings = nullptr)
 {
+  if(rings != nullptr) rings->clear();
   if(pairs.empty()) return {};
-  std::vector<int> near = vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings);
-  std::sort(near.begin(), near.end());
+  // the ring of every vertex found: the rings are consecutive in the breadth-first order of vertices_within_face_rings()
+  const std::vector<int> near = vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings);
+  std::vector<std::pair<int, int> > ring_of;        // (vertex, ring), sorted by vertex
+  ring_of.reserve(near.size());
+  {
+    std::vector<char> is_seed(std::size_t(cm.n_vertices), 0);
+    for(int w : seeds) is_seed[std::size_t(w)] = 1;
+    std::vector<int> ring(std::size_t(cm.n_vertices), -1);
+    for(int w : near) {
+      if(is_seed[std::size_t(w)]) { ring[std::size_t(w)] = 0; continue; }
+      int r = coincident_cone_rings;                 // one more than the nearest neighbour already reached
+      for(int f : fc.vertex_faces[w])
+        for(int h : fc.halfedge[std::size_t(f)])
+          if(ring[std::size_t(cm.target[h])] >= 0) r = (std::min)(r, ring[std::size_t(cm.target[h])] + 1);
+      ring[std::size_t(w)] = r;
+    }
+    for(int w : near) ring_of.emplace_back(w, ring[std::size_t(w)]);
+  }
+  std::sort(ring_of.begin(), ring_of.end());
+  auto ring = [&](int w) {
+    const auto it = std::lower_bound(ring_of.begin(), ring_of.end(), std::make_pair(w, -1));
+    return it != ring_of.end() && it->first == w ? it->second : -1;
+  };
+  std::vector<std::pair<int, std::size_t> > found;   // (ring, index into pairs)
+  for(std::size_t i = 0; i < pairs.size(); ++i) {
+    const int a = ring(pairs[i].first), b = ring(pairs[i].second);
+    if(a >= 0 || b >= 0) found.emplace_back(a < 0 ? b : b < 0 ? a : (std::min)(a, b), i);
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const std::pair<int, std::size_t>& x, const std::pair<int, std::size_t>& y) { return x.first < y.first; });
   std::vector<std::pair<int, int> > out;
-  for(const std::pair<int, int>& c : pairs)
-    if(std::binary_search(near.begin(), near.end(), c.first) || std::binary_search(near.begin(), near.end(), c.second))
-      out.push_back(c);
+  for(const std::pair<int, std::size_t>& c : found) {
+    out.push_back(pairs[c.second]);
+    if(rings != nullptr) rings->push_back(c.first);
+  }
   return out;
 }
 
