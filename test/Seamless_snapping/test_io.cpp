@@ -36,6 +36,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Seam_mesh_uv.h>
 #include <CGAL/Seamless_snapping/matrices.h>
+#include <CGAL/Seamless_snapping/Quad_mesh_report.h>
 #include <CGAL/Seamless_snapping/Snap_report.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
@@ -365,6 +366,18 @@ static void test_malformed()
     CHECK(msg.size() < 200 && msg.find("stream:9: cannot parse coordinate '0.7777") != std::string::npos &&
           msg.find("(" + std::to_string(huge.size()) + " characters)") != std::string::npos, "huge token message: " << msg);
     std::cout << "  huge token: " << msg << "\n";
+  }
+  {  // a stream without '\n' that never ends (as /dev/zero): one line too long, refused, the memory bounded
+    struct Endless : std::streambuf
+    {
+      std::vector<char> buf = std::vector<char>(std::size_t(1) << 16, '0');
+      int_type underflow() override { setg(buf.data(), buf.data(), buf.data() + buf.size()); return traits_type::to_int_type('0'); }
+    } endless;
+    std::istream is(&endless);
+    Mesh m; UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first; std::string msg;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::INVALID_INPUT && m.is_empty(), "endless line: status");
+    CHECK(msg.find("stream:1: a line longer than 64 MiB") != std::string::npos, "endless line message: " << msg);
+    std::cout << "  endless line: " << msg << "\n";
   }
   expect_invalid("degenerate face", tri + "f 1/1 1/2 3/3\n", "degenerate");
   expect_invalid("degenerate after weld", tri + "v 0 0 0\nf 1/1 5/2 3/3\n", "after welding", true);
@@ -1239,6 +1252,20 @@ static void test_json_strings()
   CHECK(k.find("\"message\": \"fold \\\"a\\\"\\n\"}") != std::string::npos, "Snap_report::to_json escapes fold messages");
   CHECK(k.find("\"message\": \"winding\\\\\\u0002\"}") != std::string::npos, "Snap_report::to_json escapes winding messages");
   CHECK(k.find("\"forced\": true, \"message\": \"winding") != std::string::npos, "Snap_report::to_json writes a defect's forced flag");
+  // numbers: 17 digits (the same double back), null where not finite (JSON has no Infinity or NaN: a map of UVs near
+  // 1e307 has an infinite UV diagonal)
+  CHECK(SS::IO::internal::json_number(0.1) == "0.10000000000000001" && std::stod(SS::IO::internal::json_number(1 / 3.)) == 1 / 3.,
+        "json_number of finite values");
+  CHECK(SS::IO::internal::json_number(HUGE_VAL) == "null" && SS::IO::internal::json_number(-HUGE_VAL) == "null" &&
+        SS::IO::internal::json_number(std::nan("")) == "null", "json_number of non-finite values");
+  r.uv_diagonal = HUGE_VAL;
+  r.max_change = std::nan("");
+  const std::string n = r.to_json();
+  CHECK(n.find("\"uv_diagonal\": null,") != std::string::npos && n.find("\"max_change\": null,") != std::string::npos &&
+        n.find("inf") == std::string::npos && n.find("nan") == std::string::npos, "Snap_report::to_json of non-finite numbers");
+  SS::Quad_mesh_report q;
+  q.total_ms = HUGE_VAL;
+  CHECK(q.to_json().find("inf") == std::string::npos, "Quad_mesh_report::to_json of non-finite numbers");
 }
 
 int main(int argc, char** argv)

@@ -84,7 +84,7 @@ struct Quad_mesh_report
     auto str = [&](const char* k, const std::string& v) {
       o << "  \"" << k << "\": " << IO::internal::json_string(v) << ",\n";
     };
-    auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
+    auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << IO::internal::json_number(v) << ",\n"; };
     auto list = [&](const char* k, const std::vector<std::size_t>& v) {
       o << "  \"" << k << "\": [";
       for(std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << v[i];
@@ -108,7 +108,7 @@ struct Quad_mesh_report
     num("incomplete_cells", double(incomplete_cells));
     o << "  \"covers_map\": " << (covers_map() ? "true" : "false") << ",\n";
     num("check_ms", check_ms); num("cells_ms", cells_ms); num("mesh_ms", mesh_ms);
-    o << "  \"total_ms\": " << total_ms << "\n}\n";
+    o << "  \"total_ms\": " << IO::internal::json_number(total_ms) << "\n}\n";
     return o.str();
   }
 };

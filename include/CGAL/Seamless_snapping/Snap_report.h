@@ -208,7 +208,7 @@ struct Snap_report
     auto str = [&](const char* k, const std::string& v, bool comma = true) {
       o << "  \"" << k << "\": " << IO::internal::json_string(v) << (comma ? ",\n" : "\n");
     };
-    auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << v << ",\n"; };
+    auto num = [&](const char* k, double v) { o << "  \"" << k << "\": " << IO::internal::json_number(v) << ",\n"; };
     auto vertex_pairs = [&](const char* k, const std::vector<std::pair<std::size_t, std::size_t> >& v) {
       o << "  \"" << k << "\": [";
       for(std::size_t i = 0; i < v.size(); ++i) o << (i ? ", " : "") << "[" << v[i].first << ", " << v[i].second << "]";
@@ -289,7 +289,7 @@ struct Snap_report
     num("untangle_polish_ms", untangle_polish_ms);
     num("separation_ms", separation_ms);
     num("explain_ms", explain_ms); num("write_ms", write_ms);
-    o << "  \"total_ms\": " << total_ms << "\n}\n";
+    o << "  \"total_ms\": " << IO::internal::json_number(total_ms) << "\n}\n";
     return o.str();
   }
 };

@@ -284,7 +284,7 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
     return true;
   };
 
-  bool read_error = false;
+  bool read_error = false, too_long = false;
   const std::size_t lines = for_each_line(is, [&](const char* p, const char* end, std::size_t lineno) -> bool {
     // a UTF-8 byte-order mark at the start of the file is not part of the first record
     if(whole && lineno == 1 && end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
@@ -312,11 +312,16 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
     // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
     ++soup.skipped_records;
     return true;
-  }, read_error, limit);
+  }, read_error, too_long, limit);
   state.lines = lines;
   if(status != SUCCESS) return status;
   if(read_error) {
     message = where + ": read error after line " + std::to_string(lines);
+    return INVALID_INPUT;
+  }
+  if(too_long) {
+    message = where + ":" + std::to_string(lines + 1) + ": a line longer than " + std::to_string(max_line_bytes >> 20) +
+              " MiB (not an OBJ text file?); nothing was read";
     return INVALID_INPUT;
   }
   return SUCCESS;
@@ -915,7 +920,8 @@ Status prepare_obj_text(const TriangleMesh& tm, HalfedgeUVMap uv, Obj_text& text
  * (this reader does not triangulate); an index that is 0 or out of range; NaN, Inf or unparsable
  * coordinates; a degenerate face (a vertex twice, also after welding); a non-manifold edge or vertex,
  * or an orientation that is inconsistent between neighbouring faces (non-orientable input),
- * as detected by `CGAL::Euler::add_face()`; a file without faces; a file that cannot be opened.
+ * as detected by `CGAL::Euler::add_face()`; a file without faces; a line longer than 64 MiB (not a text file, e.g.
+ * `/dev/zero`: reading stops there, the memory stays bounded); a file that cannot be opened.
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` (e.g. `CGAL::Surface_mesh`), default constructible
  * \tparam HalfedgeUVMap a model of `WritablePropertyMap` with

@@ -15,6 +15,7 @@
 // 0x20 are escaped (messages name the user's files, which may hold any of them); other bytes are kept
 // as they are (UTF-8 stays UTF-8).
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -36,6 +37,16 @@ inline std::string json_string(const std::string& s)
     else o += c;
   }
   return o + "\"";
+}
+
+// A double as a JSON number (17 significant digits: it reads back to the same double), or null where it is not finite
+// (JSON has no NaN or Infinity, RFC 8259, Sec. 6)
+inline std::string json_number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
 }
 
 } // namespace internal

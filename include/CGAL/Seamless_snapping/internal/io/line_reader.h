@@ -15,7 +15,8 @@
 // characters), but read in blocks of 1 MiB with istream::read() and handed out as [begin, end) ranges
 // into the block: no std::string per line, no locale or sentry per line. The OBJ reader spent about
 // as much time in std::getline as in parsing the numbers. Memory: one block (larger only for a line
-// longer than a block).
+// longer than a block, up to max_line_bytes: a longer line stops the reading, so that a stream without
+// '\n', e.g. /dev/zero, does not fill the memory).
 
 #include <algorithm>
 #include <cstddef>
@@ -28,17 +29,25 @@ namespace Seamless_snapping {
 namespace IO {
 namespace internal {
 
+// the longest line for_each_line() reads (no text record of a mesh file comes near it)
+constexpr std::size_t max_line_bytes = std::size_t(1) << 26;
+
 // Calls use(begin, end, line_number) for each line (line numbers from 1) until it returns false.
-// Returns the number of lines handed out; `read_error` = the stream went bad (istream::bad()) while reading.
+// Returns the number of lines handed out; `read_error` = the stream went bad (istream::bad()) while reading;
+// `too_long` = the next line is longer than max_line_bytes (it is not handed out, and reading stops).
 // At most `limit` bytes of the stream are read (the part of a file before a given offset).
 template <class Use>
-std::size_t for_each_line(std::istream& is, const Use& use, bool& read_error, std::size_t limit = std::size_t(-1))
+std::size_t for_each_line(std::istream& is, const Use& use, bool& read_error, bool& too_long,
+                          std::size_t limit = std::size_t(-1))
 {
   std::vector<char> block(std::size_t(1) << 20);
   std::size_t kept = 0, lineno = 0;   // kept: bytes of an unfinished line at the start of the block
-  read_error = false;
+  read_error = too_long = false;
   for(;;) {
-    if(kept == block.size()) block.resize(2 * block.size());   // a line longer than the block
+    if(kept == block.size()) {        // a line longer than the block
+      if(block.size() >= max_line_bytes) { too_long = true; return lineno; }
+      block.resize(2 * block.size());
+    }
     is.read(block.data() + kept, std::streamsize((std::min)(block.size() - kept, limit)));
     const std::size_t got = std::size_t(is.gcount());
     limit -= got;
