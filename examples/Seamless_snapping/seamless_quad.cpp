@@ -232,9 +232,12 @@ int main(int argc, char** argv)
   if(q.status != SS::SUCCESS) {
     // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
     std::string proven;
+    if(q.status == SS::FOLD_OVERS && untangle)         // (the extraction's advice to untangle is for library callers)
+      proven = "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) + " negative and " +
+               std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
     const auto forced = std::find_if(snap.folds.begin(), snap.folds.end(), [](const SS::Fold_explanation& f) { return f.forced(); });
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())
-      proven = "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
+      proven += "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
                "untangling removes them, e.g. face " + std::to_string(forced->face) + ": " + forced->message;
     if(!snap.winding_defects.empty()) {
       const auto forced_windings = std::count_if(snap.winding_defects.begin(), snap.winding_defects.end(),

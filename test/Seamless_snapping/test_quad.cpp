@@ -519,6 +519,23 @@ static void test_refusals()
   make_quarter_turn_cone(c, uvc);
   assert(SS::is_exact_integer_grid_map(c, uvc) && SS::quad_valences(c, uvc).valence[0] == 1);
   check_refused(c, uvc, 1, SS::INVALID_INPUT, "valence 1", "cone of 90 degrees");
+  // no whole cell, so no quad mesh (it used to be an empty mesh with SUCCESS, or an internal error): one grid square
+  // at half size (its one cell cut by the border), and a grid whose UVs lie on one line (every face collapsed onto
+  // its long side: UV area 0)
+  for(int which = 0; which < 2; ++which) {
+    Mesh g;
+    triangulated_grid(g, which == 0 ? 1 : 3, true);
+    UV_map uvg = uv_of(g);
+    for(halfedge_descriptor h : g.halfedges()) {
+      if(g.is_border(h)) continue;
+      const Point_3& p = g.point(g.target(h));
+      put(uvg, h, which == 0 ? Point_2(0.5 * p.x(), 0.5 * p.y()) : Point_2(p.x() + 2 * p.y(), 0));
+    }
+    assert(SS::is_exact_integer_grid_map(g, uvg));
+    check_refused(g, uvg, 1, SS::INVALID_INPUT, which == 0 ? "no whole cell of the integer grid (UV area 0.25 grid cells, 1 cells cut"
+                                                           : "no whole cell of the integer grid (UV area 0 grid cells)",
+                  which == 0 ? "half a cell" : "a map of zero area");
+  }
 }
 
 // CGAL's bear with an Orbifold Tutte map of the given type (farthest-point cones); false without CGAL's data

@@ -71,7 +71,9 @@ struct Quad_vertex_origin
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
  *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
  *   `grid_scale`; UVs beyond `2^30` grid units or more than `2^26` cells in the faces' UV bounding boxes give
- *   `RANGE_EXCEEDED`.
+ *   `RANGE_EXCEEDED`;
+ * - the map must hold at least one whole cell (a map of zero UV area, or one whose cells the border cuts all, has no
+ *   quad mesh), else `INVALID_INPUT` with its UV area and advice to use a larger `grid_scale`.
  *
  * Guarantees on `SUCCESS`, each verified on the result before it is written (a violation would be reported as
  * `EXACTNESS_CHECK_FAILED`, an internal error, never hidden): every face is a quad; the mesh is manifold; a closed map

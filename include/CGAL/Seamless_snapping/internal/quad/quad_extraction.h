@@ -268,6 +268,13 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
   r.incomplete_cells = out.cells.incomplete;
+  if(out.cells.quads.empty()) {                      // no mesh to make (the checks below would fail as internal errors)
+    r.message = "the map holds no whole cell of the integer grid (UV area " +
+                format_double(CGAL::to_double(facts.twice_area) / 2) + " grid cells" +
+                (out.cells.incomplete > 0 ? ", " + std::to_string(out.cells.incomplete) + " cells cut by the border" : std::string()) +
+                "): no quad mesh; a larger grid_scale makes the cells smaller";
+    return INVALID_INPUT;
+  }
 
   t0 = std::chrono::steady_clock::now();
   const Quad_cells& cells = out.cells;
