@@ -541,6 +541,26 @@ static void test_integer_grid_analytic()
     assert(r.message.find("grid-scale") != std::string::npos);
     std::cout << "integer grid: far from integers refused: " << r.message << "\n";
   }
+  // torus of period 2^60 grid units: integer translations beyond what the rows hold exactly: RANGE_EXCEEDED (it was
+  // INVALID_INPUT, "farther than 0.001 from integers", for integers), map untouched
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 0x1p60);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::RANGE_EXCEEDED && uv_bits(m, uv) == bits);
+    assert(r.message.find("2^52 or more") != std::string::npos);
+    std::cout << "integer grid: translations of 2^60 refused: " << r.message << "\n";
+    // the same torus at 2^1000 (UVs whose products overflow): the same refusal, not a rotation of NaN degrees (the
+    // rotation fit works at the scale of a unit UV diagonal)
+    Mesh big; UV_map uvb;
+    make_flat_torus(big, uvb, 3, 3);
+    for(halfedge_descriptor h : big.halfedges())
+      if(!big.is_border(h)) put(uvb, h, Point_2(0x1p1000 * get(uvb, h).x(), 0x1p1000 * get(uvb, h).y()));
+    const SS::Snap_report rb = SS::snap_seamless_parameterization(big, uvb, SS::parameters::integer_grid_map(true));
+    assert(rb.status == SS::RANGE_EXCEEDED && rb.message.find("2^52 or more") != std::string::npos);
+    assert(rb.message.find("nan") == std::string::npos);
+  }
   // half-turn cone: apex (0.5, 0) and translation (1, 0) = integer, but the fixed point is half-integer
   {
     Mesh m; UV_map uv;

@@ -201,7 +201,8 @@ inline void set_opposite_translation(const Corner_mesh& cm, const Cut_rotations&
 
 // The translation of every cut edge rounded to an integer vector, per halfedge (2 per halfedge, at its source;
 // 0 on the other edges): t(h) maps the chart of face(h) to that of face(opposite(h)), p -> R^k(h) p + t(h).
-// INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end.
+// INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end;
+// RANGE_EXCEEDED if one is 2^52 grid units or more (beyond the integers that the rows hold).
 inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                  const std::vector<double>& ubar, double tolerance, std::vector<long>& t,
                                  std::string& message)
@@ -214,15 +215,23 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
     double ta[2], tb[2];
     translation(cm, st, rot, h, true, ubar, ta);
     translation(cm, st, rot, h, false, ubar, tb);
-    bool near = true;
+    bool near = true, in_range = true;
     for(int c = 0; c < 2; ++c) {
       const double r = std::nearbyint(ta[c]);
-      const bool in_range = std::fabs(r) < 0x1p52;             // converted to long only then (else UB)
+      in_range = in_range && std::fabs(r) < 0x1p52 && std::fabs(tb[c]) < 0x1p52;   // converted to long only then (else UB)
       near = near && in_range && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
-      t[2 * h + c] = in_range ? long(r) : 0;
+      t[2 * h + c] = std::fabs(r) < 0x1p52 ? long(r) : 0;
+    }
+    const std::string both = ta[0] == tb[0] && ta[1] == tb[1] ? point_name(ta[0], ta[1])
+                                                            : point_name(ta[0], ta[1]) + " at one end and " +
+                                                              point_name(tb[0], tb[1]) + " at the other";
+    if(!in_range) {
+      message = "cut edge " + vertex_pair_name(cm, h) + " has the translation " + both + " (grid units): 2^52 or more, " +
+                "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+      return RANGE_EXCEEDED;
     }
     if(!near) {
-      if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + point_name(ta[0], ta[1]);
+      if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + both;
       continue;
     }
     set_opposite_translation(cm, rot, h, t);
@@ -310,9 +319,15 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     const int g = al.halfedge[e], c = al.component[e];
     const double a = ubar[2 * st.sector_of[cm.prev[g]] + c], b = ubar[2 * st.sector_of[g] + c];
     const double r = std::nearbyint(a);
-    if(!(std::fabs(r) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
-      message = "the input is not near an integer-grid map: align edge " + vertex_pair_name(cm, g) + " lies on the isoline " +
-                std::string(c == 0 ? "u" : "v") + " = " + format_double(a, 17) + ", farther than " + format_double(tolerance) +
+    const std::string where = "align edge " + vertex_pair_name(cm, g) + " lies on the isoline " + (c == 0 ? "u" : "v") +
+                              " = " + (a == b ? format_double(a, 17) : format_double(a, 17) + " .. " + format_double(b, 17));
+    if(!(std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52)) {
+      message = where + " (grid units): 2^52 or more, beyond the integers an integer-grid map holds exactly; scale the map " +
+                "down (grid_scale / --grid-scale)";
+      return RANGE_EXCEEDED;
+    }
+    if(!(std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
+      message = "the input is not near an integer-grid map: " + where + ", farther than " + format_double(tolerance) +
                 " from an integer; scale the map (grid_scale / --grid-scale), or snap without integer_grid_map (--integer-grid)";
       return INVALID_INPUT;
     }

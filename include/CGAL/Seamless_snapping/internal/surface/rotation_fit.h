@@ -167,6 +167,18 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     }
   }
 
+  // the UV vectors for the angle computations below, at the scale of a UV diagonal near 1 where the corner mesh's UVs
+  // are far from it (integer-grid mode keeps the caller's scale, e.g. 1e300 or 1e-300 grid units, whose products
+  // overflow to Inf or underflow to 0): a power of two, exact, the same for every edge (angles do not change; other
+  // maps keep their numbers bit for bit)
+  const double d = st.uv_diagonal;
+  const int shift = std::isfinite(d) && (d > 0x1p+400 || (d > 0 && d < 0x1p-400)) ? -binary_exponent(d) : 0;
+  auto scaled_vectors = [&](int h, double di[2], double dj[2]) {
+    transition_vectors(cm, h, di, dj);
+    if(shift != 0)
+      for(int c = 0; c < 2; ++c) { di[c] = scale_by_power_of_two(di[c], shift); dj[c] = scale_by_power_of_two(dj[c], shift); }
+  };
+
   auto set_k = [&](int h, int k) {
     k = ((k % 4) + 4) % 4;
     rot.k[h] = k;
@@ -186,7 +198,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
       double score[4] = {0, 0, 0, 0};
       for(int h : arc) {
         double di[2], dj[2];
-        transition_vectors(cm, h, di, dj);
+        scaled_vectors(h, di, dj);
         for(int k = 0; k < 4; ++k) {
           double rx, ry;
           rotate_quarter_turns(k, di[0], di[1], rx, ry);
@@ -221,7 +233,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     if(rot.degenerate[e]) continue;
     const int h = cm.edge_halfedge[e];
     double di[2], dj[2], r[2];
-    transition_vectors(cm, h, di, dj);
+    scaled_vectors(h, di, dj);
     rotate_quarter_turns(rot.k[h], di[0], di[1], r[0], r[1]);
     const double sine = r[0] * dj[1] - r[1] * dj[0], cosine = r[0] * dj[0] + r[1] * dj[1];
     const double bound = cosine > 0 ? std::fabs(sine) / cosine / rad * (1 + 1e-12) : HUGE_VAL;
@@ -241,6 +253,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
                 format_double(tolerance_degrees) + " degrees: not a quarter-turn seamless parametrization";
       return NOT_QUARTER_TURN_SEAMLESS;
     }
+    transition_vectors(cm, h, di, dj);                 // the lengths at the corner mesh's scale (std::hypot does not overflow)
     const double li = std::hypot(di[0], di[1]), lj = std::hypot(dj[0], dj[1]);
     if(!(std::fabs(li - lj) <= tolerance_degrees * rad * (std::max)(li, lj))) {
       message = "cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +

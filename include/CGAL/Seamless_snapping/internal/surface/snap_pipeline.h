@@ -340,8 +340,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   std::vector<int>& merged = S.merged_valence;
   merged.assign(S.cm.n_vertices, 0);
   if(opt.integer_grid_map) {
-    if(round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message) != SUCCESS)
-      return INVALID_INPUT;
+    const Status rounded = round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message);
+    if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
       for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
         report.merged_cone_pairs.emplace_back(std::size_t(m.a), std::size_t(m.b));
