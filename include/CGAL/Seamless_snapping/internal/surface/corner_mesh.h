@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -239,8 +240,8 @@ Status build_corner_mesh(const TriangleMesh& tm, HalfedgeUVMap uvmap, Corner_mes
 // the map itself, and everything computed from the normalized UVs (cut edges, cones, rotation fit,
 // alignment, F_delta, flip repair) is identical; results are scaled back by 2^E with to_uv(). This
 // also keeps products, angle tests and the grid away from the underflow and overflow limits of
-// double for maps of any size. Refused (INVALID_INPUT): a UV that would lose bits, i.e. one more
-// than 2^1074 times smaller than the largest one (a map spanning more than the double range).
+// double for maps of any size. Refused (INVALID_INPUT): a UV that would lose bits (a subnormal one, or one more
+// than 2^1074 times smaller than the largest one: a map spanning more than the double range).
 // With `forced_exponent`, E = *forced_exponent instead (integer-grid maps: E = -s for the grid scale
 // 2^s, so that the corner mesh holds the UVs in grid units and integers stay integers; pinned
 // corners: E at most the lowest bit of every pinned value, pinned_corners.h); a UV that would
@@ -283,9 +284,15 @@ inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const in
                   "is not exact in doubles (overflow or underflow)";
         return RANGE_EXCEEDED;
       }
+      const double x = scale_by_power_of_two(n[0], e) != cm.u[h] ? cm.u[h] : cm.v[h];
+      char digits[32];
+      std::snprintf(digits, sizeof digits, "%.17g", x);
       message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
-                ") has a coordinate more than 2^1074 times smaller than the largest UV coordinate (2^" + std::to_string(e) +
-                "): the map spans more than the range of double";
+                ") has the coordinate " + std::string(digits) + ", which loses bits when the map is scaled by 2^" +
+                std::to_string(-e) + " (to its largest coordinate, below 2^" + std::to_string(e) + "): " +
+                (std::fabs(x) < std::numeric_limits<double>::min() ? "a subnormal double, below the precision of the map's other coordinates; "
+                                                                   : "the map spans more than the range of double; ") +
+                "round such tiny values to 0";
       return INVALID_INPUT;
     }
     cm.u[h] = n[0]; cm.v[h] = n[1];
