@@ -181,6 +181,11 @@ with open(pin_file, "w") as o:
     o.write("%d 1\n" % generic)
 rc, text = run(pinned_in, out8, "--pin", pin_file)
 check(rc == 1 and "pin.txt:1: expected one vertex index" in text, "--pin: malformed line: %d %s" % (rc, text))
+with open(pin_file, "w") as o:       # beyond long long: refused, not skipped as a blank line
+    o.write("# pinned\n99999999999999999999999\n")
+rc, text = run(pinned_in, out8, "--pin", pin_file)
+check(rc == 1 and "pin.txt:2: '99999999999999999999999' is not a vertex index" in text and not os.path.exists(out8),
+      "--pin: index beyond long long: %d %s" % (rc, text))
 
 # 5. --fail-on-new-flips passes when nothing flips, --help lists every option
 rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")

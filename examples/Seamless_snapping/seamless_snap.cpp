@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <charconv>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -187,21 +188,25 @@ static bool read_vertex_index_lines(const std::string& file, const char* what, s
   for(std::size_t no = 1; std::getline(is, line); ++no) {
     line = line.substr(0, line.find('#'));
     std::istringstream ls(line);
-    std::vector<long long> idx;
-    long long a;
-    std::string rest;
-    while(idx.size() < per_line && ls >> a) idx.push_back(a);
-    if(idx.empty() && !(ls.clear(), ls >> rest)) continue;   // blank or comment line
+    std::vector<std::string> tokens;
+    for(std::string token; ls >> token;) tokens.push_back(token);
+    if(tokens.empty()) continue;                              // blank or comment line
     const std::string where = file + ":" + std::to_string(no) + ": ";
-    if(idx.size() != per_line || (ls.clear(), ls >> rest)) {
+    if(tokens.size() != per_line) {
       message = where + (per_line == 1 ? "expected one vertex index" : "expected " + std::to_string(per_line) + " vertex indices");
       return false;
     }
-    for(long long i : idx)
-      if(i < 0 || i >= (long long)m.number_of_vertices()) {
-        message = where + "vertex index out of range (the mesh has " + std::to_string(m.number_of_vertices()) + " vertices)";
+    std::vector<long long> idx;
+    for(const std::string& token : tokens) {                  // the whole token, a decimal integer in range
+      long long i = 0;
+      const std::from_chars_result r = std::from_chars(token.data(), token.data() + token.size(), i);
+      if(r.ec != std::errc() || r.ptr != token.data() + token.size() || i < 0 || i >= (long long)m.number_of_vertices()) {
+        message = where + "'" + token.substr(0, 40) + "' is not a vertex index (0 to " + std::to_string(m.number_of_vertices()) +
+                  " - 1: the mesh has " + std::to_string(m.number_of_vertices()) + " vertices)";
         return false;
       }
+      idx.push_back(i);
+    }
     if(!use(idx, where)) return false;
   }
   return true;
@@ -422,7 +427,7 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   }
   if(report.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(report.status) + ": " + report.message);
-  if(report.cut_edges == 0 && cut_mesh)
+  if(report.cut_edges == 0 && cut_mesh && no_weld)   // (welded automatically, a map without cut edges is one chart)
     return fail("no seam is visible: the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
                 std::to_string(cut.border_edges) + " border edges lie on another one at bit-identical 3D points) and --no-weld keeps its seams as "
                 "borders; nothing was snapped and nothing was written");
