@@ -25,9 +25,11 @@
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -55,9 +57,18 @@ int main(int argc, char** argv)
     else if(a == "--layout-ply" && i + 1 < argc) layout_ply = argv[++i];
     else if(a == "--help") { std::cout << usage; return 0; }
     else if(in.empty() && a[0] != '-') in = a;
-    else { std::cerr << usage; return 2; }
+    else {
+      const bool needs_file = a == "--json" || a == "--svg" || a == "--layout-obj" || a == "--layout-ply";
+      std::cerr << "seamless_trace: " << (needs_file ? a + " needs a file name" : a[0] == '-' ? "unknown option '" + a + "'"
+                                                                                             : "one input only ('" + a + "' after '" + in + "')")
+                << "\n" << usage;
+      return 2;
+    }
   }
-  if(in.empty() || (weld && no_weld)) { std::cerr << usage; return 2; }
+  if(in.empty() || (weld && no_weld)) {
+    std::cerr << "seamless_trace: " << (in.empty() ? "no input file" : "--weld and --no-weld exclude each other") << "\n" << usage;
+    return 2;
+  }
 
   // a cut mesh (vertices duplicated along the seams, as libigl/Directional write them) is welded unless --no-weld
   Mesh mesh;
@@ -131,7 +142,7 @@ int main(int argc, char** argv)
     }
     os << "},\n  \"milliseconds\": " << ms << ",\n  \"trace_ms\": " << g.trace_ms << ",\n  \"subdivision_ms\": "
        << L.subdivision_ms << ",\n  \"mesh_ms\": " << L.mesh_ms << ",\n  \"measure_ms\": " << L.measure_ms << "\n}\n";
-    if(!os) { std::cerr << "seamless_trace: cannot write " << json << std::endl; return EXIT_FAILURE; }
+    if(!os) { std::cerr << "seamless_trace: cannot write " << json << ": " << std::strerror(errno) << std::endl; return EXIT_FAILURE; }
   }
   for(const std::string* file : {&layout_obj, &layout_ply}) {
     if(file->empty()) continue;
@@ -143,7 +154,7 @@ int main(int argc, char** argv)
   if(!svg.empty()) {
     std::ofstream os(svg);
     SS::IO::write_motorcycle_graph_svg(os, mesh, uv, g);
-    if(!os) { std::cerr << "seamless_trace: cannot write " << svg << std::endl; return EXIT_FAILURE; }
+    if(!os) { std::cerr << "seamless_trace: cannot write " << svg << ": " << std::strerror(errno) << std::endl; return EXIT_FAILURE; }
   }
   return EXIT_SUCCESS;
 }
