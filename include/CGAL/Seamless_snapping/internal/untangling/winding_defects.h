@@ -38,17 +38,20 @@ constexpr int coincident_cone_rings = 16;
 constexpr std::size_t named_collapsed_pairs = 3;
 
 // The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring), found
-// breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh)
+// breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh); `ring_begins`, if
+// given, receives where each ring starts in the result (ring 0: the seeds)
 inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const Face_corners& fc, const std::vector<int>& seeds,
-                                                   int rings)
+                                                   int rings, std::vector<std::size_t>* ring_begins = nullptr)
 {
   std::vector<char> near(std::size_t(cm.n_vertices), 0);
   std::vector<int> out;
   for(int w : seeds)
     if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; out.push_back(w); }
+  if(ring_begins != nullptr) ring_begins->assign(1, 0);
   std::size_t ring_begin = 0;
   for(int r = 0; r < rings && ring_begin < out.size(); ++r) {
     const std::size_t ring_end = out.size();
+    if(ring_begins != nullptr) ring_begins->push_back(ring_end);
     for(std::size_t i = ring_begin; i < ring_end; ++i)
       for(int f : fc.vertex_faces[out[i]])
         for(int h : fc.halfedge[std::size_t(f)]) {
@@ -70,23 +73,13 @@ inline std::vector<std::pair<int, int> > collapsed_cone_pairs_near(const Corner_
 {
   if(rings != nullptr) rings->clear();
   if(pairs.empty()) return {};
-  // the ring of every vertex found: the rings are consecutive in the breadth-first order of vertices_within_face_rings()
-  const std::vector<int> near = vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings);
+  std::vector<std::size_t> begins;
+  const std::vector<int> near = vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings, &begins);
   std::vector<std::pair<int, int> > ring_of;        // (vertex, ring), sorted by vertex
   ring_of.reserve(near.size());
-  {
-    std::vector<char> is_seed(std::size_t(cm.n_vertices), 0);
-    for(int w : seeds) is_seed[std::size_t(w)] = 1;
-    std::vector<int> ring(std::size_t(cm.n_vertices), -1);
-    for(int w : near) {
-      if(is_seed[std::size_t(w)]) { ring[std::size_t(w)] = 0; continue; }
-      int r = coincident_cone_rings;                 // one more than the nearest neighbour already reached
-      for(int f : fc.vertex_faces[w])
-        for(int h : fc.halfedge[std::size_t(f)])
-          if(ring[std::size_t(cm.target[h])] >= 0) r = (std::min)(r, ring[std::size_t(cm.target[h])] + 1);
-      ring[std::size_t(w)] = r;
-    }
-    for(int w : near) ring_of.emplace_back(w, ring[std::size_t(w)]);
+  for(std::size_t i = 0, r = 0; i < near.size(); ++i) {
+    while(r + 1 < begins.size() && begins[r + 1] <= i) ++r;
+    ring_of.emplace_back(near[i], int(r));
   }
   std::sort(ring_of.begin(), ring_of.end());
   auto ring = [&](int w) {
