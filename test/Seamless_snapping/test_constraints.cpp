@@ -560,6 +560,15 @@ static void test_integer_grid_analytic()
     const SS::Snap_report rb = SS::snap_seamless_parameterization(big, uvb, SS::parameters::integer_grid_map(true));
     assert(rb.status == SS::RANGE_EXCEEDED && rb.message.find("2^52 or more") != std::string::npos);
     assert(rb.message.find("nan") == std::string::npos);
+    // a grid scale of 2^-1074: the corner mesh in grid units (subnormal UVs), a fixed-point grid below the doubles'
+    // range, refused as such (the message said "too large", with numbers inside the limits it named)
+    Mesh tiny; UV_map uvt;
+    make_flat_torus(tiny, uvt, 3, 3);
+    const std::vector<std::uint64_t> tiny_bits = uv_bits(tiny, uvt);
+    const SS::Snap_report rt = SS::snap_seamless_parameterization(tiny, uvt, SS::parameters::integer_grid_map(true,
+                                                                  SS::parameters::grid_scale(0x1p-1074)));
+    assert(rt.status == SS::RANGE_EXCEEDED && uv_bits(tiny, uvt) == tiny_bits);
+    assert(rt.message.find("outside the range of double grids") != std::string::npos && rt.message.find("too small") != std::string::npos);
   }
   // half-turn cone: apex (0.5, 0) and translation (1, 0) = integer, but the fixed point is half-integer
   {

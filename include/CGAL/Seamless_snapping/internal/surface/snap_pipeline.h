@@ -186,6 +186,11 @@ inline Status check_grid_fits_uv_scale(const Fixed_point_grid& grid, int uv_expo
 {
   const int K = grid.K + uv_exponent;
   if(grid.in_range && K - 52 >= -1074 && K <= 1024) return SUCCESS;
+  if(!grid.in_range) {   // in the corner mesh's units (grid units with a grid scale other than 1, or pinned corners)
+    message = grid.range_message() + ", in units of 2^" + std::to_string(uv_exponent) + " UV units (the grid scale or " +
+              "the pinned corners set them); a grid scale nearer 1 keeps it in range";
+    return RANGE_EXCEEDED;
+  }
   message = "the UV map is too " + std::string(K - 52 < -1074 ? "small" : "large") + " for exact snapping in doubles: " +
             "its fixed-point grid F_delta (Sec. 4.3) has delta = 2^" + std::to_string(K) + " and quantum 2^" +
             std::to_string(K - 52) + " in UV units, but doubles need a quantum of at least 2^-1074 and delta of at most 2^1024; " +
