@@ -167,14 +167,16 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     }
   }
 
-  // the UV vectors for the angle computations below, at the scale of a UV diagonal near 1 where the corner mesh's UVs
-  // are far from it (integer-grid mode keeps the caller's scale, e.g. 1e300 or 1e-300 grid units, whose products
-  // overflow to Inf or underflow to 0): a power of two, exact, the same for every edge (angles do not change; other
-  // maps keep their numbers bit for bit)
-  const double d = st.uv_diagonal;
-  const int shift = std::isfinite(d) && (d > 0x1p+400 || (d > 0 && d < 0x1p-400)) ? -binary_exponent(d) : 0;
-  auto scaled_vectors = [&](int h, double di[2], double dj[2]) {
-    transition_vectors(cm, h, di, dj);
+  // The UV vectors of the angle computations below are scaled by a power of two (exact; angles and the comparison of
+  // the scores do not change) where their products could overflow to Inf or underflow to 0: integer-grid mode keeps the
+  // caller's scale (e.g. UVs of 1e300 or 1e-300 grid units; one vt of 1e300 in a map of unit UVs). Per seam arc for the
+  // scores (one factor for all its edges), per edge for the deviation; vectors within 2^-400 .. 2^400 keep their
+  // values, so other maps keep every number bit for bit.
+  auto shift_of = [](double m) { return std::isfinite(m) && (m > 0x1p+400 || (m > 0 && m < 0x1p-400)) ? -binary_exponent(m) : 0; };
+  auto largest = [](const double di[2], const double dj[2]) {
+    return (std::max)({std::fabs(di[0]), std::fabs(di[1]), std::fabs(dj[0]), std::fabs(dj[1])});
+  };
+  auto scale = [](int shift, double di[2], double dj[2]) {
     if(shift != 0)
       for(int c = 0; c < 2; ++c) { di[c] = scale_by_power_of_two(di[c], shift); dj[c] = scale_by_power_of_two(dj[c], shift); }
   };
@@ -195,10 +197,17 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     decompose_into_chains(cm, st.is_cut, stop, arcs);
     rot.n_arcs = arcs.chains.size();
     for(const std::vector<int>& arc : arcs.chains) {
-      double score[4] = {0, 0, 0, 0};
+      double score[4] = {0, 0, 0, 0}, arc_largest = 0;
       for(int h : arc) {
         double di[2], dj[2];
-        scaled_vectors(h, di, dj);
+        transition_vectors(cm, h, di, dj);
+        arc_largest = (std::max)(arc_largest, largest(di, dj));
+      }
+      const int arc_shift = shift_of(arc_largest);
+      for(int h : arc) {
+        double di[2], dj[2];
+        transition_vectors(cm, h, di, dj);
+        scale(arc_shift, di, dj);
         for(int k = 0; k < 4; ++k) {
           double rx, ry;
           rotate_quarter_turns(k, di[0], di[1], rx, ry);
@@ -233,7 +242,8 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     if(rot.degenerate[e]) continue;
     const int h = cm.edge_halfedge[e];
     double di[2], dj[2], r[2];
-    scaled_vectors(h, di, dj);
+    transition_vectors(cm, h, di, dj);
+    scale(shift_of(largest(di, dj)), di, dj);
     rotate_quarter_turns(rot.k[h], di[0], di[1], r[0], r[1]);
     const double sine = r[0] * dj[1] - r[1] * dj[0], cosine = r[0] * dj[0] + r[1] * dj[1];
     const double bound = cosine > 0 ? std::fabs(sine) / cosine / rad * (1 + 1e-12) : HUGE_VAL;
