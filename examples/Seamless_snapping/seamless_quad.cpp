@@ -231,10 +231,14 @@ int main(int argc, char** argv)
     return fail(std::string("snapping failed: ") + SS::status_name(snap.status) + ": " + snap.message);
   if(q.status != SS::SUCCESS) {
     // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
-    std::string proven;
-    if(q.status == SS::FOLD_OVERS && untangle)         // (the extraction's advice to untangle is for library callers)
+    std::string why = q.message, proven;
+    const std::string advice = SS::internal::quad::untangle_advice;   // the extraction's advice, for callers that did not untangle
+    if(q.status == SS::FOLD_OVERS && untangle && why.size() >= advice.size() &&
+       why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
+      why.resize(why.size() - advice.size());
       proven = "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) + " negative and " +
                std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
+    }
     const auto forced = std::find_if(snap.folds.begin(), snap.folds.end(), [](const SS::Fold_explanation& f) { return f.forced(); });
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())
       proven += "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
@@ -247,7 +251,7 @@ int main(int argc, char** argv)
                                       : " (" + std::to_string(forced_windings) + " of them corners of the forced faces)");
     }
     if(!proven.empty()) proven += " (--report FILE.json lists them all: \"folds\", \"winding_defects\")";
-    return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + q.message + proven);
+    return fail(std::string("quad extraction failed: ") + SS::status_name(q.status) + ": " + why + proven);
   }
   if(!quiet) {
     std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());

@@ -89,6 +89,10 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   return facts;
 }
 
+// the end of the FOLD_OVERS message (a caller that untangled already, as seamless_quad, replaces it)
+constexpr const char* untangle_advice = "; untangle the map first (the snap with untangle(true)), which removes such faces "
+                                        "unless the constraints force them (Snap_report::folds says which)";
+
 // The collapsed cone pairs within coincident_cone_rings face rings of vertex v (winding_defects.h, cone_merging.h's
 // collapsed_cone_pairs() on the map's own integer translations) as a clause of a message, or "" if none: the nearest
 // named_collapsed_pairs of them named, the others counted. `edge_k`: the
@@ -178,8 +182,7 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   if(folds.blocks_quads()) {
     r.message = "the map has " + folds.describe() + (folds.collinear.size() < folds.degenerate.size() ?
                 "; " + std::to_string(folds.degenerate.size() - folds.collinear.size()) + " of them with two corners at one UV point" : "") +
-                ": its integer isolines do not form quads there; untangle the map first (the snap with untangle(true)), "
-                "which removes such faces unless the constraints force them (Snap_report::folds says which)";
+                ": its integer isolines do not form quads there" + untangle_advice;
     return FOLD_OVERS;
   }
   collinear = folds.collinear;
