@@ -222,16 +222,17 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
       near = near && in_range && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
       t[2 * h + c] = std::fabs(r) < 0x1p52 ? long(r) : 0;
     }
-    const std::string both = ta[0] == tb[0] && ta[1] == tb[1] ? point_name(ta[0], ta[1])
-                                                            : point_name(ta[0], ta[1]) + " at one end and " +
-                                                              point_name(tb[0], tb[1]) + " at the other";
+    auto both = [&] {                 // formatted only for a message
+      return ta[0] == tb[0] && ta[1] == tb[1] ? point_name(ta[0], ta[1])
+                                             : point_name(ta[0], ta[1]) + " at one end and " + point_name(tb[0], tb[1]) + " at the other";
+    };
     if(!in_range) {
-      message = "cut edge " + vertex_pair_name(cm, h) + " has the translation " + both + " (grid units): 2^52 or more, " +
+      message = "cut edge " + vertex_pair_name(cm, h) + " has the translation " + both() + " (grid units): 2^52 or more, " +
                 "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
       return RANGE_EXCEEDED;
     }
     if(!near) {
-      if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + both;
+      if(far++ == 0) first_far = "edge " + vertex_pair_name(cm, h) + " has translation " + both();
       continue;
     }
     set_opposite_translation(cm, rot, h, t);
@@ -319,16 +320,21 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     const int g = al.halfedge[e], c = al.component[e];
     const double a = ubar[2 * st.sector_of[cm.prev[g]] + c], b = ubar[2 * st.sector_of[g] + c];
     const double r = std::nearbyint(a);
-    const std::string where = "align edge " + vertex_pair_name(cm, g) + " lies on the isoline " + (c == 0 ? "u" : "v") +
-                              " = " + (a == b ? format_double(a, 17) : format_double(a, 17) + " .. " + format_double(b, 17));
+    auto where = [&] {                // formatted only for a message
+      return "align edge " + vertex_pair_name(cm, g) + " lies on the isoline " + (c == 0 ? "u" : "v") + " = " +
+             (a == b ? format_double(a, 17) : format_double(a, 17) + " .. " + format_double(b, 17));
+    };
     if(!(std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52)) {
-      message = where + " (grid units): 2^52 or more, beyond the integers an integer-grid map holds exactly; scale the map " +
+      message = where() + " (grid units): 2^52 or more, beyond the integers an integer-grid map holds exactly; scale the map " +
                 "down (grid_scale / --grid-scale)";
       return RANGE_EXCEEDED;
     }
     if(!(std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
-      message = "the input is not near an integer-grid map: " + where + ", farther than " + format_double(tolerance) +
-                " from an integer; scale the map (grid_scale / --grid-scale), or snap without integer_grid_map (--integer-grid)";
+      const bool across = std::fabs(a - r) <= tolerance && std::fabs(b - std::nearbyint(b)) <= tolerance;   // two isolines
+      message = "the input is not near an integer-grid map: " + where() +
+                (across ? ", its ends on two different integer isolines (an align edge runs along one)"
+                        : ", farther than " + format_double(tolerance) + " from an integer") +
+                "; scale the map (grid_scale / --grid-scale), or snap without integer_grid_map (--integer-grid)";
       return INVALID_INPUT;
     }
     isoline[e] = long(r);
