@@ -34,9 +34,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +58,12 @@ inline double scale_by_power_of_two(double x, int e)
 }
 
 // the exponent e of std::frexp(x, &e) (x = f 2^e, 1/2 <= |f| < 1; 0 for 0), read from the bits of a normal x
+// x as text with `precision` significant digits (17: it reads back to the same double)
+inline std::string format_double(double x, int precision = 6)
+{
+  std::ostringstream s; s.precision(precision); s << x; return s.str();
+}
+
 inline int binary_exponent(double x)
 {
   std::uint64_t bits;
@@ -285,10 +291,8 @@ inline Status normalize_uv_scale(Corner_mesh& cm, std::string& message, const in
         return RANGE_EXCEEDED;
       }
       const double x = scale_by_power_of_two(n[0], e) != cm.u[h] ? cm.u[h] : cm.v[h];
-      char digits[32];
-      std::snprintf(digits, sizeof digits, "%.17g", x);
       message = "the UV of corner (vertex " + std::to_string(cm.target[h]) + ", face " + std::to_string(cm.face[h]) +
-                ") has the coordinate " + std::string(digits) + ", which loses bits when the map is scaled by 2^" +
+                ") has the coordinate " + format_double(x, 17) + ", which loses bits when the map is scaled by 2^" +
                 std::to_string(-e) + " (to its largest coordinate, below 2^" + std::to_string(e) + "): " +
                 (std::fabs(x) < std::numeric_limits<double>::min() ? "a subnormal double, below the precision of the map's other coordinates; "
                                                                    : "the map spans more than the range of double; ") +

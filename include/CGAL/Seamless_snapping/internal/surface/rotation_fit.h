@@ -47,7 +47,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -130,11 +129,6 @@ inline bool exact_transition_holds(const Corner_mesh& cm, int h, int k)
     if(!same) return false;
   }
   return true;
-}
-
-inline std::string format_double(double x, int precision = 6)
-{
-  std::ostringstream s; s.precision(precision); s << x; return s.str();
 }
 
 // std::hypot(x, y) >= length, decided from x^2 + y^2 where that is far enough from length^2 (relative 1e-9, against
