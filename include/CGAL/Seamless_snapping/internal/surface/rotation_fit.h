@@ -192,21 +192,23 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     rot.n_arcs = arcs.chains.size();
     for(const std::vector<int>& arc : arcs.chains) {
       double score[4] = {0, 0, 0, 0}, arc_largest = 0;
-      for(int h : arc) {
-        double di[2], dj[2];
-        transition_vectors(cm, h, di, dj);
-        arc_largest = (std::max)(arc_largest, largest(di, dj));
-      }
-      const int arc_shift = shift_of(arc_largest);
-      for(int h : arc) {
-        double di[2], dj[2];
-        transition_vectors(cm, h, di, dj);
-        scale(arc_shift, di, dj);
-        for(int k = 0; k < 4; ++k) {
-          double rx, ry;
-          rotate_quarter_turns(k, di[0], di[1], rx, ry);
-          score[k] += rx * dj[0] + ry * dj[1];
+      auto add_scores = [&](int shift) {   // the scores of the arc's edges, their vectors scaled by 2^shift
+        for(int h : arc) {
+          double di[2], dj[2];
+          transition_vectors(cm, h, di, dj);
+          arc_largest = (std::max)(arc_largest, largest(di, dj));
+          scale(shift, di, dj);
+          for(int k = 0; k < 4; ++k) {
+            double rx, ry;
+            rotate_quarter_turns(k, di[0], di[1], rx, ry);
+            score[k] += rx * dj[0] + ry * dj[1];
+          }
         }
+      };
+      add_scores(0);
+      if(const int arc_shift = shift_of(arc_largest)) {   // again, scaled (an arc beyond 2^-400 .. 2^400 only)
+        for(double& x : score) x = 0;
+        add_scores(arc_shift);
       }
       int best = 0;
       for(int k = 1; k < 4; ++k) if(score[k] > score[best]) best = k;
@@ -237,7 +239,8 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
     const int h = cm.edge_halfedge[e];
     double di[2], dj[2], r[2];
     transition_vectors(cm, h, di, dj);
-    scale(shift_of(largest(di, dj)), di, dj);
+    const int shift = shift_of(largest(di, dj));
+    scale(shift, di, dj);
     rotate_quarter_turns(rot.k[h], di[0], di[1], r[0], r[1]);
     const double sine = r[0] * dj[1] - r[1] * dj[0], cosine = r[0] * dj[0] + r[1] * dj[1];
     const double bound = cosine > 0 ? std::fabs(sine) / cosine / rad * (1 + 1e-12) : HUGE_VAL;
@@ -257,7 +260,7 @@ inline Status fit_rotations(const Corner_mesh& cm, const Seam_topology& st, cons
                 format_double(tolerance_degrees) + " degrees: not a quarter-turn seamless parametrization";
       return NOT_QUARTER_TURN_SEAMLESS;
     }
-    transition_vectors(cm, h, di, dj);                 // the lengths at the corner mesh's scale (std::hypot does not overflow)
+    if(shift != 0) transition_vectors(cm, h, di, dj);   // the lengths at the corner mesh's scale (std::hypot does not overflow)
     const double li = std::hypot(di[0], di[1]), lj = std::hypot(dj[0], dj[1]);
     if(!(std::fabs(li - lj) <= tolerance_degrees * rad * (std::max)(li, lj))) {
       message = "cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
