@@ -117,9 +117,7 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
   for(std::size_t i = 0; i < near.size() && i < named_collapsed_pairs; ++i)
     clause += std::string(clause.empty() ? "" : ",") + " " + std::to_string(near[i].first) + " and " + std::to_string(near[i].second);
   if(clause.empty()) return clause;
-  if(near.size() > named_collapsed_pairs)
-    clause += "; " + std::to_string(near.size() - named_collapsed_pairs) + " more such pairs within " +
-              std::to_string(coincident_cone_rings) + " face rings";
+  clause += more_collapsed_pairs_clause(near.size());
   return "; it lies next to cones that the map's integer translations put onto one integer point (vertices" + clause +
          "): the translations fix both cones on that point, so no move of the UVs separates them, and the map winds "
          "wrongly around them, where no quad mesh follows it; snap with merge_cone_pairs(true) (seamless_quad's default), "

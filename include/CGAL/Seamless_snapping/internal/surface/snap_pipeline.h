@@ -811,9 +811,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
                                   std::to_string(rings[i]) + " face ring" + (rings[i] == 1 ? "" : "s") + " away") + ") are " +
                    "rounded onto one integer point (a cone pair the integer translations collapse)";
     }
-    if(near.size() > named)
-      message += "; " + std::to_string(near.size() - named) + " more such pair" + (near.size() - named == 1 ? "" : "s") +
-                 " within " + std::to_string(coincident_cone_rings) + " face rings (Snap_report::collapsed_cone_pairs)";
+    if(near.size() > named) message += more_collapsed_pairs_clause(near.size()) + " (Snap_report::collapsed_cone_pairs)";
   };
   std::vector<int> forced_face(std::size_t(S.cm.n_vertices), -1);   // per vertex: a face proven non-positive at it
   // the proofs of the faces (this thread) and the windings of the vertices share nothing either writes: on two threads

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,16 @@ namespace internal {
 constexpr int coincident_cone_rings = 16;
 // how many of the collapsed cone pairs near a defect a message names (the nearest; the others are counted)
 constexpr std::size_t named_collapsed_pairs = 3;
+
+// the clause that counts the collapsed cone pairs near a defect beyond the named_collapsed_pairs a message names
+// ("" if none are left out)
+inline std::string more_collapsed_pairs_clause(std::size_t near)
+{
+  if(near <= named_collapsed_pairs) return std::string();
+  const std::size_t more = near - named_collapsed_pairs;
+  return "; " + std::to_string(more) + " more such pair" + (more == 1 ? "" : "s") + " within " +
+         std::to_string(coincident_cone_rings) + " face rings";
+}
 
 // The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring), found
 // breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh); `ring_begins`, if
