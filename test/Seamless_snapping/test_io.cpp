@@ -343,7 +343,18 @@ static void test_malformed()
                  "f 1/1 2/1 5/1\nf 1/1 5/1 4/1\nf 2/1 3/1 6/1\nf 2/1 6/1 5/1\nf 3/1 4/1 1/1\nf 3/1 1/1 6/1\n", "orientation");
   expect_invalid("NaN", "v 0 0 nan\n" + tri + "f 1/1 2/2 3/3\n", "stream:1: non-finite");
   expect_invalid("Inf", tri + "vt inf 0\nf 1/1 2/2 3/3\n", "non-finite");
-  expect_invalid("overflow", "v 0 0 1e400\n" + tri + "f 1/1 2/2 3/3\n", "outside the range of double");
+  expect_invalid("overflow", "v 0 0 1e400\n" + tri + "f 1/1 2/2 3/3\n", "outside the range of double (its magnitude is above");
+  expect_invalid("underflow", tri + "vt -1e-400 0\nf 1/1 2/2 3/3\n", "coordinate '-1e-400' is outside the range of double (nonzero, but it would round to 0");
+  {   // a subnormal coordinate is a double: read bit for bit, not refused
+    Mesh m;
+    UV_map uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+    std::istringstream is("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 4e-320 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+    std::string msg;
+    CHECK(SS::IO::read_OBJ_with_corner_uvs(is, m, uv, msg) == SS::SUCCESS, "subnormal vt: " << msg);
+    bool found = false;
+    for(halfedge_descriptor h : m.halfedges()) found = found || (!m.is_border(h) && get(uv, h).x() == 4e-320);
+    CHECK(found, "subnormal vt: the UV 4e-320 was not kept");
+  }
   expect_invalid("garbage number", "v 0 0 1x\n", "cannot parse coordinate '1x'");
   expect_invalid("missing coordinate", "v 0 0\n", "needs 3 coordinates");
   expect_invalid("vertex index out of range", tri + "f 1/1 2/2 9/3\n", "vertex index 9 out of range");

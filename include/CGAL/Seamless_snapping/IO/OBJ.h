@@ -85,7 +85,7 @@ inline bool parse_double(const char*& p, const char* end, double& x, bool& out_o
   errno = 0;
   x = std::strtod(tok.c_str(), &e);
   if(e == tok.c_str()) return false;
-  if(errno == ERANGE && std::isinf(x)) { out_of_range = true; return false; }
+  if(errno == ERANGE && (std::isinf(x) || x == 0)) { out_of_range = true; return false; }   // as std::from_chars
   p += (e - tok.c_str());
   return true;
 #endif
@@ -214,7 +214,10 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
       if(!parse_double(p, end, out[k], oor) || (p != end && !is_space(*p))) {
         const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
         const std::string tok = quote_token(start, tok_end);
-        if(oor) return fail(lineno, "coordinate " + tok + " is outside the range of double (Inf)");
+        if(oor)   // too large or too small in magnitude (std::from_chars says which only in the value it does not write)
+          return fail(lineno, "coordinate " + tok + " is outside the range of double (" +
+                              (std::isinf(std::strtod(std::string(start, tok_end).c_str(), nullptr))
+                                 ? "its magnitude is above 1.8e308)" : "nonzero, but it would round to 0: below 4.9e-324)"));
         return fail(lineno, "cannot parse coordinate " + tok + " of a '" + what + "' record");
       }
       if(!std::isfinite(out[k]))
@@ -918,7 +921,8 @@ Status prepare_obj_text(const TriangleMesh& tm, HalfedgeUVMap uv, Obj_text& text
  * What is rejected, with `INVALID_INPUT` and a message `"<filename>:<line>: <reason>"`:
  * a face without texture coordinates (`f a b c`, `f a//na`); a face that is not a triangle
  * (this reader does not triangulate); an index that is 0 or out of range; NaN, Inf or unparsable
- * coordinates; a degenerate face (a vertex twice, also after welding); a non-manifold edge or vertex,
+ * coordinates, and numbers outside the range of `double` (above 1.8e308 in magnitude, or nonzero and below
+ * 4.9e-324, which would read as 0; subnormal numbers are read as they are); a degenerate face (a vertex twice, also after welding); a non-manifold edge or vertex,
  * or an orientation that is inconsistent between neighbouring faces (non-orientable input),
  * as detected by `CGAL::Euler::add_face()`; a file without faces; a line longer than 64 MiB (not a text file, e.g.
  * `/dev/zero`: reading stops there, the memory stays bounded); a file that cannot be opened.
