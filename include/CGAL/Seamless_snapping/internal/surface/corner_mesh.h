@@ -57,13 +57,13 @@ inline double scale_by_power_of_two(double x, int e)
   return x * p;
 }
 
-// the exponent e of std::frexp(x, &e) (x = f 2^e, 1/2 <= |f| < 1; 0 for 0), read from the bits of a normal x
 // x as text with `precision` significant digits (17: it reads back to the same double)
 inline std::string format_double(double x, int precision = 6)
 {
   std::ostringstream s; s.precision(precision); s << x; return s.str();
 }
 
+// the exponent e of std::frexp(x, &e) (x = f 2^e, 1/2 <= |f| < 1; 0 for 0), read from the bits of a normal x
 inline int binary_exponent(double x)
 {
   std::uint64_t bits;

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -49,15 +50,16 @@ inline std::string more_collapsed_pairs_clause(std::size_t near)
 }
 
 // The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring), found
-// breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh); `ring_begins`, if
-// given, receives where each ring starts in the result (ring 0: the seeds)
+// breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh: the vertices
+// reached are kept in a hash set, not in a mark per vertex of the mesh, since the messages call this once per
+// defect); `ring_begins`, if given, receives where each ring starts in the result (ring 0: the seeds)
 inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const Face_corners& fc, const std::vector<int>& seeds,
                                                    int rings, std::vector<std::size_t>* ring_begins = nullptr)
 {
-  std::vector<char> near(std::size_t(cm.n_vertices), 0);
+  std::unordered_set<int> near;
   std::vector<int> out;
   for(int w : seeds)
-    if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; out.push_back(w); }
+    if(near.insert(w).second) out.push_back(w);
   if(ring_begins != nullptr) ring_begins->assign(1, 0);
   std::size_t ring_begin = 0;
   for(int r = 0; r < rings && ring_begin < out.size(); ++r) {
@@ -67,7 +69,7 @@ inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const 
       for(int f : fc.vertex_faces[out[i]])
         for(int h : fc.halfedge[std::size_t(f)]) {
           const int w = cm.target[h];
-          if(!near[std::size_t(w)]) { near[std::size_t(w)] = 1; out.push_back(w); }
+          if(near.insert(w).second) out.push_back(w);
         }
     ring_begin = ring_end;
   }
