@@ -575,6 +575,15 @@ static void test_bear_orbifold()
       assert(rs.report.status == SS::SUCCESS && same_quad_mesh(r, rs));
     }
   }
+  {   // at grid scale 2^-3 the map spans less than one grid cell: its 4 cones would fall onto one integer point
+    Mesh m = input;
+    UV_map uv = uv_of(m);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(0.125));
+    assert(s.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
+    assert(s.message.find("spans less than one grid cell") != std::string::npos && s.message.find("has 4 cones") != std::string::npos);
+    std::cout << "quad: bear orbifold Parallelogram at grid scale 1/8 refused: " << s.message << "\n";
+  }
   Mesh m; UV_map uv;
   bear_orbifold(m, uv, SMP::Square);
   assert(SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true)).status == SS::SUCCESS);

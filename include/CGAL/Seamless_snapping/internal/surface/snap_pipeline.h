@@ -345,6 +345,19 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   std::vector<int>& merged = S.merged_valence;
   merged.assign(S.cm.n_vertices, 0);
   if(opt.integer_grid_map) {
+    // a map within one grid cell has at most one integer point in its UV bounding box: the cones (each on an integer
+    // point in an integer-grid map) would all fall onto it (a map of 1e-300 UVs at grid scale 1 was "near" an
+    // integer-grid map, every translation rounding to 0, and untangled for seconds to 147 negative triangles)
+    const int e = S.cm.uv_exponent + S.grid_exponent;
+    const double w = scale_by_power_of_two(S.st.uv_max[0] - S.st.uv_min[0], e);
+    const double h = scale_by_power_of_two(S.st.uv_max[1] - S.st.uv_min[1], e);
+    if(w < 1 && h < 1 && report.field_cones >= 2) {
+      message = "the map spans less than one grid cell (its UV bounding box is " + format_double(w) + " x " +
+                format_double(h) + " grid units) but has " + std::to_string(report.field_cones) + " cones, which an " +
+                "integer-grid map puts on integer points: they would all fall onto one point; scale the map up " +
+                "(grid_scale / --grid-scale 2^k)";
+      return INVALID_INPUT;
+    }
     const Status rounded = round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message);
     if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
