@@ -7,7 +7,7 @@
 //
 // Author(s)     : The Seamless Snapping authors
 
-// Mesh types and small helpers shared by the surface tests (test_snap, test_constraints).
+// Mesh types and small helpers shared by the surface tests (test_snap, test_constraints, test_quad, test_trace, test_threads).
 // Not part of the package API.
 
 #ifndef CGAL_SEAMLESS_SNAPPING_TEST_MESH_TEST_SUPPORT_H
@@ -15,6 +15,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Surface_mesh_parameterization/orbifold_enums.h>   // the namespace of the alias SMP
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
@@ -77,6 +78,44 @@ static inline std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
     out.push_back(a); out.push_back(b);
   }
   return out;
+}
+
+// The map of the faces within `rings` face rings of vertex v re-expressed by the grid symmetry p -> R p (R a quarter
+// turn counter-clockwise about the origin, an integer point; exact on any double, where a translation would round
+// the UVs' low bits): the region's border becomes cut edges, the cut graph moves, the surface map stays the same.
+// Returns how many edges became cut edges.
+static inline std::size_t recharted(Mesh& m, UV_map uv, vertex_descriptor v, int rings)
+{
+  std::vector<char> in(m.number_of_faces(), 0), reached(m.number_of_vertices(), 0);
+  std::vector<vertex_descriptor> front(1, v);
+  reached[v] = 1;
+  for(int r = 0; r < rings; ++r) {
+    std::vector<vertex_descriptor> next;
+    for(vertex_descriptor w : front)
+      for(Mesh::Face_index f : CGAL::faces_around_target(m.halfedge(w), m)) {
+        if(f == Mesh::null_face() || in[f]) continue;
+        in[f] = 1;
+        for(vertex_descriptor x : CGAL::vertices_around_face(m.halfedge(f), m))
+          if(!reached[x]) { reached[x] = 1; next.push_back(x); }
+      }
+    front.swap(next);
+  }
+  auto cut_edges = [&] {
+    std::size_t n = 0;
+    for(Mesh::Edge_index e : m.edges()) {
+      const halfedge_descriptor h = m.halfedge(e), o = m.opposite(h);
+      if(!m.is_border(e) && (get(uv, h) != get(uv, m.prev(o)) || get(uv, m.prev(h)) != get(uv, o))) ++n;
+    }
+    return n;
+  };
+  const std::size_t before = cut_edges();
+  for(Mesh::Face_index f : m.faces())
+    if(in[f])
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+        const Point_2 p = get(uv, h);
+        put(uv, h, Point_2(-p.y(), p.x()));
+      }
+  return cut_edges() - before;
 }
 
 // reads an OBJ with corner UVs; files under a "directional" folder are cut meshes and get welded

@@ -13,6 +13,9 @@
 //   trace: bear orbifold, snapped every separatrix ends regularly (cone, border, T-junction), n rays per cone,
 //                                 every trace traced back from its end returns to its cone exactly
 //   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
+//   trace: cut invariance         the snapped bear with 4 and 12 face rings around a cone re-charted by a quarter turn (the cut graph
+//                                 moves): the same separatrices, ends, nodes, arcs, patch sizes and refined-mesh
+//                                 points, bit for bit
 //   trace: shared data, snapped   the same properties on every snapped shared map without fold-overs
 //                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset); the maps
 //                                 with fold-overs (the knight) untangled first: fold-free, a valid layout; in
@@ -442,6 +445,54 @@ static void test_bear_orbifold()
   assert(g.cones == 3 && g.separatrices.size() == 4);     // cones of 1, 1 and 2 quarter turns
 }
 
+// Cut invariance: the motorcycle graph belongs to the surface map, not to its charts. The bear's Square map, snapped,
+// with the faces within 4 and 12 face rings of a cone re-expressed by a quarter turn (the region's border becomes
+// cut edges): the same separatrices and ends, the same nodes, arcs and patches with the same exact sizes, and the
+// refined mesh with the same 3D points, bit for bit
+static void test_cut_invariance()
+{
+  Mesh input;
+  UV_map uv_in;
+  if(!bear_orbifold(input, uv_in, "cut invariance")) return;
+  assert(SS::snap_seamless_parameterization(input, uv_in).status == SS::SUCCESS);
+  struct Summary
+  {
+    std::size_t separatrices, nodes, arcs;
+    std::array<std::size_t, SS::number_of_trace_ends> ends;
+    std::vector<std::pair<CGAL::Gmpq, CGAL::Gmpq> > sizes;   // the patches' sides (shorter, longer; width and height
+                                                            // are those of the chart a patch unfolds into), sorted
+    std::vector<SS::Layout_mesh::Point> points;             // the refined mesh's, sorted
+    bool operator==(const Summary& o) const
+    {
+      return separatrices == o.separatrices && nodes == o.nodes && arcs == o.arcs && ends == o.ends && sizes == o.sizes &&
+             points == o.points;
+    }
+  };
+  vertex_descriptor cone;                                   // the region is around a cone: the separatrices start in it
+  auto summary = [&cone](const Mesh& m, UV_map uv, const std::string& what) {
+    const SS::Motorcycle_graph<Mesh> g = check_exact_graph(m, uv, what);
+    cone = g.separatrices.front().start_vertex;
+    Summary s{g.separatrices.size(), g.layout.nodes, g.layout.arcs, g.ends, {}, {}};
+    for(const SS::Layout_patch& p : g.layout.patches) s.sizes.emplace_back((std::min)(p.width, p.height), (std::max)(p.width, p.height));
+    for(SS::Layout_mesh::Vertex_index v : g.layout.mesh.vertices()) s.points.push_back(g.layout.mesh.point(v));
+    std::sort(s.sizes.begin(), s.sizes.end());
+    std::sort(s.points.begin(), s.points.end());
+    return s;
+  };
+  const Summary before = summary(input, uv_in, "bear orbifold Square, snapped");
+  for(int rings : {4, 12}) {
+    Mesh m = input;
+    UV_map uv = uv_of(m);
+    const std::size_t new_cuts = recharted(m, uv, cone, rings);
+    assert(new_cuts > 0 && SS::is_exactly_seamless(m, uv));
+    const Summary after = summary(m, uv, "bear, " + std::to_string(rings) + " rings re-charted");
+    assert(after == before);
+    std::printf("trace: bear orbifold Square, %d face rings re-charted (%zu new cut edges): the same %zu separatrices, "
+                "%zu patches, %zu points of the refined mesh, bit for bit\n", rings, new_cuts, after.separatrices,
+                after.sizes.size(), after.points.size());
+  }
+}
+
 // Connection constraints realized by traces (Fig. 4 of the paper): on CGAL's bear with an Orbifold Tutte
 // square map, every pair of cones that the input puts on a common isoline up to solver error (along the
 // shortest edge path, to 1e-6 of the UV diameter) becomes a connection constraint. After snapping with
@@ -678,6 +729,7 @@ int main(int argc, char** argv)
   test_cycle_closes();
   test_collapsed_face();
   if(!sanitizer_subset()) test_bear_orbifold();
+  if(!sanitizer_subset()) test_cut_invariance();
   if(!sanitizer_subset()) test_connections_realized();
   test_shared_data();
   if(!sanitizer_subset()) test_merged_libqex_maps();
