@@ -678,18 +678,26 @@ static void test_integer_grid_orbifold()
 {
   Mesh m;
   if(!load_shared_or_skip("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", "integer grid: orbifold", m)) return;
-  Mesh scaled = m;
-  UV_map uv = uv_of(m), uvs = uv_of(scaled);
+  const Mesh m0 = m;
+  UV_map uv = uv_of(m);
   const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
   assert(r.status == SS::SUCCESS && SS::is_exact_integer_grid_map(m, uv));   // exact: Gmpq, zero tolerance
   assert(r.max_change < 1e-10);   // a separate property: the snap moved the map little (relative to its UV diagonal)
-  for(halfedge_descriptor h : scaled.halfedges()) put(uvs, h, Point_2(0.3 * get(uvs, h).x(), 0.3 * get(uvs, h).y()));
-  const std::vector<std::uint64_t> bits = uv_bits(scaled, uvs);
-  const SS::Snap_report rs = SS::snap_seamless_parameterization(scaled, uvs, SS::parameters::integer_grid_map(true));
-  assert(rs.status == SS::INVALID_INPUT && uv_bits(scaled, uvs) == bits);
-  assert(rs.message.find("not near an integer-grid map") != std::string::npos);
+  // scaled by 1.3 its cones and translations are off the integers; by 0.3 it spans less than one grid cell, so that
+  // its 3 cones would all fall onto one integer point (refused before the translations are looked at)
+  for(const std::pair<double, const char*>& c : {std::make_pair(1.3, "not near an integer-grid map"),
+                                                 std::make_pair(0.3, "spans less than one grid cell")}) {
+    Mesh scaled = m0;
+    UV_map uvs = uv_of(scaled);
+    for(halfedge_descriptor h : scaled.halfedges()) put(uvs, h, Point_2(c.first * get(uvs, h).x(), c.first * get(uvs, h).y()));
+    const std::vector<std::uint64_t> bits = uv_bits(scaled, uvs);
+    const SS::Snap_report rs = SS::snap_seamless_parameterization(scaled, uvs, SS::parameters::integer_grid_map(true));
+    assert(rs.status == SS::INVALID_INPUT && uv_bits(scaled, uvs) == bits);
+    assert(rs.message.find(c.second) != std::string::npos);
+    std::cout << "integer grid: orbifold Tutte square map scaled by " << c.first << " refused: " << rs.message << "\n";
+  }
   std::cout << "integer grid: orbifold Tutte square map: " << r.integer_translations_before << " -> " << r.integer_translations_after
-            << " of " << r.cut_edges << " integer translations; scaled by 0.3 refused: " << rs.message << "\n";
+            << " of " << r.cut_edges << " integer translations\n";
 }
 
 // ---------------------------------------------------------------------------------------------
