@@ -922,7 +922,8 @@ Status prepare_obj_text(const TriangleMesh& tm, HalfedgeUVMap uv, Obj_text& text
  * a face without texture coordinates (`f a b c`, `f a//na`); a face that is not a triangle
  * (this reader does not triangulate); an index that is 0 or out of range; NaN, Inf or unparsable
  * coordinates, and numbers outside the range of `double` (above 1.8e308 in magnitude, or nonzero and below
- * 4.9e-324, which would read as 0; subnormal numbers are read as they are); a degenerate face (a vertex twice, also after welding); a non-manifold edge or vertex,
+ * 4.9e-324, which would read as 0; subnormal numbers are read as they are); a degenerate face (a vertex
+ * twice, also after welding); a non-manifold edge or vertex,
  * or an orientation that is inconsistent between neighbouring faces (non-orientable input),
  * as detected by `CGAL::Euler::add_face()`; a file without faces; a line longer than 64 MiB (not a text file, e.g.
  * `/dev/zero`: reading stops there, the memory stays bounded); a file that cannot be opened.
