@@ -41,9 +41,10 @@
 //                               3D points, bit for bit
 //   quad: shared data           every shared map up to 1 MB (600 kB under --sanitizer-subset) snapped with
 //                               integer_grid_map(true): fold-free ones give a checked quad mesh (the horse also
-//                               at grid scale 2), the ones with fold-overs FOLD_OVERS listing the snap report's
-//                               flipped and zero-area faces (but zero-area faces with three distinct corners: the
-//                               knight's forced one is collapsed), maps with a cone of 90 degrees (the knight)
+//                               at grid scale 2), the same bit for bit with 8 face rings re-charted; the ones with
+//                               fold-overs FOLD_OVERS listing the snap report's flipped and zero-area faces (but
+//                               zero-area faces with three distinct corners: the knight's forced one is collapsed),
+//                               maps with a cone of 90 degrees (the knight)
 //                               INVALID_INPUT, said to be the map's own cone where no vertex winds twice
 //   quad: collapsed cone pairs  libQEx's fandisk and duck_miq_8 (IGM, untangled, fold-free): refused, the message
 //                               naming a cone pair the integer translations put onto one point, as the snap report does
@@ -639,7 +640,7 @@ static void test_shared_data()
 {
   std::vector<fs::path> files;
   if(!shared_obj_files_or_skip("quad: shared data", files)) return;
-  std::size_t extracted = 0, folded = 0, quarter_cones = 0;
+  std::size_t extracted = 0, folded = 0, quarter_cones = 0, recharted_maps = 0;
   for(const fs::path& p : files) {
     if(fs::file_size(p) > 1000000) continue;     // the large files are in bench_quad
     Mesh m;
@@ -685,10 +686,20 @@ static void test_shared_data()
       extract(m, uv, S, r);
       check_quad_mesh(m, uv, S, r, name + ", grid scale " + std::to_string(int(S)));
       ++extracted;
+      if(S == 1) {                               // cut invariance (test_cut_invariance()), on real maps
+        Mesh m2 = m;
+        UV_map uv2 = uv_of(m2);
+        assert(recharted(m2, uv2, *m2.vertices().begin(), 8) > 0);
+        Quad_result r2;
+        extract(m2, uv2, S, r2);
+        assert(r2.report.status == r.report.status && quad_point_cycles(r2.q) == quad_point_cycles(r.q));
+        ++recharted_maps;
+      }
     }
   }
-  std::cout << "quad: shared data: " << extracted << " quad meshes checked, " << folded << " maps with fold-overs refused, "
-            << quarter_cones << " with a cone of 90 degrees refused\n";
+  std::cout << "quad: shared data: " << extracted << " quad meshes checked (" << recharted_maps << " of them the same, bit for "
+            << "bit, with 8 face rings re-charted), " << folded << " maps with fold-overs refused, " << quarter_cones
+            << " with a cone of 90 degrees refused\n";
   assert(extracted >= 3);
 }
 
