@@ -26,7 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -51,26 +51,24 @@ inline std::string more_collapsed_pairs_clause(std::size_t near)
 
 // The vertices within `rings` face rings of `seeds` (the seeds first, each vertex once, ring by ring), found
 // breadth first through the faces of each vertex (the cost is that of the rings, not of the mesh: the vertices
-// reached are kept in a hash set, not in a mark per vertex of the mesh, since the messages call this once per
-// defect); `ring_begins`, if given, receives where each ring starts in the result (ring 0: the seeds)
+// reached are kept in a hash map, not in a mark per vertex of the mesh, since the messages call this once per
+// defect); `ring_of`, if given, receives each of them with its ring (0: the seeds)
 inline std::vector<int> vertices_within_face_rings(const Corner_mesh& cm, const Face_corners& fc, const std::vector<int>& seeds,
-                                                   int rings, std::vector<std::size_t>* ring_begins = nullptr)
+                                                   int rings, std::unordered_map<int, int>* ring_of = nullptr)
 {
-  std::unordered_set<int> near;
+  std::unordered_map<int, int> own;
+  std::unordered_map<int, int>& ring = ring_of != nullptr ? *ring_of : own;
+  ring.clear();
   std::vector<int> out;
   for(int w : seeds)
-    if(near.insert(w).second) out.push_back(w);
-  if(ring_begins != nullptr) ring_begins->assign(1, 0);
+    if(ring.emplace(w, 0).second) out.push_back(w);
   std::size_t ring_begin = 0;
   for(int r = 0; r < rings && ring_begin < out.size(); ++r) {
     const std::size_t ring_end = out.size();
-    if(ring_begins != nullptr) ring_begins->push_back(ring_end);
     for(std::size_t i = ring_begin; i < ring_end; ++i)
       for(int f : fc.vertex_faces[out[i]])
-        for(int h : fc.halfedge[std::size_t(f)]) {
-          const int w = cm.target[h];
-          if(near.insert(w).second) out.push_back(w);
-        }
+        for(int h : fc.halfedge[std::size_t(f)])
+          if(ring.emplace(cm.target[h], r + 1).second) out.push_back(cm.target[h]);
     ring_begin = ring_end;
   }
   return out;
@@ -86,18 +84,11 @@ inline std::vector<std::pair<int, int> > collapsed_cone_pairs_near(const Corner_
 {
   if(rings != nullptr) rings->clear();
   if(pairs.empty()) return {};
-  std::vector<std::size_t> begins;
-  const std::vector<int> near = vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings, &begins);
-  std::vector<std::pair<int, int> > ring_of;        // (vertex, ring), sorted by vertex
-  ring_of.reserve(near.size());
-  for(std::size_t i = 0, r = 0; i < near.size(); ++i) {
-    while(r + 1 < begins.size() && begins[r + 1] <= i) ++r;
-    ring_of.emplace_back(near[i], int(r));
-  }
-  std::sort(ring_of.begin(), ring_of.end());
+  std::unordered_map<int, int> ring_of;
+  vertices_within_face_rings(cm, fc, seeds, coincident_cone_rings, &ring_of);
   auto ring = [&](int w) {
-    const auto it = std::lower_bound(ring_of.begin(), ring_of.end(), std::make_pair(w, -1));
-    return it != ring_of.end() && it->first == w ? it->second : -1;
+    const auto it = ring_of.find(w);
+    return it != ring_of.end() ? it->second : -1;
   };
   std::vector<std::pair<int, std::size_t> > found;   // (ring, index into pairs)
   for(std::size_t i = 0; i < pairs.size(); ++i) {
