@@ -219,7 +219,7 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
     for(int c = 0; c < 2; ++c) {
       const double r = std::nearbyint(ta[c]);
       in_range = in_range && std::fabs(r) < 0x1p52 && std::fabs(tb[c]) < 0x1p52;   // converted to long only then (else UB)
-      near = near && in_range && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
+      near = near && std::fabs(ta[c] - r) <= tolerance && std::fabs(tb[c] - r) <= tolerance;
       t[2 * h + c] = std::fabs(r) < 0x1p52 ? long(r) : 0;
     }
     auto both = [&] {                 // formatted only for a message
