@@ -196,6 +196,18 @@ def test_untangle_integer_grid_map():
     assert refused["untangle_refused"] and refused["flips_after_repair"] > 0
 
 
+def test_closed_surface_without_cuts():
+    # UVs given per vertex (no seam) on a closed mesh, as a projection or a placeholder makes them: every map of a
+    # closed surface into the plane folds, so the snap says so for its folds and leaves the map as it is
+    V, F, _, _ = flat_torus(n=4)
+    for UV in (V[:, :2].copy(), np.zeros((len(V), 2))):
+        UV2, FUV2, report = ss.snap(V, F, UV, F, untangle=True)
+        assert report["status"] == "SUCCESS" and report["closed_uncut_faces"] == len(F) and not report["untangled"]
+        assert report["folds"] and report["folds_forced"] == 0
+        assert all("closed part of the surface" in x["message"] for x in report["folds"])
+        assert np.array_equal(UV2[FUV2], UV[F])
+
+
 def test_snap_failure_is_reported_and_raises():
     V, F, UV, FUV = cut_grid()
     UV = UV.copy()

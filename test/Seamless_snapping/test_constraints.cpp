@@ -1108,6 +1108,42 @@ static void test_untangling_parts()
   std::cout << "untangling: independent parts found, each with its own step bound (0.2, 0.8) and energy\n";
 }
 
+// A closed surface whose map has no cut edge (one UV per vertex: here the projection onto the plane z = 0, as some
+// exporters make) folds in every map: the snap says so for its folds and wound vertices (Snap_report::closed_uncut_faces),
+// proves none per face, and the untangling leaves it alone (the map is bit for bit the input's). The same projection
+// on a disk (a border) is an ordinary map whose fold the untangling removes.
+static void test_closed_uncut_parts()
+{
+  const int n = 8;
+  Mesh m0; UV_map uv0;
+  make_flat_torus(m0, uv0, n, n);
+  for(halfedge_descriptor h : m0.halfedges())
+    if(!m0.is_border(h)) put(uv0, h, Point_2(m0.point(m0.target(h)).x(), m0.point(m0.target(h)).y()));
+  const std::pair<std::size_t, std::size_t> np = non_positive(m0, uv0);
+  assert(np.first + np.second > 0);                    // as the theorem says
+  for(const bool untangle : {false, true}) {
+    Mesh m = m0; UV_map uv = uv_of(m);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::untangle(untangle));
+    assert(r.status == SS::SUCCESS && r.closed_uncut_faces == m.number_of_faces() && !r.untangled);
+    assert(uv_bits(m, uv) == uv_bits(m0, uv0));
+    assert(r.folds.size() == np.first + np.second && r.folds_forced == 0);
+    for(const SS::Fold_explanation& e : r.folds) assert(e.message.find("closed part of the surface (" + std::to_string(n * n * 2) + " faces") != std::string::npos);
+    for(const SS::Winding_defect& w : r.winding_defects) assert(w.message.find("closed part of the surface") != std::string::npos);
+    assert(r.message.find("closed parts of the surface without cut edges") != std::string::npos);
+  }
+  // a disk (grid of 6 x 6 squares) mapped by the same kind of projection, with a vertex dragged across a neighbour
+  Mesh d; UV_map uvd = uv_of(d);
+  const std::vector<vertex_descriptor> vs = triangulated_grid(d, 6, true);
+  for(halfedge_descriptor h : d.halfedges())
+    if(!d.is_border(h)) put(uvd, h, Point_2(d.point(d.target(h)).x(), d.point(d.target(h)).y()));
+  move_vertex_uv(d, uvd, vs[3 * 7 + 3], Point_2(4.4, 3.3));
+  assert(non_positive(d, uvd).first > 0);
+  const SS::Snap_report rd = SS::snap_seamless_parameterization(d, uvd, SS::parameters::untangle(true));
+  check_untangled(d, uvd, rd, false, "grid with a dragged vertex");
+  assert(rd.untangled && rd.closed_uncut_faces == 0 && rd.folds.empty());
+  std::cout << "untangling: a closed surface without cuts (" << np.first + np.second << " folds) explained, not untangled; a disk untangled\n";
+}
+
 static void test_untangling_analytic()
 {
   // an exact flat 8 x 8 torus (an IGM) with vertex (3, 3) dragged across its neighbour (4, 3): its triangles fold
@@ -1130,7 +1166,7 @@ static void test_untangling_analytic()
   const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
   check_untangled(m, uv, r, true, "torus with a dragged vertex");
   assert(r.untangled && r.flips_before_untangling > 0 && r.flips_after_repair == 0 && r.degenerate_after_repair == 0);
-  assert(r.folds.empty() && r.winding_defects.empty());
+  assert(r.folds.empty() && r.winding_defects.empty() && r.closed_uncut_faces == 0);   // a closed surface, but with cuts
   for(halfedge_descriptor h : m.halfedges()) {
     if(m.is_border(h) || get(uv, h) == get(uv0, h)) continue;
     const int v = int(m.target(h)), i = v % n, j = v / n;
@@ -1161,6 +1197,7 @@ static void test_untangling_analytic()
   assert(rp.flips_after_repair == 0 && rp.degenerate_after_repair == 1 && rp.folds_forced == 1);
   assert(rp.folds.front().reason == SS::FOLD_RIGID_TRIANGLE && !rp.folds.front().negative);
   std::cout << "untangling: analytic cases OK (" << rp.folds.front().message << ")\n";
+  test_closed_uncut_parts();
 }
 
 // merge_cone_pairs(true) on the dragon (full-seamless), after the cancelling pairs, joins pairs whose indices do not

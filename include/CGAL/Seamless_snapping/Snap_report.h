@@ -172,6 +172,7 @@ struct Snap_report
   std::size_t flips_after_untangling = 0;       ///< negative UV triangles of the untangled floating-point map (exact test on its doubles)
   std::size_t degenerate_after_untangling = 0;  ///< zero-area UV triangles of the untangled floating-point map
   std::size_t folds_forced = 0;        ///< of the non-positive UV triangles at the end: those proven so in every exact solution
+  std::size_t closed_uncut_faces = 0;  ///< faces in closed connected parts of the mesh (no border edge) without cut edges: every map satisfying the constraints is one UV per vertex there, a continuous map of a closed surface into the plane, which always has non-positive UV triangles (not per face: at least one of the part); their `folds` say so, and the untangling leaves such parts alone (e.g. UVs made by a projection, or all at one point, on a closed mesh)
   std::vector<Fold_explanation> folds; ///< every non-positive UV triangle at the end, with its reason
   std::vector<Winding_defect> winding_defects; ///< every interior vertex at the end whose UV angle sum is not its valence (not locally injective there)
   bool untangle_refused = false;       ///< the untangled map moved more than `max_untangle_change`: it was not used
@@ -257,6 +258,7 @@ struct Snap_report
     num("flips_after_untangling", double(flips_after_untangling));
     num("degenerate_after_untangling", double(degenerate_after_untangling));
     num("folds_forced", double(folds_forced));
+    num("closed_uncut_faces", double(closed_uncut_faces));
     o << "  \"folds\": [";
     for(std::size_t i = 0; i < folds.size(); ++i) {
       const Fold_explanation& f = folds[i];

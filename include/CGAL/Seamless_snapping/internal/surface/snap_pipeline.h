@@ -56,6 +56,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 #include <CGAL/Seamless_snapping/internal/threads.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
+#include <CGAL/Seamless_snapping/internal/untangling/closed_uncut_parts.h>
 #include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
@@ -711,14 +712,22 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
     const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs_near(S.cm, fc, collapsed_cone_pairs_of_x(S), seeds);
     for(int v : vertices_near_collapsed_cones(S.cm, fc, pairs, 2)) target.valence[std::size_t(v)] = 0;
   }
+  // the closed parts without cut edges fold in every map (closed_uncut_parts.h): left alone, faces and windings
+  const std::vector<int> non_positive = non_positive_faces(orientations_of_x(S));
+  const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, non_positive);
+  for(std::size_t f = 0; f < closed.size(); ++f)
+    if(closed[f] > 0) for(int h : fc.halfedge[f]) target.valence[std::size_t(S.cm.target[h])] = 0;
+  std::size_t targets = 0;                                     // non-positive faces to untangle
+  for(int f : non_positive) targets += closed[std::size_t(f)] > 0 ? 0 : 1;
   for(int v = 0; v < S.cm.n_vertices; ++v) wound += wound_at(v) ? 1 : 0;
-  if(snapped.negative + snapped.degenerate + wound == 0) return SUCCESS;
+  if(targets + wound == 0) return SUCCESS;
   const Snap_clock::time_point t = Snap_clock::now();
   report.untangled = true;
   const Variable_rows incidence(S.full, S.x.size());
-  std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution
+  std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution, or in a closed uncut part
+  for(std::size_t f = 0; f < closed.size(); ++f) excluded[f] = closed[f] > 0 ? 1 : 0;
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
-  for(const Fold_explanation& e : prover.explain(non_positive_faces(orientations_of_x(S)), S.x)) excluded[e.face] = e.forced() ? 1 : 0;
+  for(const Fold_explanation& e : prover.explain(non_positive, S.x)) excluded[e.face] |= e.forced() ? 1 : 0;
   const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points, from_3d);
   Untangler untangler(S.cm, S.st, S.full, fc, refs, excluded, target);
   std::vector<double> y = S.x;
@@ -826,6 +835,12 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     }
     if(near.size() > named) message += more_collapsed_pairs_clause(near.size()) + " (Snap_report::collapsed_cone_pairs)";
   };
+  // the closed parts without cut edges, where every map folds (closed_uncut_parts.h), with the size of each
+  const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, faces);
+  for(int size : closed) report.closed_uncut_faces += size > 0 ? 1 : 0;
+  std::vector<int> closed_part_of(std::size_t(S.cm.n_vertices), 0);   // per vertex: the size of its closed uncut part
+  for(std::size_t f = 0; f < closed.size(); ++f)
+    if(closed[f] > 0) for(int h : fc.halfedge[f]) closed_part_of[std::size_t(S.cm.target[h])] = closed[f];
   std::vector<int> forced_face(std::size_t(S.cm.n_vertices), -1);   // per vertex: a face proven non-positive at it
   // the proofs of the faces (this thread) and the windings of the vertices share nothing either writes: on two threads
   // with number_of_threads >= 2
@@ -842,6 +857,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
           for(std::size_t v : e.vertices) if(forced_face[v] < 0) forced_face[v] = int(e.face);
           continue;
         }
+        if(closed[e.face] > 0) { e.message = closed_uncut_part_reason(closed[e.face]); continue; }
         if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
         else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
         else if(report.untangle_budget_spent)
@@ -868,6 +884,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     if(d.forced)
       d.message += "; it is a corner of face " + std::to_string(forced_face[std::size_t(v)]) + ", which the constraints " +
                    "force to be non-positive in every exact solution (folds): no map satisfying them is locally injective here";
+    if(closed_part_of[std::size_t(v)] > 0) d.message += "; " + closed_uncut_part_reason(closed_part_of[std::size_t(v)]);
     name_collapsed_pairs(v, d.message);
     report.winding_defects.push_back(d);
   }
@@ -995,6 +1012,10 @@ std::string success_summary(const Snap_options& opt, const Snap_state<TriangleMe
     summary += "; " + std::to_string(negative) + " negative and " + std::to_string(report.folds.size() - negative) +
                " zero-area UV triangle(s) remain, " + std::to_string(report.folds_forced) +
                " of them proven forced by the constraints (Snap_report::folds)";
+    if(report.closed_uncut_faces > 0)
+      summary += "; " + std::to_string(report.closed_uncut_faces) + " faces lie in closed parts of the surface without cut " +
+                 "edges, whose maps into the plane always fold (Snap_report::closed_uncut_faces): a closed surface is " +
+                 "parametrized with cuts (seams)";
   } else if(report.untangled) {
     summary += "; every UV triangle is positively oriented";
   }
