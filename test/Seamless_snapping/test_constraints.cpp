@@ -541,6 +541,19 @@ static void test_integer_grid_analytic()
     assert(r.message.find("grid-scale") != std::string::npos);
     std::cout << "integer grid: far from integers refused: " << r.message << "\n";
   }
+  // torus of period 2.5: refused at grid scale 1, with the grid scale at which every translation is an integer (2)
+  // named; at that grid scale it snaps
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 2.5);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
+    assert(r.message.find("at grid scale 2 (2 times this one)") != std::string::npos);
+    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
+    assert(r2.status == SS::SUCCESS && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(2.)));
+    std::cout << "integer grid: a finer grid scale named: " << r.message << "\n";
+  }
   // torus of period 2^60 grid units: integer translations beyond what the rows hold exactly: RANGE_EXCEEDED (it was
   // INVALID_INPUT, "farther than 0.001 from integers", for integers), map untouched
   {

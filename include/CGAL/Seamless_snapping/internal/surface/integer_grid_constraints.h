@@ -199,13 +199,38 @@ inline void set_opposite_translation(const Corner_mesh& cm, const Cut_rotations&
   for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
 }
 
+// The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation is within
+// `tolerance` of an integer at both ends (and below 2^52), 0 if none: a map whose grid lines lie at multiples of 2^-k
+// (scaling by a power of two is exact, so these are the translations that grid scale gives). Each k stops at the first
+// translation off the integers.
+inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                               const std::vector<double>& ubar, double tolerance, int max_k = 30)
+{
+  for(int k = 1; k <= max_k; ++k) {
+    bool all = true;
+    for(std::size_t i = 0; i < st.cut_edges.size() && all; ++i) {
+      const int h = cm.edge_halfedge[std::size_t(st.cut_edges[i])];
+      double ta[2], tb[2];
+      translation(cm, st, rot, h, true, ubar, ta);
+      translation(cm, st, rot, h, false, ubar, tb);
+      for(int c = 0; c < 2 && all; ++c) {
+        const double a = std::ldexp(ta[c], k), b = std::ldexp(tb[c], k), r = std::nearbyint(a);
+        all = std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance;
+      }
+    }
+    if(all) return k;
+  }
+  return 0;
+}
+
 // The translation of every cut edge rounded to an integer vector, per halfedge (2 per halfedge, at its source;
 // 0 on the other edges): t(h) maps the chart of face(h) to that of face(opposite(h)), p -> R^k(h) p + t(h).
-// INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end;
+// INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end
+// (with grid_scale > 0, the caller's: naming a finer grid scale at which none is, if one is, finer_grid_exponent());
 // RANGE_EXCEEDED if one is 2^52 grid units or more (beyond the integers that the rows hold).
 inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                  const std::vector<double>& ubar, double tolerance, std::vector<long>& t,
-                                 std::string& message)
+                                 std::string& message, double grid_scale = 0)
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   std::size_t far = 0;
@@ -240,8 +265,17 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
   if(far > 0) {
     message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
               std::to_string(st.cut_edges.size()) + " cut-edge translations are farther than " + format_double(tolerance) +
-              " from integers (first: " + first_far + "); scale the map so that its grid lines fall on integers " +
-              "(grid_scale / --grid-scale, a power of two), or snap without integer_grid_map (--integer-grid)";
+              " from integers (first: " + first_far + "); ";
+    const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance) : 0;
+    if(k > 0) {
+      const std::string finer = format_double(std::ldexp(grid_scale, k));
+      message += "at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation is " +
+                 "within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
+                 "; snap with that grid scale (grid_scale / --grid-scale " + finer + ")";
+    } else {
+      message += "scale the map so that its grid lines fall on integers (grid_scale / --grid-scale, a power of two)";
+    }
+    message += ", or snap without integer_grid_map (--integer-grid)";
     return INVALID_INPUT;
   }
   return SUCCESS;
