@@ -243,10 +243,6 @@ int main(int argc, char** argv)
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())
       proven += "; the snap proved " + std::to_string(snap.folds_forced) + " of them forced by the constraints, so no "
                "untangling removes them, e.g. face " + std::to_string(forced->face) + ": " + forced->message;
-    if(q.status == SS::FOLD_OVERS && snap.closed_uncut_faces > 0)
-      proven += "; " + std::to_string(snap.closed_uncut_faces) + " faces lie in closed parts of the surface without cut " +
-                "edges, where every map into the plane folds: the input's UVs are no parametrization there (a closed " +
-                "surface needs seams), and the untangling leaves such parts alone";
     if(!snap.winding_defects.empty()) {
       const auto forced_windings = std::count_if(snap.winding_defects.begin(), snap.winding_defects.end(),
                                                  [](const SS::Winding_defect& w) { return w.forced; });

@@ -513,7 +513,19 @@ static void test_refusals()
   }
   assert(!negative.empty() && !zero.empty() && SS::is_exact_integer_grid_map(m, uv));
   const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "fold-over", "grid with fold-overs");
-  assert(r.fold_overs == negative && r.zero_area_faces == zero);
+  assert(r.fold_overs == negative && r.zero_area_faces == zero && r.message.find("untangle the map first") != std::string::npos);
+  // a closed surface mapped without cuts (a projection: an exact integer-grid map, trivially, with no seam) folds in
+  // every map: said so instead of the advice to untangle (closed_uncut_parts.h)
+  {
+    Mesh t; UV_map uvt;
+    make_flat_torus(t, uvt, 8, 8);
+    for(halfedge_descriptor h : t.halfedges())
+      if(!t.is_border(h)) put(uvt, h, Point_2(t.point(t.target(h)).x(), t.point(t.target(h)).y()));
+    assert(SS::is_exact_integer_grid_map(t, uvt));
+    const SS::Quad_mesh_report rt = check_refused(t, uvt, 1, SS::FOLD_OVERS, "closed parts of the surface without cut edges",
+                                                  "torus projected onto a plane");
+    assert(rt.message.find("untangle the map first") == std::string::npos);
+  }
   const SS::Quad_valences qv = SS::quad_valences(m, uv);
   assert(qv.status == SS::FOLD_OVERS && qv.fold_overs == negative && qv.zero_area_faces == zero && qv.valence.empty());
   // a grid scale that is not a power of two

@@ -38,6 +38,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/quad_valences.h>
 #include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
+#include <CGAL/Seamless_snapping/internal/untangling/closed_uncut_parts.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
 
 #include <array>
@@ -92,6 +93,25 @@ inline Map_facts map_facts(const Corner_mesh& cm)
 // the end of the FOLD_OVERS message (a caller that untangled already, as seamless_quad, replaces it)
 constexpr const char* untangle_advice = "; untangle the map first (the snap with untangle(true)), which removes such faces "
                                         "unless the constraints force them (Snap_report::folds says which)";
+
+// The end of the FOLD_OVERS message for the faces `faces`: untangle_advice, or where some of them lie in closed parts
+// of the surface without cut edges, which every map into the plane folds (closed_uncut_parts.h), that
+inline std::string fold_overs_advice(const Corner_mesh& cm, const std::vector<int>& faces)
+{
+  Seam_topology st;
+  std::string ignored;
+  if(compute_seam_topology(cm, {}, st, ignored) == SUCCESS) {
+    const std::vector<int> closed = closed_uncut_part_sizes(cm, st, Face_corners(cm), faces);
+    std::size_t n = 0;
+    for(int f : faces) n += closed[std::size_t(f)] > 0 ? 1 : 0;
+    if(n > 0)
+      return "; " + std::to_string(n) + " of them lie in closed parts of the surface without cut edges, where every map "
+             "into the plane folds (were all its triangles positive, its image would be open and compact in the plane): "
+             "the UVs are no parametrization there, and no untangling helps; a closed surface is parametrized with cuts "
+             "(seams)";
+  }
+  return untangle_advice;
+}
 
 // The collapsed cone pairs within coincident_cone_rings face rings of vertex v (winding_defects.h, cone_merging.h's
 // collapsed_cone_pairs() on the map's own integer translations) as a clause of a message, or "" if none: the nearest
@@ -178,9 +198,11 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   r.fold_overs.assign(folds.negative.begin(), folds.negative.end());
   r.zero_area_faces.assign(folds.degenerate.begin(), folds.degenerate.end());
   if(folds.blocks_quads()) {
+    std::vector<int> blocking = folds.negative;
+    blocking.insert(blocking.end(), folds.degenerate.begin(), folds.degenerate.end());
     r.message = "the map has " + folds.describe() + (folds.collinear.size() < folds.degenerate.size() ?
                 "; " + std::to_string(folds.degenerate.size() - folds.collinear.size()) + " of them with two corners at one UV point" : "") +
-                ": its integer isolines do not form quads there" + untangle_advice;
+                ": its integer isolines do not form quads there" + fold_overs_advice(cm, blocking);
     return FOLD_OVERS;
   }
   collinear = folds.collinear;
