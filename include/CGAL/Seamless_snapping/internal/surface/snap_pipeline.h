@@ -706,15 +706,15 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   // (collapsed_cone_pairs(), those near the wrongly wound vertices and the vertices of non-positive faces) are not
   // targets: no move separates the cones
   std::size_t wound = 0;
+  const std::vector<int> non_positive = non_positive_faces(orientations_of_x(S));
   if(opt.integer_grid_map) {
     std::vector<int> seeds;
     for(int v = 0; v < S.cm.n_vertices; ++v) if(wound_at(v)) seeds.push_back(v);
-    for(int f : non_positive_faces(orientations_of_x(S))) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
+    for(int f : non_positive) for(int h : fc.halfedge[std::size_t(f)]) seeds.push_back(S.cm.target[h]);
     const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs_near(S.cm, fc, collapsed_cone_pairs_of_x(S), seeds);
     for(int v : vertices_near_collapsed_cones(S.cm, fc, pairs, 2)) target.valence[std::size_t(v)] = 0;
   }
   // the closed parts without cut edges fold in every map (closed_uncut_parts.h): left alone, faces and windings
-  const std::vector<int> non_positive = non_positive_faces(orientations_of_x(S));
   const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, non_positive);
   for(std::size_t f = 0; f < closed.size(); ++f)
     if(closed[f] > 0) for(int h : fc.halfedge[f]) target.valence[std::size_t(S.cm.target[h])] = 0;
