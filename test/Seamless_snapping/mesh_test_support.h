@@ -159,6 +159,13 @@ static inline bool shared_obj_files_or_skip(const char* what, std::vector<fs::pa
   return true;
 }
 
+// every corner's UV: the x and y of its vertex (a projection onto the plane z = 0: one UV per vertex, no cut edge)
+static inline void uv_from_xy(const Mesh& m, UV_map uv)
+{
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x(), m.point(m.target(h)).y()));
+}
+
 // an n x n grid of unit squares in the plane z = 0, two triangles per square: split along the
 // diagonal (i, j)-(i+1, j+1) when `main_diagonal`, else along (i+1, j)-(i, j+1). Returns the
 // vertices, vertex (i, j) at index j (n + 1) + i.

@@ -1130,8 +1130,7 @@ static void test_closed_uncut_parts()
   const int n = 8;
   Mesh m0; UV_map uv0;
   make_flat_torus(m0, uv0, n, n);
-  for(halfedge_descriptor h : m0.halfedges())
-    if(!m0.is_border(h)) put(uv0, h, Point_2(m0.point(m0.target(h)).x(), m0.point(m0.target(h)).y()));
+  uv_from_xy(m0, uv0);
   const std::pair<std::size_t, std::size_t> np = non_positive(m0, uv0);
   assert(np.first + np.second > 0);                    // as the theorem says
   for(const bool untangle : {false, true}) {
@@ -1147,8 +1146,7 @@ static void test_closed_uncut_parts()
   // a disk (grid of 6 x 6 squares) mapped by the same kind of projection, with a vertex dragged across a neighbour
   Mesh d; UV_map uvd = uv_of(d);
   const std::vector<vertex_descriptor> vs = triangulated_grid(d, 6, true);
-  for(halfedge_descriptor h : d.halfedges())
-    if(!d.is_border(h)) put(uvd, h, Point_2(d.point(d.target(h)).x(), d.point(d.target(h)).y()));
+  uv_from_xy(d, uvd);
   move_vertex_uv(d, uvd, vs[3 * 7 + 3], Point_2(4.4, 3.3));
   assert(non_positive(d, uvd).first > 0);
   const SS::Snap_report rd = SS::snap_seamless_parameterization(d, uvd, SS::parameters::untangle(true));

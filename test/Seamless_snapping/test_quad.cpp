@@ -415,8 +415,7 @@ static void test_collapsed_faces()
     m.add_face(c, C, D);
     m.add_face(A, c, D);
     UV_map uv = uv_of(m);
-    for(halfedge_descriptor h : m.halfedges())
-      if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x(), m.point(m.target(h)).y()));
+    uv_from_xy(m, uv);
     assert(SS::is_exact_integer_grid_map(m, uv));
     const std::string what = "collapsed face, middle corner at (" + std::to_string(t).substr(0, 3) + ", " +
                              std::to_string(t).substr(0, 3) + ")";
@@ -519,8 +518,7 @@ static void test_refusals()
   {
     Mesh t; UV_map uvt;
     make_flat_torus(t, uvt, 8, 8);
-    for(halfedge_descriptor h : t.halfedges())
-      if(!t.is_border(h)) put(uvt, h, Point_2(t.point(t.target(h)).x(), t.point(t.target(h)).y()));
+    uv_from_xy(t, uvt);
     assert(SS::is_exact_integer_grid_map(t, uvt));
     const SS::Quad_mesh_report rt = check_refused(t, uvt, 1, SS::FOLD_OVERS, "closed parts of the surface without cut edges",
                                                   "torus projected onto a plane");

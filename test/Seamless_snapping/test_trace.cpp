@@ -86,8 +86,7 @@ static void test_grid()
   Mesh m;
   std::vector<vertex_descriptor> vs = triangulated_grid(m, n, true);
   UV_map uv = uv_of(m);
-  for(halfedge_descriptor h : m.halfedges())
-    if(!m.is_border(h)) { const Point_3& p = m.point(target(h, m)); put(uv, h, Point_2(p.x(), p.y())); }
+  uv_from_xy(m, uv);
   Tracer tracer(m, uv);
   assert(tracer.status() == SS::SUCCESS);
   auto corner_of = [&](vertex_descriptor v) {
@@ -621,8 +620,7 @@ static void test_collapsed_face()
     m.add_face(c, C, D);
     m.add_face(A, c, D);
     UV_map uv = uv_of(m);
-    for(halfedge_descriptor h : m.halfedges())
-      if(!m.is_border(h)) put(uv, h, Point_2(m.point(target(h, m)).x(), m.point(target(h, m)).y()));
+    uv_from_xy(m, uv);
     Tracer tracer(m, uv);
     assert(tracer.status() == SS::SUCCESS);
     const Trace up = tracer.trace_from_point(below, CGAL::Gmpq(3, 2), CGAL::Gmpq(1, 4), SS::Trace_direction::PLUS_V);
