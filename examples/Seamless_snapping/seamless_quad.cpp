@@ -55,19 +55,17 @@ static const char* help_text =
   "package's snap with integer_grid_map(true), which first removes the map's fold-overs inside the\n"
   "space of maps with the same exact constraints: untangle(true), and merges the +-90 degree cone pairs\n"
   "that the map's integer translations put onto one integer point: merge_cone_pairs(true)), then\n"
-  "extracts its quad mesh: the\n"
-  "vertices are the integer points of the map, the edges the unit segments of its integer isolines,\n"
-  "the faces its unit cells, all decided exactly. The result is verified before it is written: every\n"
-  "face a quad, manifold, closed if the input is, Euler characteristic and number of quads (= the exact\n"
-  "UV area) those of the map, irregular vertices exactly the cones.\n"
+  "extracts its quad mesh: the vertices are the integer points of the map, the edges the unit segments\n"
+  "of its integer isolines, the faces its unit cells, all decided exactly. The result is verified\n"
+  "before it is written: every face a quad, manifold, closed if the input is, Euler characteristic and\n"
+  "number of quads (= the exact UV area) those of the map, irregular vertices exactly the cones.\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
   "(scale it with --grid-scale), a map left with fold-overs or zero-area UV triangles with two corners\n"
-  "at one point (listed, with the reason the constraints force them in the snap report's \"folds\";\n"
-  "a zero-area triangle with three distinct collinear corners is collapsed onto its long side), a cone\n"
-  "of 90 degrees\n"
-  "(valence 1: no quad mesh has it), a grid too coarse for the surface (cells that wrap around or share\n"
-  "more than a side: use a larger --grid-scale).\n"
+  "at one point (listed, with the reason the constraints force them in the snap report's \"folds\"; a\n"
+  "zero-area triangle with three distinct collinear corners is collapsed onto its long side), a cone of\n"
+  "90 degrees (valence 1: no quad mesh has it), a grid too coarse for the surface (cells that wrap\n"
+  "around or share more than a side: use a larger --grid-scale).\n"
   "\n"
   "Options:\n"
   "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
@@ -232,8 +230,8 @@ int main(int argc, char** argv)
   if(q.status != SS::SUCCESS) {
     // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
     std::string why = q.message, proven;
-    const std::string advice = SS::internal::quad::untangle_advice;   // the extraction's advice, for callers that did not untangle
-    if(q.status == SS::FOLD_OVERS && untangle && why.size() >= advice.size() &&
+    const std::string advice = "; " + q.advice;   // the extraction's advice to untangle, for callers that did not
+    if(q.status == SS::FOLD_OVERS && untangle && !q.advice.empty() && why.size() >= advice.size() &&
        why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
       why.resize(why.size() - advice.size());
       proven = "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) + " negative and " +

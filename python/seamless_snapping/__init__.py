@@ -300,7 +300,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_fai
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
     integer-grid map, a cone of valence 1, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
     zero-area UV triangles with two corners at one point, listed in report["fold_overs"] and
-    report["zero_area_faces"]), "RANGE_EXCEEDED". A zero-area UV triangle with three distinct (collinear) corners is
+    report["zero_area_faces"]; report["advice"] says to untangle first where that can remove them), "RANGE_EXCEEDED". A zero-area UV triangle with three distinct (collinear) corners is
     collapsed onto its long side (listed in report["zero_area_faces"] on success too).
     Cells cut by a border that is not on an integer isoline are left out: report["incomplete_cells"].
     """

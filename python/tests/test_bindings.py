@@ -661,6 +661,7 @@ def test_extract_quad_mesh_refusals():
     QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV, raise_on_failure=False)
     assert QV is None and QF is None and r["status"] == "FOLD_OVERS" and len(r["fold_overs"]) > 0
     assert "fold-overs" in r["message"]
+    assert r["advice"].startswith("untangle the map first") and r["message"].endswith("; " + r["advice"])
 
 
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),

@@ -512,7 +512,8 @@ static void test_refusals()
   }
   assert(!negative.empty() && !zero.empty() && SS::is_exact_integer_grid_map(m, uv));
   const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::FOLD_OVERS, "fold-over", "grid with fold-overs");
-  assert(r.fold_overs == negative && r.zero_area_faces == zero && r.message.find("untangle the map first") != std::string::npos);
+  assert(r.fold_overs == negative && r.zero_area_faces == zero && r.advice.find("untangle the map first") == 0 &&
+         r.message.size() > r.advice.size() && r.message.compare(r.message.size() - r.advice.size(), r.advice.size(), r.advice) == 0);
   // a closed surface mapped without cuts (a projection: an exact integer-grid map, trivially, with no seam) folds in
   // every map: said so instead of the advice to untangle (closed_uncut_parts.h)
   {
@@ -522,7 +523,7 @@ static void test_refusals()
     assert(SS::is_exact_integer_grid_map(t, uvt));
     const SS::Quad_mesh_report rt = check_refused(t, uvt, 1, SS::FOLD_OVERS, "closed parts of the surface without cut edges",
                                                   "torus projected onto a plane");
-    assert(rt.message.find("untangle the map first") == std::string::npos);
+    assert(rt.message.find("untangle the map first") == std::string::npos && rt.advice.empty());
   }
   const SS::Quad_valences qv = SS::quad_valences(m, uv);
   assert(qv.status == SS::FOLD_OVERS && qv.fold_overs == negative && qv.zero_area_faces == zero && qv.valence.empty());

@@ -37,6 +37,7 @@ struct Quad_mesh_report
 {
   Status status = INVALID_INPUT;    ///< `SUCCESS`, or why nothing was written: `INVALID_INPUT`, `FOLD_OVERS`, `RANGE_EXCEEDED`, `EXACTNESS_CHECK_FAILED`
   std::string message;              ///< what was done, or why not (naming the edge, vertex, face or cell)
+  std::string advice;               ///< with `FOLD_OVERS`, where untangling can remove the faces that block the mesh: that advice (untangle the map first: the snap with `untangle(true)`), also the end of `message`; empty otherwise (e.g. the faces lie in closed parts of the surface without cut edges, where every map folds: `message` says so)
 
   /// \name The input map
   /// @{
@@ -95,6 +96,7 @@ struct Quad_mesh_report
     if(uv_area.denominator() != 1) area << "/" << uv_area.denominator();
     str("status", status_name(status));
     str("message", message);
+    str("advice", advice);
     num("faces", double(faces)); num("input_euler_characteristic", input_euler_characteristic);
     num("input_boundary_loops", double(input_boundary_loops)); num("cones", double(cones));
     list("fold_overs", fold_overs); list("zero_area_faces", zero_area_faces);

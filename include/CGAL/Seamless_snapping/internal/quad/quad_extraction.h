@@ -90,13 +90,13 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   return facts;
 }
 
-// the end of the FOLD_OVERS message (a caller that untangled already, as seamless_quad, replaces it)
-constexpr const char* untangle_advice = "; untangle the map first (the snap with untangle(true)), which removes such faces "
+// Quad_mesh_report::advice with FOLD_OVERS, where untangling can remove the faces
+constexpr const char* untangle_advice = "untangle the map first (the snap with untangle(true)), which removes such faces "
                                         "unless the constraints force them (Snap_report::folds says which)";
 
-// The end of the FOLD_OVERS message for the faces `faces`: untangle_advice, or where some of them lie in closed parts
-// of the surface without cut edges, which every map into the plane folds (closed_uncut_parts.h), that
-inline std::string fold_overs_advice(const Corner_mesh& cm, const std::vector<int>& faces)
+// Where some of the faces `faces` lie in closed parts of the surface without cut edges, which every map into the plane
+// folds (closed_uncut_parts.h), that reason as the end of the FOLD_OVERS message; else "" (untangling may help)
+inline std::string closed_uncut_reason(const Corner_mesh& cm, const std::vector<int>& faces)
 {
   Seam_topology st;
   std::string ignored;
@@ -110,7 +110,7 @@ inline std::string fold_overs_advice(const Corner_mesh& cm, const std::vector<in
              "the UVs are no parametrization there, and no untangling helps; a closed surface is parametrized with cuts "
              "(seams)";
   }
-  return untangle_advice;
+  return std::string();
 }
 
 // The collapsed cone pairs within coincident_cone_rings face rings of vertex v (winding_defects.h, cone_merging.h's
@@ -202,7 +202,10 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
     blocking.insert(blocking.end(), folds.degenerate.begin(), folds.degenerate.end());
     r.message = "the map has " + folds.describe() + (folds.collinear.size() < folds.degenerate.size() ?
                 "; " + std::to_string(folds.degenerate.size() - folds.collinear.size()) + " of them with two corners at one UV point" : "") +
-                ": its integer isolines do not form quads there" + fold_overs_advice(cm, blocking);
+                ": its integer isolines do not form quads there";
+    const std::string closed = closed_uncut_reason(cm, blocking);
+    if(closed.empty()) r.advice = untangle_advice;
+    r.message += closed.empty() ? "; " + r.advice : closed;
     return FOLD_OVERS;
   }
   collinear = folds.collinear;
