@@ -593,7 +593,26 @@ static void test_integer_grid_analytic()
     if(r.status != SS::INFEASIBLE) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
     assert(r.status == SS::INFEASIBLE && uv_bits(m, uv) == bits);
     assert(r.message.find("cone at vertex 0") != std::string::npos && r.message.find("(0.5, 0)") != std::string::npos);
+    // the grid scale at which the cone is on an integer point is named (the translations are integers at scale 1)
+    assert(r.message.find("at grid scale 2 (2 times this one) every translation and every cone") != std::string::npos);
+    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
+    assert(r2.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(2.)));
     std::cout << "integer grid: half-integer cone refused: " << r.message << "\n";
+  }
+  // half-turn cone at (0.25, 0), translation (0.5, 0): the translations are integers at grid scale 2, the cone only at 4,
+  // which is the one named
+  {
+    Mesh m; UV_map uv;
+    make_half_turn_cone(m, uv, 0.25, 0);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits && r.message.find("not near an integer-grid map") != std::string::npos);
+    assert(r.message.find("at grid scale 4 (4 times this one)") != std::string::npos);
+    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
+    assert(r2.status == SS::INFEASIBLE && uv_bits(m, uv) == bits && r2.message.find("at grid scale 4 (2 times this one)") != std::string::npos);
+    const SS::Snap_report r4 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(4.));
+    assert(r4.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
+    std::cout << "integer grid: a finer grid scale named for a cone: " << r.message << "\n";
   }
   // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)
   {

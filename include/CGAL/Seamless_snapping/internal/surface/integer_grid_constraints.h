@@ -159,6 +159,24 @@ inline Integer_grid_counts count_integer_structure(const Corner_mesh& cm, const 
   return n;
 }
 
+// true iff every corner of every cone of the field is within `tolerance` of an integer point below 2^52 at 2^exponent
+// times the grid of x (exponent >= 0; scaling by a power of two is exact)
+inline bool cones_near_integers(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                const std::vector<double>& x, double tolerance, int exponent = 0)
+{
+  auto near = [&](double a) {
+    a = std::ldexp(a, exponent);
+    return std::fabs(a) < 0x1p52 && std::fabs(a - std::nearbyint(a)) <= tolerance;
+  };
+  const std::vector<int> K = field_rotation_sums(cm, st, rot);
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    if(cm.is_border_halfedge(h) || K[cm.target[h]] <= 0) continue;
+    const int s = st.sector_of[h];
+    if(!near(x[2 * s]) || !near(x[2 * s + 1])) return false;
+  }
+  return true;
+}
+
 // true iff every cut-edge translation (at both ends) and every corner of every cone of the field is
 // within `tolerance` of an integer (the input "looks like" an integer-grid map)
 inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
@@ -171,13 +189,7 @@ inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& s
       translation(cm, st, rot, cm.edge_halfedge[e], front, x, t);
       if(!near(t[0]) || !near(t[1])) return false;
     }
-  const std::vector<int> K = field_rotation_sums(cm, st, rot);
-  for(int h = 0; h < cm.n_halfedges; ++h) {
-    if(cm.is_border_halfedge(h) || K[cm.target[h]] <= 0) continue;
-    const int s = st.sector_of[h];
-    if(!near(x[2 * s]) || !near(x[2 * s + 1])) return false;
-  }
-  return true;
+  return cones_near_integers(cm, st, rot, x, tolerance);
 }
 
 struct Integer_grid_rows_result
@@ -199,10 +211,11 @@ inline void set_opposite_translation(const Corner_mesh& cm, const Cut_rotations&
   for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
 }
 
-// The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation is within
-// `tolerance` of an integer at both ends (and below 2^52), 0 if none: a map whose grid lines lie at multiples of 2^-k
-// (scaling by a power of two is exact, so these are the translations that grid scale gives). Each k stops at the first
-// translation off the integers.
+// The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation (at both
+// ends) and every corner of every cone of the field is within `tolerance` of an integer below 2^52, 0 if none: a map
+// whose grid lines lie at multiples of 2^-k (scaling by a power of two is exact, so these are the values that grid scale
+// gives; the half-integer points of 180 degree cones, for one, are integers at twice the grid scale). Each k stops at
+// the first translation off the integers.
 inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                const std::vector<double>& ubar, double tolerance, int max_k = 30)
 {
@@ -218,15 +231,29 @@ inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, c
         all = std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance;
       }
     }
-    if(all) return k;
+    if(all && cones_near_integers(cm, st, rot, ubar, tolerance, k)) return k;
   }
   return 0;
+}
+
+// The end of a refusal of the integer-grid checks at `grid_scale` (the caller's, > 0): where finer_grid_exponent() finds
+// a finer grid scale, that one named ("; at grid scale ..."); else `otherwise`
+inline std::string finer_grid_advice(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                     const std::vector<double>& ubar, double tolerance, double grid_scale,
+                                     const std::string& otherwise)
+{
+  const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance) : 0;
+  if(k == 0) return otherwise;
+  const std::string finer = format_double(std::ldexp(grid_scale, k));
+  return "; at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation and every " +
+         "cone is within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
+         "; snap with that grid scale (grid_scale / --grid-scale " + finer + ")";
 }
 
 // The translation of every cut edge rounded to an integer vector, per halfedge (2 per halfedge, at its source;
 // 0 on the other edges): t(h) maps the chart of face(h) to that of face(opposite(h)), p -> R^k(h) p + t(h).
 // INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end
-// (with grid_scale > 0, the caller's: naming a finer grid scale at which none is, if one is, finer_grid_exponent());
+// (with grid_scale > 0, the caller's: naming a finer grid scale at which none is, if one is, finer_grid_advice());
 // RANGE_EXCEEDED if one is 2^52 grid units or more (beyond the integers that the rows hold).
 inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                  const std::vector<double>& ubar, double tolerance, std::vector<long>& t,
@@ -265,17 +292,10 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
   if(far > 0) {
     message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
               std::to_string(st.cut_edges.size()) + " cut-edge translations are farther than " + format_double(tolerance) +
-              " from integers (first: " + first_far + "); ";
-    const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance) : 0;
-    if(k > 0) {
-      const std::string finer = format_double(std::ldexp(grid_scale, k));
-      message += "at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation is " +
-                 "within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
-                 "; snap with that grid scale (grid_scale / --grid-scale " + finer + ")";
-    } else {
-      message += "scale the map so that its grid lines fall on integers (grid_scale / --grid-scale, a power of two)";
-    }
-    message += ", or snap without integer_grid_map (--integer-grid)";
+              " from integers (first: " + first_far + ")" +
+              finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "; scale the map so that its grid lines fall on "
+                                "integers (grid_scale / --grid-scale, a power of two)") +
+              ", or snap without integer_grid_map (--integer-grid)";
     return INVALID_INPUT;
   }
   return SUCCESS;
@@ -340,13 +360,14 @@ inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, c
 // 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
 // grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): the vertices of the paths along
 // which cone_separation.h moved cones (its ends, and cones on the point that it passes): their input position is not
-// compared with the point the translations force.
+// compared with the point the translations force. `grid_scale` (> 0: the caller's): a cone refused names a finer grid
+// scale at which every translation and cone is near an integer, if there is one (finer_grid_advice()).
 // On failure nothing is appended.
 inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
                                     int rhs_shift, double tolerance, Constraint_rows& rows,
                                     Integer_grid_rows_result& result, std::string& message,
-                                    const std::vector<char>& moved_cones = std::vector<char>())
+                                    const std::vector<char>& moved_cones = std::vector<char>(), double grid_scale = 0)
 {
   result = Integer_grid_rows_result();
   std::vector<long> isoline(cm.n_edges, 0);
@@ -401,7 +422,8 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     if(num[0] % 2 != 0 || num[1] % 2 != 0) {
       message = "cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * K) + " degrees): the rounded " +
                 "transitions around it have the fixed point " + point_name(num[0] / 2., num[1] / 2.) + " (frame of face " +
-                std::to_string(cm.face[g0]) + "), not an integer point; nothing was written";
+                std::to_string(cm.face[g0]) + "), not an integer point" +
+                finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "") + "; nothing was written";
       return INFEASIBLE;
     }
     const int s = st.sector_of[g0];
@@ -410,7 +432,7 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       message = "cone at vertex " + std::to_string(v) + " sits at " + point_name(ubar[2 * s], ubar[2 * s + 1]) +
                 " (face " + std::to_string(cm.face[g0]) + ") but its rounded transitions force it to (" +
                 std::to_string(num[0] / 2) + ", " + std::to_string(num[1] / 2) + "), farther than " + format_double(tolerance) +
-                "; nothing was written";
+                finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "") + "; nothing was written";
       return INFEASIBLE;
     }
     result.cones.push_back(v);

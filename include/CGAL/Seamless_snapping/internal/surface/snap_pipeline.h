@@ -391,7 +391,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   if(opt.integer_grid_map) {
     Integer_grid_rows_result igm;
     s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, translations, -(S.cm.uv_exponent + S.grid_exponent),
-                              opt.integer_grid_tolerance, S.full, igm, message, moved);
+                              opt.integer_grid_tolerance, S.full, igm, message, moved, opt.grid_scale);
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
       message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
