@@ -52,8 +52,8 @@
 // The independent exact check (Gmpq unfolding along the face strip) is in connection_test_utils.h.
 //
 // Bit-for-bit checks, none against stored bits: idempotence (the result snapped again), an empty constraint range
-// against none, an exact input returned as it is, grid_scale(4) against the result / 4 and pinned results at scales
-// 2^j against scale 1 (scale covariance), pinned corners keeping their input bits, refusals leaving the map untouched;
+// against none, an exact input returned as it is, grid_scale(4) against the result / 4, pinned and untangled results at
+// scales 2^j against scale 1 (scale covariance), pinned corners keeping their input bits, refusals leaving the map untouched;
 // each compares outputs computed in this run from the same input bits. The snap uses libm only in decisions far from
 // their thresholds and no solver whose rounding depends on the CPU, so they hold on every machine (the orbifold inputs
 // made here do differ between CPUs: CTest also runs other_rounding__test_constraints, see test_arguments.h).
@@ -1212,6 +1212,25 @@ static void test_untangling_analytic()
                                  SS::parameters::integer_grid_map(true).max_untangle_change(1e-3));
   assert(r3.status == SS::SUCCESS && r3.untangle_refused && r3.flips_after_repair > 0 && !r3.folds.empty());
   assert(r3.message.find("max_untangle_change") != std::string::npos);
+  // scale covariance: the input times 2^j untangles and snaps to the result at scale 1 times 2^j, bit for bit, in both
+  // modes (integer grid at grid scale 2^-j): the untangling's energies are relative to the input's own triangles, its
+  // proximity term to the map's scale, so every step commutes with powers of two (a relation, both snapped in this run)
+  for(bool igm : {true, false}) {
+    Mesh a = m0; UV_map uva = uv_of(a);
+    const SS::Snap_report ra = SS::snap_seamless_parameterization(a, uva, SS::parameters::integer_grid_map(igm).untangle(true));
+    assert(ra.status == SS::SUCCESS && ra.untangled && ra.flips_after_repair == 0);
+    for(int j : {-9, 13}) {
+      Mesh b = m0; UV_map uvb = uv_of(b);
+      for(halfedge_descriptor h : b.halfedges())
+        put(uvb, h, Point_2(std::ldexp(get(uvb, h).x(), j), std::ldexp(get(uvb, h).y(), j)));
+      const SS::Snap_report rb = SS::snap_seamless_parameterization(b, uvb, SS::parameters::integer_grid_map(igm)
+                                                                       .grid_scale(std::ldexp(1., -j)).untangle(true));
+      assert(rb.status == SS::SUCCESS && rb.untangled && rb.untangle_moved_sectors == ra.untangle_moved_sectors);
+      for(halfedge_descriptor h : b.halfedges())
+        assert(b.is_border(h) || (get(uvb, h).x() == std::ldexp(get(uva, h).x(), j) &&
+                                  get(uvb, h).y() == std::ldexp(get(uva, h).y(), j)));
+    }
+  }
 
   // a triangle whose three corners are pinned onto one line: degenerate in every map with these pins (proven:
   // RIGID_TRIANGLE); the triangles its moved corner folds are untangled around it
