@@ -15,7 +15,7 @@
 //   trace: bear orbifold, input   terminates; inconsistencies are reported by kind
 //   trace: cut invariance         the snapped bear with 4 and 12 face rings around a cone re-charted by a quarter
 //                                 turn (the cut graph moves): the same separatrices, ends, nodes, arcs, patch sizes
-//                                 and refined-mesh points, bit for bit
+//                                 and refined-mesh points, bit for bit; the map times 2^j: the same, sizes times 2^j
 //   trace: shared data, snapped   the same properties on every snapped shared map without fold-overs
 //                                 (files up to 1 MB; up to 600 kB and no bear with --sanitizer-subset); the maps
 //                                 with fold-overs (the knight) untangled first: fold-free, a valid layout; in
@@ -490,6 +490,19 @@ static void test_cut_invariance()
     std::printf("trace: bear orbifold Square, %d face rings re-charted (%zu new cut edges): the same %zu separatrices, "
                 "%zu patches, %zu points of the refined mesh, bit for bit\n", rings, new_cuts, after.separatrices,
                 after.sizes.size(), after.points.size());
+  }
+  // scale covariance: the map times 2^j (exact) has the same separatrices, ends, nodes and arcs, its patches the sizes
+  // times 2^j, its refined mesh the same 3D points, bit for bit
+  for(int j : {-20, 40}) {
+    Mesh m = input;
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges())
+      put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
+    Summary expected = before;
+    const CGAL::Gmpq factor(std::ldexp(1., j));
+    for(std::pair<CGAL::Gmpq, CGAL::Gmpq>& s : expected.sizes) { s.first *= factor; s.second *= factor; }
+    assert(summary(m, uv, "bear, scaled by 2^" + std::to_string(j)) == expected);
+    std::printf("trace: bear orbifold Square, UVs times 2^%d: the same graph, patch sizes times 2^%d, the same 3D points\n", j, j);
   }
 }
 
