@@ -243,8 +243,8 @@ inline std::string finer_grid_advice(const Corner_mesh& cm, const Seam_topology&
                                      const std::string& otherwise)
 {
   const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance) : 0;
-  if(k == 0) return otherwise;
-  const std::string finer = format_double(std::ldexp(grid_scale, k));
+  if(k == 0 || !std::isfinite(std::ldexp(grid_scale, k))) return otherwise;   // (no grid scale beyond the doubles named)
+  const std::string finer = format_double(std::ldexp(grid_scale, k), 17);   // a power of two, read back exactly
   return "; at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation and every " +
          "cone is within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
          "; snap with that grid scale (grid_scale / --grid-scale " + finer + ")";
