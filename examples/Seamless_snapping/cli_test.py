@@ -105,6 +105,8 @@ out6, vval6 = os.path.join(work, "far.obj"), os.path.join(work, "far.vval")
 rc, text = run(far, out6, "--integer-grid", "--vval", vval6)
 check(rc == 1 and not os.path.exists(out6) and not os.path.exists(vval6),
       "--vval on a map that is not near an IGM: exit 1, nothing written: %d %s" % (rc, text))
+check("after snapping" not in text and "max change" not in text,
+      "a refused snap prints no change and no counts after snapping (nothing was snapped): %s" % text)
 
 # --vval next to fold-overs (kept with --no-untangle): refused (FOLD_OVERS, the faces listed), neither OUT.obj nor
 # the VVAL file written

@@ -101,6 +101,7 @@ for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, 
     out = os.path.join(work, "refused.obj")
     rc, text = run(src, out, "--report", report, *args)
     check(rc == 1 and words in text and not os.path.exists(out), "refused (%s): exit %d %s" % (words, rc, text))
+    check((where == "snap") == ("after snapping" not in text), "refused (%s): counts after snapping only if it snapped" % words)
     r = json.load(open(report))
     check(r[where]["status"] != "SUCCESS", "refused (%s): the report says so" % words)
     if words == "FOLD_OVERS":

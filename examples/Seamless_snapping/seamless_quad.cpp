@@ -193,10 +193,13 @@ int main(int argc, char** argv)
   const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle)
                                                                                .merge_cone_pairs(merge).grid_scale(grid_scale)
                                                                                .number_of_threads(threads));
-  if(!quiet)
+  if(!quiet && snap.status == SS::SUCCESS)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "
                 "snapping: %zu / %zu\n", SS::status_name(snap.status), snap.total_ms, snap.faces, snap.cut_edges,
                 snap.field_cones, snap.flips_after_repair, snap.degenerate_after_repair);
+  else if(!quiet)                                       // nothing was snapped: no counts after it (the reason follows)
+    std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones\n", SS::status_name(snap.status), snap.total_ms,
+                snap.faces, snap.cut_edges, snap.field_cones);
   if(!quiet && !snap.merged_cone_pairs.empty()) {
     std::printf("merged %zu cone pair(s) that the map's integer translations put onto one integer point (vertices",
                 snap.merged_cone_pairs.size());

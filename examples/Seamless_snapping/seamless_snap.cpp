@@ -385,15 +385,18 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                 report.message.empty() ? "" : ": ", one_line(report.message).c_str());
     std::printf("  %zu faces, %zu cut edges, %zu cones, %zu sectors (%zu constrained), %zu align edges\n",
                 report.faces, report.cut_edges, report.cones, report.sectors, report.constrained_sectors, report.align_edges);
-    std::printf("  %s system: %zu rows x %zu columns, %zu free, %zu implied, max |IRREF entry| %s\n",
-                report.reduced ? "node" : "full", report.system_rows, report.system_columns,
-                report.free_variables, report.implied_variables, report.max_abs_coefficient.c_str());
-    std::printf("  relative to the UV diagonal %.6g: input violation %.3g, max change %.3g, mean change %.3g\n",
-                report.uv_diagonal, report.max_input_violation, report.max_change, report.mean_change);
-    std::printf("  UV triangles negative / zero-area: input %zu / %zu, after snapping %zu / %zu, after repair %zu / %zu;"
-                " introduced and left %zu / %zu\n", report.flips_before, report.degenerate_before, report.flips_after,
-                report.degenerate_after, report.flips_after_repair, report.degenerate_after_repair,
-                report.flips_unrepaired, report.degenerate_unrepaired);
+    if(report.system_rows > 0)           // built (a refusal may come before)
+      std::printf("  %s system: %zu rows x %zu columns, %zu free, %zu implied, max |IRREF entry| %s\n",
+                  report.reduced ? "node" : "full", report.system_rows, report.system_columns,
+                  report.free_variables, report.implied_variables, report.max_abs_coefficient.c_str());
+    if(report.status == SS::SUCCESS) {   // after a refusal nothing was snapped: no change, no counts after it
+      std::printf("  relative to the UV diagonal %.6g: input violation %.3g, max change %.3g, mean change %.3g\n",
+                  report.uv_diagonal, report.max_input_violation, report.max_change, report.mean_change);
+      std::printf("  UV triangles negative / zero-area: input %zu / %zu, after snapping %zu / %zu, after repair %zu / %zu;"
+                  " introduced and left %zu / %zu\n", report.flips_before, report.degenerate_before, report.flips_after,
+                  report.degenerate_after, report.flips_after_repair, report.degenerate_after_repair,
+                  report.flips_unrepaired, report.degenerate_unrepaired);
+    }
     if(report.untangled)
       std::printf("  untangling: negative / zero-area %zu / %zu -> %zu / %zu (floating point, %d ring(s), %zu sectors moved, "
                   "max %.3g / RMS %.3g grid cells beyond the snap's %.3g) -> %zu / %zu after its exact snap (%.1f ms)\n",
