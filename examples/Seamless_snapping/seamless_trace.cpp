@@ -25,13 +25,11 @@
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 typedef CGAL::Simple_cartesian<double>                     K;
@@ -45,6 +43,37 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   const char* usage = "usage: seamless_trace IN.obj [--weld | --no-weld] [--json FILE] [--svg FILE] [--layout-obj FILE] [--layout-ply FILE]\n";
+  const char* help =
+    "\n"
+    "Traces the motorcycle graph of the per-corner UV map of IN.obj exactly (rational arithmetic): the\n"
+    "separatrices (the n axis rays of every cone of n quarter turns, the axis rays inside the fan of\n"
+    "every border corner; four seeded traces +u, +v, -u, -v where there is neither), together, the\n"
+    "shortest first, each until it meets a cone, the border or the trail of a trace (a T-junction), or\n"
+    "closes. Prints how each ended, counted per reason, and every failure: a trace that ended in an\n"
+    "inconsistency of the map (a seam that does not match, a flipped or degenerate UV triangle; Fig. 3 of\n"
+    "Mandad and Campen 2019). On an exactly seamless, locally injective map there are none: snap the map\n"
+    "first (seamless_snap, --untangle for fold-overs). Then cuts the faces along the separatrices into\n"
+    "the patch layout and prints the patches, how many are quads (disks with 4 right-angle corners whose\n"
+    "UV image is a rectangle, checked exactly), the nodes, arcs and Euler characteristics. A map with\n"
+    "flipped or degenerate UV triangles gets no layout (the reason is printed; JSON: null).\n"
+    "\n"
+    "Options:\n"
+    "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
+    "                       libigl/Directional output, whose seams are otherwise borders). Such an input\n"
+    "                       is welded automatically (a line says so)\n"
+    "  --no-weld            never weld\n"
+    "  --json FILE          the counts as one JSON object (ends per reason, patches, times)\n"
+    "  --svg FILE           the UV triangles (flipped ones red) and the separatrices in their charts\n"
+    "                       (failed ones orange), the patches filled (SVG)\n"
+    "  --layout-obj FILE    the refined mesh: the faces cut along the arcs, one OBJ group per patch, the\n"
+    "                       arcs as 'l' lines, a 'vt' per corner\n"
+    "  --layout-ply FILE    the same as PLY, with the properties patch_id (per face) and is_arc (per edge)\n"
+    "  --help               print this help\n"
+    "Every file is written atomically (temporary file + rename).\n"
+    "\n"
+    "Exit status: 0 when the map was read and traced (whatever the failures: they are what the study\n"
+    "counts), 1 when it could not be read or traced or a file could not be written, 2 for a command-line\n"
+    "error.\n";
   std::string in, json, svg, layout_obj, layout_ply;
   bool weld = false, no_weld = false;
   for(int i = 1; i < argc; ++i) {
@@ -55,7 +84,7 @@ int main(int argc, char** argv)
     else if(a == "--svg" && i + 1 < argc) svg = argv[++i];
     else if(a == "--layout-obj" && i + 1 < argc) layout_obj = argv[++i];
     else if(a == "--layout-ply" && i + 1 < argc) layout_ply = argv[++i];
-    else if(a == "--help") { std::cout << usage; return 0; }
+    else if(a == "--help") { std::cout << usage << help; return 0; }
     else if(in.empty() && a[0] != '-') in = a;
     else {
       const bool needs_file = a == "--json" || a == "--svg" || a == "--layout-obj" || a == "--layout-ply";
@@ -123,7 +152,7 @@ int main(int argc, char** argv)
   else std::printf("patches: none (%s)\n", L.message.c_str());
 
   if(!json.empty()) {
-    std::ofstream os(json);
+    std::ostringstream os;
     os << "{\n  \"file\": " << json_string(in) << ",\n  \"exactly_seamless\": " << (exact ? "true" : "false")
        << ",\n  \"faces\": " << num_faces(mesh) << ",\n  \"cones\": " << g.cones
        << ",\n  \"border_corners\": " << g.border_corners << ",\n  \"seeded\": " << (g.seeded ? "true" : "false")
@@ -142,7 +171,10 @@ int main(int argc, char** argv)
     }
     os << "},\n  \"milliseconds\": " << ms << ",\n  \"trace_ms\": " << g.trace_ms << ",\n  \"subdivision_ms\": "
        << L.subdivision_ms << ",\n  \"mesh_ms\": " << L.mesh_ms << ",\n  \"measure_ms\": " << L.measure_ms << "\n}\n";
-    if(!os) { std::cerr << "seamless_trace: cannot write " << json << ": " << std::strerror(errno) << std::endl; return EXIT_FAILURE; }
+    if(SS::IO::internal::write_text_atomically(json, os.str(), message) != SS::SUCCESS) {
+      std::cerr << "seamless_trace: " << message << std::endl;
+      return EXIT_FAILURE;
+    }
   }
   for(const std::string* file : {&layout_obj, &layout_ply}) {
     if(file->empty()) continue;
@@ -152,9 +184,12 @@ int main(int argc, char** argv)
     std::printf("%s\n", message.c_str());
   }
   if(!svg.empty()) {
-    std::ofstream os(svg);
+    std::ostringstream os;
     SS::IO::write_motorcycle_graph_svg(os, mesh, uv, g);
-    if(!os) { std::cerr << "seamless_trace: cannot write " << svg << ": " << std::strerror(errno) << std::endl; return EXIT_FAILURE; }
+    if(SS::IO::internal::write_text_atomically(svg, os.str(), message) != SS::SUCCESS) {
+      std::cerr << "seamless_trace: " << message << std::endl;
+      return EXIT_FAILURE;
+    }
   }
   return EXIT_SUCCESS;
 }
