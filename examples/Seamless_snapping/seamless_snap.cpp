@@ -381,8 +381,9 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   R.snap_ms = ms_since(t);
   R.faces = report.faces; R.cones = report.cones; R.nodes = report.nodes; R.flips = report.flips_after_repair;
   if(!quiet) {
-    std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms,
-                report.message.empty() ? "" : ": ", one_line(report.message).c_str());
+    const bool say = report.status == SS::SUCCESS && !report.message.empty();   // a failure's reason: the stderr line below
+    std::printf("snap: %s (%.1f ms)%s%s\n", SS::status_name(report.status), report.total_ms, say ? ": " : "",
+                say ? one_line(report.message).c_str() : "");
     std::printf("  %zu faces, %zu cut edges, %zu cones, %zu sectors (%zu constrained), %zu align edges\n",
                 report.faces, report.cut_edges, report.cones, report.sectors, report.constrained_sectors, report.align_edges);
     if(report.system_rows > 0)           // built (a refusal may come before)
