@@ -594,7 +594,7 @@ static void test_integer_grid_analytic()
     assert(r.status == SS::INFEASIBLE && uv_bits(m, uv) == bits);
     assert(r.message.find("cone at vertex 0") != std::string::npos && r.message.find("(0.5, 0)") != std::string::npos);
     // the grid scale at which the cone is on an integer point is named (the translations are integers at scale 1)
-    assert(r.message.find("at grid scale 2 (2 times this one) every translation and every cone") != std::string::npos);
+    assert(r.message.find("at grid scale 2 (2 times this one) every translation, cone and align edge") != std::string::npos);
     const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
     assert(r2.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(2.)));
     std::cout << "integer grid: half-integer cone refused: " << r.message << "\n";
@@ -613,6 +613,22 @@ static void test_integer_grid_analytic()
     const SS::Snap_report r4 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(4.));
     assert(r4.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
     std::cout << "integer grid: a finer grid scale named for a cone: " << r.message << "\n";
+  }
+  // a 2 x 2 grid mapped to [0.25, 1.25]^2 (no seam): its border edges are align edges on the isolines 0.25 and 1.25,
+  // integers at grid scale 4, which is named; it snaps there (already exact)
+  {
+    Mesh m;
+    triangulated_grid(m, 2, true);
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x() / 2 + 0.25, m.point(m.target(h)).y() / 2 + 0.25));
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits && r.align_edges == 8);
+    assert(r.message.find("align edge") != std::string::npos && r.message.find("at grid scale 4 (4 times this one)") != std::string::npos);
+    const SS::Snap_report r4 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(4.));
+    assert(r4.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
+    std::cout << "integer grid: a finer grid scale named for align edges: " << r.message << "\n";
   }
   // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)
   {

@@ -211,13 +211,28 @@ inline void set_opposite_translation(const Corner_mesh& cm, const Cut_rotations&
   for(int c = 0; c < 2; ++c) t[2 * o + c] = -Ri.sign[c] * t[2 * h + Ri.col[c]];
 }
 
+// true iff both ends of every align edge of `al` lie within `tolerance` of one integer isoline below 2^52 at 2^exponent
+// times the grid of x (exponent >= 0)
+inline bool align_edges_near_isolines(const Corner_mesh& cm, const Seam_topology& st, const Align_edges& al,
+                                      const std::vector<double>& x, double tolerance, int exponent)
+{
+  for(int e : al.edges) {
+    const int g = al.halfedge[std::size_t(e)], c = al.component[std::size_t(e)];
+    const double a = std::ldexp(x[2 * std::size_t(st.sector_of[cm.prev[g]]) + std::size_t(c)], exponent);
+    const double b = std::ldexp(x[2 * std::size_t(st.sector_of[g]) + std::size_t(c)], exponent), r = std::nearbyint(a);
+    if(!(std::fabs(r) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) return false;
+  }
+  return true;
+}
+
 // The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation (at both
-// ends) and every corner of every cone of the field is within `tolerance` of an integer below 2^52, 0 if none: a map
-// whose grid lines lie at multiples of 2^-k (scaling by a power of two is exact, so these are the values that grid scale
-// gives; the half-integer points of 180 degree cones, for one, are integers at twice the grid scale). Each k stops at
-// the first translation off the integers.
+// ends), every corner of every cone of the field and, with `al`, both ends of every align edge are within `tolerance`
+// of an integer (one isoline per align edge) below 2^52, 0 if none: a map whose grid lines lie at multiples of 2^-k
+// (scaling by a power of two is exact, so these are the values that grid scale gives; the half-integer points of 180
+// degree cones, for one, are integers at twice the grid scale). Each k stops at the first translation off the integers.
 inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                               const std::vector<double>& ubar, double tolerance, int max_k = 30)
+                               const std::vector<double>& ubar, double tolerance, const Align_edges* al = nullptr,
+                               int max_k = 30)
 {
   for(int k = 1; k <= max_k; ++k) {
     bool all = true;
@@ -231,7 +246,9 @@ inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, c
         all = std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance;
       }
     }
-    if(all && cones_near_integers(cm, st, rot, ubar, tolerance, k)) return k;
+    if(all && cones_near_integers(cm, st, rot, ubar, tolerance, k) &&
+       (al == nullptr || align_edges_near_isolines(cm, st, *al, ubar, tolerance, k)))
+      return k;
   }
   return 0;
 }
@@ -239,25 +256,26 @@ inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, c
 // The end of a refusal of the integer-grid checks at `grid_scale` (the caller's, > 0): where finer_grid_exponent() finds
 // a finer grid scale, that one named ("; at grid scale ..."); else `otherwise`
 inline std::string finer_grid_advice(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                     const std::vector<double>& ubar, double tolerance, double grid_scale,
-                                     const std::string& otherwise)
+                                     const Align_edges* al, const std::vector<double>& ubar, double tolerance,
+                                     double grid_scale, const std::string& otherwise)
 {
-  const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance) : 0;
+  const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance, al) : 0;
   if(k == 0 || !std::isfinite(std::ldexp(grid_scale, k))) return otherwise;   // (no grid scale beyond the doubles named)
   const std::string finer = format_double(std::ldexp(grid_scale, k), 17);   // a power of two, read back exactly
-  return "; at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation and every " +
-         "cone is within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
+  return "; at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation, cone and " +
+         "align edge is within " + format_double(tolerance) + " of an integer: its grid lines lie at multiples of 1/" + finer +
          "; snap with that grid scale (grid_scale / --grid-scale " + finer + ")";
 }
 
 // The translation of every cut edge rounded to an integer vector, per halfedge (2 per halfedge, at its source;
 // 0 on the other edges): t(h) maps the chart of face(h) to that of face(opposite(h)), p -> R^k(h) p + t(h).
 // INVALID_INPUT with advice if a translation is farther than `tolerance` (grid units) from an integer at either end
-// (with grid_scale > 0, the caller's: naming a finer grid scale at which none is, if one is, finer_grid_advice());
+// (with grid_scale > 0, the caller's: naming a finer grid scale at which none is, if one is, finer_grid_advice(), which
+// also checks the align edges `al` there);
 // RANGE_EXCEEDED if one is 2^52 grid units or more (beyond the integers that the rows hold).
 inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                  const std::vector<double>& ubar, double tolerance, std::vector<long>& t,
-                                 std::string& message, double grid_scale = 0)
+                                 std::string& message, double grid_scale = 0, const Align_edges* al = nullptr)
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   std::size_t far = 0;
@@ -293,7 +311,7 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
     message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
               std::to_string(st.cut_edges.size()) + " cut-edge translations are farther than " + format_double(tolerance) +
               " from integers (first: " + first_far + ")" +
-              finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "; scale the map so that its grid lines fall on "
+              finer_grid_advice(cm, st, rot, al, ubar, tolerance, grid_scale, "; scale the map so that its grid lines fall on "
                                 "integers (grid_scale / --grid-scale, a power of two)") +
               ", or snap without integer_grid_map (--integer-grid)";
     return INVALID_INPUT;
@@ -360,8 +378,9 @@ inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, c
 // 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
 // grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): the vertices of the paths along
 // which cone_separation.h moved cones (its ends, and cones on the point that it passes): their input position is not
-// compared with the point the translations force. `grid_scale` (> 0: the caller's): a cone refused names a finer grid
-// scale at which every translation and cone is near an integer, if there is one (finer_grid_advice()).
+// compared with the point the translations force. `grid_scale` (> 0: the caller's): a cone or align edge refused names a
+// finer grid scale at which every translation, cone and align edge is near an integer, if there is one
+// (finer_grid_advice()).
 // On failure nothing is appended.
 inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                     const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
@@ -389,7 +408,8 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       message = "the input is not near an integer-grid map: " + where() +
                 (across ? ", its ends on two different integer isolines (an align edge runs along one)"
                         : ", farther than " + format_double(tolerance) + " from an integer") +
-                "; scale the map (grid_scale / --grid-scale), or snap without integer_grid_map (--integer-grid)";
+                finer_grid_advice(cm, st, rot, &al, ubar, tolerance, grid_scale, "; scale the map (grid_scale / --grid-scale)") +
+                ", or snap without integer_grid_map (--integer-grid)";
       return INVALID_INPUT;
     }
     isoline[e] = long(r);
@@ -423,7 +443,7 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       message = "cone at vertex " + std::to_string(v) + " (rotation " + std::to_string(90 * K) + " degrees): the rounded " +
                 "transitions around it have the fixed point " + point_name(num[0] / 2., num[1] / 2.) + " (frame of face " +
                 std::to_string(cm.face[g0]) + "), not an integer point" +
-                finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "") + "; nothing was written";
+                finer_grid_advice(cm, st, rot, &al, ubar, tolerance, grid_scale, "") + "; nothing was written";
       return INFEASIBLE;
     }
     const int s = st.sector_of[g0];
@@ -432,7 +452,7 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       message = "cone at vertex " + std::to_string(v) + " sits at " + point_name(ubar[2 * s], ubar[2 * s + 1]) +
                 " (face " + std::to_string(cm.face[g0]) + ") but its rounded transitions force it to (" +
                 std::to_string(num[0] / 2) + ", " + std::to_string(num[1] / 2) + "), farther than " + format_double(tolerance) +
-                finer_grid_advice(cm, st, rot, ubar, tolerance, grid_scale, "") + "; nothing was written";
+                finer_grid_advice(cm, st, rot, &al, ubar, tolerance, grid_scale, "") + "; nothing was written";
       return INFEASIBLE;
     }
     result.cones.push_back(v);

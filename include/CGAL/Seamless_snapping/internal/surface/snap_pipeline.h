@@ -360,7 +360,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       return INVALID_INPUT;
     }
     const Status rounded = round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message,
-                                              opt.grid_scale);
+                                              opt.grid_scale, &S.al);
     if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
       for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
