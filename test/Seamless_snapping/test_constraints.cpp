@@ -494,6 +494,23 @@ static void make_half_turn_cone(Mesh& m, UV_map& uv, double apex_u, double apex_
   }
 }
 
+// The integer-grid snap of (m, uv) at grid scale `scale` is refused with `status`, the map untouched, the message naming
+// the finer grid scale `named` (`named` / `scale` times this one); at that grid scale the map is an exact integer-grid
+// map already and snaps to itself, bit for bit. Returns the refusal's report.
+static SS::Snap_report check_finer_grid_scale_named(Mesh& m, UV_map uv, double scale, SS::Status status, double named)
+{
+  const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(scale));
+  if(r.status != status) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+  const std::string n = std::to_string(long(named)), times = std::to_string(long(named / scale));
+  assert(r.status == status && uv_bits(m, uv) == bits);
+  assert(r.message.find("at grid scale " + n + " (" + times + " times this one) every translation, cone and align edge") !=
+         std::string::npos);
+  const SS::Snap_report rn = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(named));
+  assert(rn.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(named)));
+  return r;
+}
+
 static void test_integer_grid_analytic()
 {
   // torus: translation 3.0000000001 -> exactly 3; the default mode keeps it (already exactly seamless)
@@ -546,13 +563,7 @@ static void test_integer_grid_analytic()
   {
     Mesh m; UV_map uv;
     make_flat_torus(m, uv, 3, 2.5);
-    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
-    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
-    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
-    assert(r.message.find("at grid scale 2 (2 times this one)") != std::string::npos);
-    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
-    assert(r2.status == SS::SUCCESS && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(2.)));
-    std::cout << "integer grid: a finer grid scale named: " << r.message << "\n";
+    std::cout << "integer grid: a finer grid scale named: " << check_finer_grid_scale_named(m, uv, 1, SS::INVALID_INPUT, 2).message << "\n";
   }
   // torus of period 2^60 grid units: integer translations beyond what the rows hold exactly: RANGE_EXCEEDED (it was
   // INVALID_INPUT, "farther than 0.001 from integers", for integers), map untouched
@@ -594,9 +605,7 @@ static void test_integer_grid_analytic()
     assert(r.status == SS::INFEASIBLE && uv_bits(m, uv) == bits);
     assert(r.message.find("cone at vertex 0") != std::string::npos && r.message.find("(0.5, 0)") != std::string::npos);
     // the grid scale at which the cone is on an integer point is named (the translations are integers at scale 1)
-    assert(r.message.find("at grid scale 2 (2 times this one) every translation, cone and align edge") != std::string::npos);
-    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
-    assert(r2.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(2.)));
+    check_finer_grid_scale_named(m, uv, 1, SS::INFEASIBLE, 2);
     std::cout << "integer grid: half-integer cone refused: " << r.message << "\n";
   }
   // half-turn cone at (0.25, 0), translation (0.5, 0): the translations are integers at grid scale 2, the cone only at 4,
@@ -604,15 +613,10 @@ static void test_integer_grid_analytic()
   {
     Mesh m; UV_map uv;
     make_half_turn_cone(m, uv, 0.25, 0);
-    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
-    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
-    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits && r.message.find("not near an integer-grid map") != std::string::npos);
-    assert(r.message.find("at grid scale 4 (4 times this one)") != std::string::npos);
-    const SS::Snap_report r2 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(2.));
-    assert(r2.status == SS::INFEASIBLE && uv_bits(m, uv) == bits && r2.message.find("at grid scale 4 (2 times this one)") != std::string::npos);
-    const SS::Snap_report r4 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(4.));
-    assert(r4.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
-    std::cout << "integer grid: a finer grid scale named for a cone: " << r.message << "\n";
+    const std::string message = check_finer_grid_scale_named(m, uv, 1, SS::INVALID_INPUT, 4).message;
+    assert(message.find("not near an integer-grid map") != std::string::npos);
+    check_finer_grid_scale_named(m, uv, 2, SS::INFEASIBLE, 4);
+    std::cout << "integer grid: a finer grid scale named for a cone: " << message << "\n";
   }
   // a 2 x 2 grid mapped to [0.25, 1.25]^2 (no seam): its border edges are align edges on the isolines 0.25 and 1.25,
   // integers at grid scale 4, which is named; it snaps there (already exact)
@@ -622,12 +626,8 @@ static void test_integer_grid_analytic()
     UV_map uv = uv_of(m);
     for(halfedge_descriptor h : m.halfedges())
       if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x() / 2 + 0.25, m.point(m.target(h)).y() / 2 + 0.25));
-    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
-    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
-    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits && r.align_edges == 8);
-    assert(r.message.find("align edge") != std::string::npos && r.message.find("at grid scale 4 (4 times this one)") != std::string::npos);
-    const SS::Snap_report r4 = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(4.));
-    assert(r4.status == SS::SUCCESS && uv_bits(m, uv) == bits && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
+    const SS::Snap_report r = check_finer_grid_scale_named(m, uv, 1, SS::INVALID_INPUT, 4);
+    assert(r.align_edges == 8 && r.message.find("align edge (") != std::string::npos);
     std::cout << "integer grid: a finer grid scale named for align edges: " << r.message << "\n";
   }
   // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)
