@@ -16,7 +16,8 @@
 // dropped; every quad vertex maps back exactly to its integer UV (a corner UV of its vertex, a point of its
 // edge, a point inside its face, compared in Gmpq); its valence is quad_valences()'s for a mesh vertex, 4
 // elsewhere inside (3 on a border edge), so that the irregular vertices are exactly the cones; every face of
-// the map is covered; the report agrees with the mesh.
+// the map is covered; the report agrees with the mesh; its patches (quad_mesh_patches(), check_quad_patches())
+// are rectangles of quads, every quad a cell of its patch's grid consistent with its neighbours.
 //   quad: cube                  a generated exact IGM with 8 cones of valence 3, sides 1-3, grid scales 1, 2:
 //                               6 n^2 S^2 quads, chi 2; the map scaled by 2^-3 with grid_scale 8 gives the same
 //                               mesh bit for bit (scale covariance)
@@ -31,6 +32,8 @@
 //   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
 //                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
 //                               not a power of two; the output mesh is unchanged on every refusal
+//   quad: patches refused       quad_mesh_patches() on triangles, on two quads with one vertex in common: INVALID_INPUT,
+//                               nothing written (every extracted mesh above and below gets its patches checked too)
 //   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
 //                               (8 quads around it), off the integer points refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
@@ -54,6 +57,7 @@
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
@@ -69,6 +73,7 @@
 #include <iterator>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -147,6 +152,8 @@ static void check_origin(const Mesh& m, UV_map uv, double S, const Origin& o, co
 }
 
 // Checks r against m (see the header comment); `what` names the map in the output line.
+static void check_quad_patches(const Mesh& q, const std::string& what);
+
 static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
 {
   const SS::Quad_mesh_report& rep = r.report;
@@ -215,6 +222,61 @@ static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_resul
               rep.euler_characteristic, rep.boundary_loops, irregular, cones, histogram.c_str(),
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
+  check_quad_patches(q, what);
+}
+
+// quad_mesh_patches() on an extracted mesh, checked here from its output alone: every quad in one patch, the
+// patches' sizes and counts; the nodes counted here (interior vertices of valence other than 4, border vertices
+// with other than 2 quads); every patch a rectangle (Eppstein et al.: on a mesh with nodes; the tori here get
+// seeded trails that close up into one), each cell of its w x h grid once; across a side of a quad, the quad of the
+// same patch is the next cell in that direction with its bottom side where the grid walk puts it, unless the side
+// lies on the rectangle's boundary (a patch that meets itself across a trail)
+static void check_quad_patches(const Mesh& q, const std::string& what)
+{
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
+  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
+  const SS::Quad_patches r = SS::quad_mesh_patches(q, pm);
+  assert(r.status == SS::SUCCESS && r.all_rectangles());
+  std::size_t nodes = 0;
+  for(vertex_descriptor v : q.vertices()) {
+    std::size_t quads = 0;
+    for(face_descriptor f : CGAL::faces_around_target(q.halfedge(v), q)) quads += f != Mesh::null_face() ? 1 : 0;
+    nodes += q.is_border(v) ? (quads != 2 ? 1 : 0) : (q.degree(v) != 4 ? 1 : 0);
+  }
+  assert(r.nodes == nodes);
+  std::vector<std::size_t> count(r.patches.size(), 0);
+  std::set<std::array<std::size_t, 3> > cells;
+  std::size_t wraps = 0;
+  for(face_descriptor f : q.faces()) {
+    const SS::Quad_patch_location<Mesh>& l = get(pm, f);
+    assert(l.patch < r.patches.size() && q.face(l.bottom) == f);
+    const SS::Quad_patch& P = r.patches[l.patch];
+    ++count[l.patch];
+    assert(0 <= l.i && l.i < P.width && 0 <= l.j && l.j < P.height);
+    const std::array<std::size_t, 3> cell = {{l.patch, std::size_t(l.i), std::size_t(l.j)}};
+    const bool first_time = cells.insert(cell).second;           // each cell of the patch once
+    assert(first_time);
+    const int di[4] = {0, 1, 0, -1}, dj[4] = {-1, 0, 1, 0};
+    const bool on_boundary[4] = {l.j == 0, l.i == P.width - 1, l.j == P.height - 1, l.i == 0};
+    halfedge_descriptor h = l.bottom;
+    for(int s = 0; s < 4; ++s, h = q.next(h)) {
+      const halfedge_descriptor o = q.opposite(h);
+      if(q.is_border(o) || get(pm, q.face(o)).patch != l.patch) { assert(on_boundary[s]); continue; }
+      const SS::Quad_patch_location<Mesh>& n = get(pm, q.face(o));
+      halfedge_descriptor b = o;                                  // its side (s + 2) mod 4 is o
+      for(int t = (s + 2) % 4; t != 0; t = (t + 1) % 4) b = q.next(b);
+      if(n.i == l.i + di[s] && n.j == l.j + dj[s]) assert(n.bottom == b);
+      else { assert(on_boundary[s]); ++wraps; }
+    }
+  }
+  std::size_t quads = 0;
+  for(std::size_t p = 0; p < r.patches.size(); ++p) {
+    assert(count[p] == r.patches[p].quads && r.patches[p].quads == std::size_t(r.patches[p].width) * std::size_t(r.patches[p].height));
+    quads += r.patches[p].quads;
+  }
+  assert(quads == q.number_of_faces());
+  std::printf("quad: %-46s %6zu patches, all rectangles, %zu nodes, %zu motorcycles, %zu sides across a trail in one patch\n",
+              (what + ", patches").c_str(), r.patches.size(), r.nodes, r.motorcycles, wraps);
 }
 
 // the same quad mesh, bit for bit: positions, faces, origins
@@ -490,6 +552,29 @@ static void test_branch_points()
   make_double_fan(b, uvb, Point_2(0.5, 0.25));
   assert(SS::is_exact_integer_grid_map(b, uvb));
   check_refused(b, uvb, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns off the grid");
+}
+
+// quad_mesh_patches() refuses what is not a manifold quad mesh (INVALID_INPUT naming the face or vertex) and then
+// writes nothing
+static void test_patch_refusals()
+{
+  Mesh t;
+  triangulated_grid(t, 2, true);
+  Mesh pinched;                                      // two quads with one vertex in common: two fans there
+  std::vector<vertex_descriptor> v;
+  for(int k = 0; k < 7; ++k) v.push_back(pinched.add_vertex(Point_3(k, k % 2, 0)));
+  pinched.add_face(v[0], v[1], v[2], v[3]);
+  pinched.add_face(v[0], v[4], v[5], v[6]);
+  for(const Mesh* m : {&t, &pinched}) {
+    SS::Quad_patch_location<Mesh> untouched;
+    untouched.patch = 12345;
+    std::vector<SS::Quad_patch_location<Mesh> > locations(m->number_of_faces(), untouched);
+    const SS::Quad_patches r = SS::quad_mesh_patches(*m, boost::make_iterator_property_map(locations.begin(), get(boost::face_index, *m)));
+    const char* words = m == &t ? "face 0 is not a quad" : "vertex 0 is not manifold";
+    assert(r.status == SS::INVALID_INPUT && r.message.find(words) != std::string::npos && r.patches.empty());
+    for(const SS::Quad_patch_location<Mesh>& l : locations) assert(l.patch == 12345);
+    std::printf("quad: patches refused: %s\n", r.message.c_str());
+  }
 }
 
 static void test_refusals()
@@ -843,6 +928,7 @@ int main(int argc, char** argv)
   test_grid();
   test_collapsed_faces();
   test_refusals();
+  test_patch_refusals();
   test_branch_points();
   if(!sanitizer_subset()) test_bear_orbifold();
   if(!sanitizer_subset()) test_cut_invariance();

@@ -1,0 +1,200 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_PATCHES_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_PATCHES_H
+
+// The motorcycle graph of a quad mesh (Eppstein, Goodrich, Kim, Tamstorf, "Motorcycle graphs: canonical quad
+// mesh partitioning", SGP 2008) and its patches, on index arrays (quad_mesh_patches() fills them from the
+// caller's mesh). Combinatorial only: no coordinate is read.
+//
+// 1. Motorcycles. Nodes are the interior vertices of valence other than 4 and the border vertices with other
+//    than 2 quads; each sends a motorcycle along each of its edges that has a quad on both sides. All move
+//    together, one edge per round, in the order they were made (by vertex, then around it); a motorcycle marks
+//    the edges it runs along and the vertices it reaches, goes straight on at a vertex it is the first to reach
+//    (a regular interior vertex: the edge opposite the one it came by), and stops at a vertex already marked (a
+//    node, a border vertex, or a vertex of a trail laid before: a T-junction). A mesh without nodes (a torus, a
+//    cylinder whose borders have no corner) gets motorcycles from its first vertex, along each of its edges with
+//    two quads.
+// 2. Patches: the quads connected across edges that no motorcycle ran along.
+// 3. Grids: each patch is given integer coordinates from its quad of smallest index, whose halfedge(f) runs
+//    along its bottom side (+i): across the right side of a quad lies (i + 1, j) with its bottom side the
+//    halfedge after the shared one, and so on. A patch is a rectangle when every quad gets one cell and one
+//    bottom side, consistently from every neighbour in the patch, the cells are those of a w x h rectangle, each
+//    once, and exactly the sides on the rectangle's boundary are trail or border edges. On a rectangle the
+//    cells are then shifted so that the lower-left one is (0, 0).
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+// A polygon mesh as index arrays: per halfedge next, opposite, target vertex and face (-1: border); per face one
+// of its halfedges.
+struct Quad_arrays
+{
+  std::vector<int> next, opp, target, face;
+  std::vector<int> face_halfedge;
+  int n_vertices = 0;
+};
+
+struct Quad_patch_cells
+{
+  std::vector<int> patch;                 // per face
+  std::vector<std::array<int, 2> > cell;  // per face: (i, j) in its patch (rectangles: from (0, 0))
+  std::vector<int> bottom;                // per face: its halfedge along the +i side of its cell
+  struct Patch { std::size_t quads = 0; int width = 0, height = 0; bool rectangle = false; };
+  std::vector<Patch> patches;
+  std::size_t motorcycles = 0, nodes = 0;
+  std::size_t stops_on_trails = 0;        // motorcycles that ended at a regular vertex of a trail laid before
+  std::vector<char> trail;                // per halfedge: on a motorcycle's trail (both halfedges of the edge)
+};
+
+// Empty if the arrays form a manifold quad mesh, else why not.
+inline std::string quad_mesh_defect(const Quad_arrays& m)
+{
+  for(std::size_t f = 0; f < m.face_halfedge.size(); ++f) {
+    int n = 0, h = m.face_halfedge[f];
+    do { ++n; h = m.next[std::size_t(h)]; } while(h != m.face_halfedge[f] && n <= 4);
+    if(n != 4) return "face " + std::to_string(f) + " is not a quad";
+  }
+  // a manifold vertex: its incoming halfedges are one cycle of opp(next(h)), with at most one border halfedge
+  std::vector<int> in_degree(std::size_t(m.n_vertices), 0), border_in(std::size_t(m.n_vertices), 0), some_in(std::size_t(m.n_vertices), -1);
+  for(std::size_t h = 0; h < m.target.size(); ++h) {
+    const std::size_t v = std::size_t(m.target[h]);
+    ++in_degree[v];
+    border_in[v] += m.face[h] < 0 ? 1 : 0;
+    some_in[v] = int(h);
+  }
+  for(int v = 0; v < m.n_vertices; ++v) {
+    const int h0 = some_in[std::size_t(v)];
+    if(h0 < 0) continue;                                      // isolated: no edge, no motorcycle
+    int n = 0, h = h0;
+    do { ++n; h = m.opp[std::size_t(m.next[std::size_t(h)])]; } while(h != h0 && n <= in_degree[std::size_t(v)]);
+    if(n != in_degree[std::size_t(v)] || border_in[std::size_t(v)] > 1)
+      return "vertex " + std::to_string(v) + " is not manifold (its quads form several fans)";
+  }
+  return std::string();
+}
+
+// Steps 1-3 (see the header). Precondition: quad_mesh_defect(m) is empty.
+inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m)
+{
+  const std::size_t nh = m.next.size(), nf = m.face_halfedge.size(), nv = std::size_t(m.n_vertices);
+  Quad_patch_cells out;
+  // per vertex: incoming halfedges, quads, border
+  std::vector<int> degree(nv, 0), quads(nv, 0), some_in(nv, -1);
+  std::vector<char> on_border(nv, 0);
+  for(std::size_t h = 0; h < nh; ++h) {
+    const std::size_t v = std::size_t(m.target[h]);
+    ++degree[v];
+    some_in[v] = int(h);
+    if(m.face[h] >= 0) ++quads[v]; else on_border[v] = 1;
+  }
+  auto interior_edge = [&](int h) { return m.face[std::size_t(h)] >= 0 && m.face[std::size_t(m.opp[std::size_t(h)])] >= 0; };
+  auto is_node = [&](std::size_t v) { return some_in[v] >= 0 && (on_border[v] ? quads[v] != 2 : degree[v] != 4); };
+
+  // 1. motorcycles: the halfedge each runs along next
+  std::vector<char> marked(nv, 0);
+  out.trail.assign(nh, 0);
+  std::vector<int> riding;
+  auto launch = [&](std::size_t v) {                          // along every edge with two quads, around v
+    marked[v] = 1;
+    const int h0 = some_in[v];
+    int h = h0;
+    do { const int g = m.opp[std::size_t(h)]; if(interior_edge(g)) riding.push_back(g); h = m.opp[std::size_t(m.next[std::size_t(h)])]; } while(h != h0);
+  };
+  for(std::size_t v = 0; v < nv; ++v) if(is_node(v)) { ++out.nodes; launch(v); }
+  for(std::size_t v = 0; v < nv; ++v) if(on_border[v]) marked[v] = 1;
+  if(riding.empty())
+    for(std::size_t v = 0; v < nv; ++v) if(some_in[v] >= 0) { launch(v); break; }
+  out.motorcycles = riding.size();
+  while(!riding.empty()) {
+    std::vector<int> still;
+    for(int g : riding) {
+      out.trail[std::size_t(g)] = out.trail[std::size_t(m.opp[std::size_t(g)])] = 1;
+      const std::size_t w = std::size_t(m.target[std::size_t(g)]);
+      if(marked[w]) { out.stops_on_trails += is_node(w) || on_border[w] ? 0 : 1; continue; }
+      marked[w] = 1;                                          // a regular interior vertex: straight on
+      still.push_back(m.next[std::size_t(m.opp[std::size_t(m.next[std::size_t(g)])])]);
+    }
+    riding.swap(still);
+  }
+
+  // 2. patches (quads across edges off the trails), numbered by their quad of smallest index
+  const int none = -1;
+  out.patch.assign(nf, none);
+  out.cell.assign(nf, std::array<int, 2>{{0, 0}});
+  out.bottom.assign(nf, none);
+  std::vector<int> queue;
+  for(std::size_t f0 = 0; f0 < nf; ++f0) {
+    if(out.patch[f0] != none) continue;
+    const int p = int(out.patches.size());
+    out.patches.emplace_back();
+    Quad_patch_cells::Patch& P = out.patches.back();
+    // 3. the grid, from f0 with its halfedge(f) as bottom side
+    bool consistent = true;
+    std::array<int, 2> lo{{0, 0}}, hi{{0, 0}};
+    out.patch[f0] = p; out.bottom[f0] = m.face_halfedge[f0];
+    queue.assign(1, int(f0));
+    for(std::size_t q = 0; q < queue.size(); ++q) {
+      const std::size_t f = std::size_t(queue[q]);
+      int side = out.bottom[f];
+      for(int s = 0; s < 4; ++s, side = m.next[std::size_t(side)]) {   // bottom, right, top, left
+        if(out.trail[std::size_t(side)] || !interior_edge(side)) continue;
+        const int o = m.opp[std::size_t(side)];
+        const std::size_t g = std::size_t(m.face[std::size_t(o)]);
+        static const int di[4] = {0, 1, 0, -1}, dj[4] = {-1, 0, 1, 0};
+        const std::array<int, 2> c{{out.cell[f][0] + di[s], out.cell[f][1] + dj[s]}};
+        // the neighbour's bottom: across our side s lies its side (s + 2) mod 4, which is o
+        int b = o;
+        for(int t = (s + 2) % 4; t != 0; t = (t + 1) % 4) b = m.next[std::size_t(b)];
+        if(out.patch[g] == none) {
+          out.patch[g] = p; out.cell[g] = c; out.bottom[g] = b; queue.push_back(int(g));
+          for(int k = 0; k < 2; ++k) { lo[std::size_t(k)] = (std::min)(lo[std::size_t(k)], c[std::size_t(k)]); hi[std::size_t(k)] = (std::max)(hi[std::size_t(k)], c[std::size_t(k)]); }
+        }
+        else if(out.cell[g] != c || out.bottom[g] != b) consistent = false;
+      }
+    }
+    P.quads = queue.size();
+    const long w = long(hi[0]) - lo[0] + 1, h = long(hi[1]) - lo[1] + 1;
+    P.rectangle = consistent && w * h == long(P.quads);
+    if(P.rectangle) {                                          // each cell once, trails exactly on the boundary
+      std::vector<char> seen(std::size_t(w * h), 0);
+      for(int g : queue) {
+        std::array<int, 2>& c = out.cell[std::size_t(g)];
+        c[0] -= lo[0]; c[1] -= lo[1];
+        char& s = seen[std::size_t(c[1]) * std::size_t(w) + std::size_t(c[0])];
+        if(s) P.rectangle = false;
+        s = 1;
+        int side = out.bottom[std::size_t(g)];
+        const bool on_boundary[4] = {c[1] == 0, c[0] == w - 1, c[1] == h - 1, c[0] == 0};
+        for(int k = 0; k < 4; ++k, side = m.next[std::size_t(side)])
+          if(on_boundary[k] != (out.trail[std::size_t(side)] || !interior_edge(side))) P.rectangle = false;
+      }
+    }
+    if(P.rectangle) { P.width = int(w); P.height = int(h); }
+  }
+  return out;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_QUAD_PATCHES_H
