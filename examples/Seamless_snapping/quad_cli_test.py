@@ -1,6 +1,8 @@
 """CTest test of the seamless_quad command line: the quad mesh of CGAL's bear with an Orbifold Tutte
 Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here from the files (every face a quad,
-every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area), and from it as a cut
+every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area; in PLY the patches:
+every quad a cell of its patch's grid whose corners, read from patch_corner, give each grid point of a patch one
+vertex, the report's patch sizes covering the quads), and from it as a cut
 mesh (welded automatically; refused with --no-weld); refusals with
 exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
@@ -76,6 +78,23 @@ for ext in ["obj", "off", "ply"]:
         header = open(out).read().split("end_header")[0]
         check(all(p in header for p in ["input_kind", "input_face", "grid_u", "grid_v", "input_faces"]),
               "ply: the origin properties are written")
+        face_props = [l.split()[2] for l in header.split("element face")[1].splitlines() if l.startswith("property int")]
+        rows = [[int(x) for x in l.split()] for l in open(out).read().split("end_header")[1].split("\n")[1 + nv:] if l.strip()]
+        pt = r["patches"]
+        check(pt["status"] == "SUCCESS" and pt["all_rectangles"] and len(pt["sizes"]) == pt["patches"] and
+              sum(w * h for w, h in pt["sizes"]) == len(faces), "ply: the report's patches cover the quads: %s" % pt)
+        grid, cells, conflicts = {}, set(), 0
+        for row in rows:
+            n = row[0]
+            f, prop = row[1:1 + n], dict(zip(face_props, row[1 + n:]))
+            pid, i, j, c = prop["patch_id"], prop["patch_i"], prop["patch_j"], prop["patch_corner"]
+            w, h = pt["sizes"][pid]
+            conflicts += 0 if 0 <= i < w and 0 <= j < h and (pid, i, j) not in cells else 1
+            cells.add((pid, i, j))
+            for t, (di, dj) in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):   # the cell's corners from (i, j) on
+                conflicts += 0 if grid.setdefault((pid, i + di, j + dj), f[(c + t) % 4]) == f[(c + t) % 4] else 1
+        check(len(rows) == len(faces) and conflicts == 0 and "patches: %d patches" % pt["patches"] in text,
+              "ply: every quad a cell of its patch, each grid point one vertex: %d conflicts" % conflicts)
 
 # 1b. the same map as a cut mesh (vertices duplicated along the seams, as Directional writes): welded automatically,
 # the same quad mesh; refused with --no-weld (its seams would be borders), nothing written

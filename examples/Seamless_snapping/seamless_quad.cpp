@@ -5,7 +5,8 @@
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
-// mesh (extract_quad_mesh(), which checks the map and verifies the mesh) and writes OUT atomically.
+// mesh (extract_quad_mesh(), which checks the map and verifies the mesh), cuts it into rectangle patches
+// (quad_mesh_patches(): in PLY per face patch_id, patch_i, patch_j, patch_corner) and writes OUT atomically.
 // Exit status 0 only when OUT was written.
 
 #include <CGAL/Simple_cartesian.h>
@@ -15,6 +16,7 @@
 #include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/version.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
@@ -92,7 +94,12 @@ static const char* help_text =
   ".ply (ASCII, with per vertex input_kind (0 at a mesh vertex, 1 on an edge, 2 inside a face),\n"
   "input_face (the input face, 0-based in the order of the mesh's faces, in whose UV chart grid_u, grid_v\n"
   "are given), grid_u, grid_v (the integer UV in grid units), and per face input_face (the first input\n"
-  "face it covers) and input_faces (how many it covers)). Written atomically (temporary file + rename).\n"
+  "face it covers), input_faces (how many it covers), patch_id, patch_i, patch_j (the quad's patch and its cell\n"
+  "(i, j) in the patch's grid, see below) and patch_corner (the rank, 0-3, of the face's vertex at the cell's\n"
+  "corner (i, j); the next vertex is (i + 1, j))). Written atomically (temporary file + rename).\n"
+  "Patches: the quads are partitioned by the motorcycle graph of the quad mesh (quad_mesh_patches(): traces\n"
+  "from every irregular vertex and border corner along the quad edges, each stopping at an earlier one) into\n"
+  "rectangles of width x height quads, each quad a cell (i, j) of its patch's grid; a line counts them.\n"
   "Cells cut by a border that is not on an integer isoline are left out and counted (a line says so).\n"
   "\n"
   "Exit status: 0 when OUT was written; 1 when reading, snapping, extracting or writing failed (one line\n"
@@ -221,11 +228,16 @@ int main(int argc, char** argv)
                               params::vertex_origin_map(origin).face_origin_map(covered));
   else if(snap.status == SS::SUCCESS)
     return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
+  // its patches (the motorcycle graph of the quads: rectangles of quads)
+  auto patch = quads.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+  SS::Quad_patches patches;
+  if(q.status == SS::SUCCESS) patches = SS::quad_mesh_patches(quads, patch);
   if(!report_file.empty()) {
     const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
                              ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
                              snap.to_json() + ",\n  \"quad_mesh\": " +
-                             (snap.status == SS::SUCCESS ? q.to_json() : std::string("null")) + "}\n";
+                             (snap.status == SS::SUCCESS ? q.to_json() : std::string("null")) + ",\n  \"patches\": " +
+                             (q.status == SS::SUCCESS ? patches.to_json() : std::string("null")) + "}\n";
     if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
   }
   if(snap.status != SS::SUCCESS)
@@ -260,6 +272,7 @@ int main(int argc, char** argv)
                 q.boundary_loops == 0 ? "closed" : (std::to_string(q.boundary_loops) + " boundary loops").c_str(),
                 q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones,
                 q.covers_map() ? ", as many quads as the exact UV area" : "");
+    std::printf("patches: %s\n", patches.message.c_str());
   }
   if(q.incomplete_cells > 0)
     std::cerr << "seamless_quad: note: " << q.incomplete_cells << " cells cut by the border (not on integer isolines) "
@@ -276,6 +289,10 @@ int main(int argc, char** argv)
     auto gv = quads.add_property_map<Mesh::Vertex_index, std::int32_t>("v:grid_v").first;
     auto first = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:input_face").first;
     auto count = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:input_faces").first;
+    auto patch_id = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_id").first;
+    auto patch_i = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_i").first;
+    auto patch_j = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_j").first;
+    auto patch_corner = quads.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_corner").first;
     for(Mesh::Vertex_index v : quads.vertices()) {
       const SS::Quad_vertex_origin<Mesh>& o = origin[v];
       kind[v] = std::int32_t(o.location);
@@ -283,9 +300,19 @@ int main(int argc, char** argv)
       gu[v] = std::int32_t(o.u);
       gv[v] = std::int32_t(o.v);
     }
-    for(Mesh::Face_index f : quads.faces()) { first[f] = std::int32_t(covered[f].front()); count[f] = std::int32_t(covered[f].size()); }
+    for(Mesh::Face_index f : quads.faces()) {
+      first[f] = std::int32_t(covered[f].front()); count[f] = std::int32_t(covered[f].size());
+      const SS::Quad_patch_location<Mesh>& l = patch[f];
+      patch_id[f] = std::int32_t(l.patch); patch_i[f] = l.i; patch_j[f] = l.j;
+      // the face's vertices are written as the targets of halfedge(f), next(), ...: the bottom side, halfedge k of
+      // them, runs from vertex (k + 3) mod 4 of the list, the cell's corner (i, j), to vertex k
+      std::int32_t k = 0;
+      for(Mesh::Halfedge_index h = quads.halfedge(f); h != l.bottom; h = quads.next(h)) ++k;
+      patch_corner[f] = (k + 3) % 4;
+    }
     quads.remove_property_map(origin);
     quads.remove_property_map(covered);
+    quads.remove_property_map(patch);
     written = CGAL::IO::write_PLY(os, quads, "quad mesh of " + in, CGAL::parameters::use_binary_mode(false));
   }
   else if(format == "off") written = CGAL::IO::write_OFF(os, quads, CGAL::parameters::stream_precision(17));
