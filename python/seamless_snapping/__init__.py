@@ -296,7 +296,14 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_fai
       "QV_location": 0 at a vertex of (V, F), 1 inside an edge, 2 inside a face;
       "QV_face": the row of F in whose UV chart "QV_uv" is given; "QV_uv": #QV x 2 int, the integer UV in grid units
               (the UV is QV_uv / grid_scale, exactly); "QV_vertex": the row of V at location 0, else -1;
-      "QF_faces": per quad, the rows of F it covers.
+      "QF_faces": per quad, the rows of F it covers;
+      "QF_patch", "QF_patch_cell" (#QF x 2 int), "QF_patch_corner": the patches of the quad mesh (C++
+              quad_mesh_patches(): its motorcycle graph, traces along the quad edges from every irregular vertex and
+              border corner, each stopping at an earlier one, cut it into rectangles of quads): per quad its patch,
+              its cell (i, j) in the patch's grid, and the rank k in its QF row of the vertex at the cell's corner
+              (i, j) (QF[q, (k + 1) % 4] is at (i + 1, j), and so on counter-clockwise);
+      "patches": a dict ("status", "patches", "rectangles", "all_rectangles", "nodes", "motorcycles", "sizes"
+              ([width, height] per patch), ...).
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
     integer-grid map, a cone of valence 1, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
     zero-area UV triangles with two corners at one point, listed in report["fold_overs"] and
@@ -307,6 +314,8 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_fai
     QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), bool(weld), float(grid_scale))
     report = json.loads(text)
     report.update(origins)
+    if "patches" in report:
+        report["patches"] = json.loads(report["patches"])
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return QV, QF, report

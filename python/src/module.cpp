@@ -8,6 +8,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
@@ -399,6 +400,28 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   origins["QV_vertex"] = vertex;
   origins["QV_uv"] = uv;
   origins["QF_faces"] = faces;
+  // the patches of the quad mesh (quad_mesh_patches()): per quad its patch, its cell (i, j) and the rank in its QF row
+  // of the vertex at the cell's corner (i, j) (QF lists the targets of halfedge(f), next(), ...)
+  auto patch = q.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+  const SS::Quad_patches patches = SS::quad_mesh_patches(q, patch);
+  py::array_t<long long> patch_id(nf), cell({nf, py::ssize_t(2)}), corner(nf);
+  auto pa = patch_id.mutable_unchecked<1>();
+  auto ce = cell.mutable_unchecked<2>();
+  auto co = corner.mutable_unchecked<1>();
+  for(Mesh::Face_index f : q.faces()) {
+    const SS::Quad_patch_location<Mesh>& l = patch[f];
+    const py::ssize_t i = py::ssize_t(f);
+    pa(i) = (long long)(l.patch);
+    ce(i, 0) = l.i;
+    ce(i, 1) = l.j;
+    int k = 0;
+    for(Mesh::Halfedge_index h = q.halfedge(f); h != l.bottom; h = q.next(h)) ++k;
+    co(i) = (k + 3) % 4;
+  }
+  origins["QF_patch"] = patch_id;
+  origins["QF_patch_cell"] = cell;
+  origins["QF_patch_corner"] = corner;
+  origins["patches"] = patches.to_json();
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }
 

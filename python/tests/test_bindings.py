@@ -632,6 +632,19 @@ def check_quad_mesh(V, F, UV, FUV, QV, QF, report, grid_scale=1.0, closed=True):
     assert len(QV) - len(edges) + len(QF) == report["euler_characteristic"] == report["input_euler_characteristic"]
     assert report["irregular_vertices"] == report["cones"] and report["covers_map"]
     assert all(len(c) > 0 for c in report["QF_faces"])
+    # the patches: rectangles of quads covering the mesh, every quad a cell of its patch's grid, each cell once, and
+    # each grid point of a patch one vertex (read from the corner ranks)
+    patches = report["patches"]
+    assert patches["status"] == "SUCCESS" and patches["all_rectangles"] and len(patches["sizes"]) == patches["patches"]
+    assert sum(w * h for w, h in patches["sizes"]) == len(QF) == len(report["QF_patch"])
+    cells, grid = set(), {}
+    for q in range(len(QF)):
+        p, (i, j), k = report["QF_patch"][q], report["QF_patch_cell"][q], report["QF_patch_corner"][q]
+        w, h = patches["sizes"][p]
+        assert 0 <= i < w and 0 <= j < h and (p, i, j) not in cells
+        cells.add((p, i, j))
+        for t, (di, dj) in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):
+            assert grid.setdefault((p, i + di, j + dj), QF[q][(k + t) % 4]) == QF[q][(k + t) % 4]
 
 
 def test_extract_quad_mesh_generated():
