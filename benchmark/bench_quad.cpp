@@ -8,7 +8,9 @@
 // characteristic, whether every face is a quad and whether the quads cover the map (as many as its exact UV
 // area); and where libQEx's stored output exists (the reference directory, <name>_quad.obj for
 // <name>_param.obj, see ../shared/reference/README.md): its V, F, valences, closed and manifold, measured
-// here from the OBJ file. A second table gives the valence histograms.
+// here from the OBJ file. A second table gives the valence histograms, a third the patches of each quad mesh
+// (quad_mesh_patches(): its motorcycle graph along the quad edges): patches, how many are rectangles, nodes,
+// motorcycles, separatrix edges, the largest patch (width x height) and the time.
 //
 // usage: bench_quad [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
@@ -22,6 +24,7 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
@@ -120,7 +123,7 @@ int main(int argc, char** argv)
   std::printf("| model | faces | snap | snap ms | extraction | extract ms (check / cells / mesh) | quads | vertices | irregular / cones | holes |"
               " non-manifold v / e | chi (map) | all quads | covers map | libQEx V / F | libQEx closed, manifold |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::vector<std::string> histograms;
+  std::vector<std::string> histograms, patch_rows;
   for(const fs::path& p : files) {
     const std::string name = p.stem().string();
     const bool weld = p.string().find("directional") != std::string::npos;
@@ -182,9 +185,21 @@ int main(int argc, char** argv)
                 q.covers_map() ? "yes" : ("no: " + std::to_string(q.incomplete_cells) + " cells cut by the border").c_str(),
                 ref_cells[0], ref_cells[1]);
     histograms.push_back("| " + name + " | extracted | " + histogram(q.valence_histogram) + " |");
+    auto patch = quads.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+    const SS::Quad_patches pt = SS::quad_mesh_patches(quads, patch);
+    std::size_t largest = 0;
+    for(std::size_t k = 1; k < pt.patches.size(); ++k) if(pt.patches[k].quads > pt.patches[largest].quads) largest = k;
+    char row[256];
+    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f |", name.c_str(), SS::status_name(pt.status),
+                  pt.patches.size(), pt.rectangles, pt.nodes, pt.motorcycles, pt.separatrix_edges,
+                  pt.patches.empty() ? 0 : pt.patches[largest].width, pt.patches.empty() ? 0 : pt.patches[largest].height, pt.total_ms);
+    patch_rows.push_back(row);
     std::fflush(stdout);
   }
   std::printf("\n| model | mesh | valences (valence:vertices) |\n|---|---|---|\n");
   for(const std::string& h : histograms) std::printf("%s\n", h.c_str());
+  std::printf("\n| model | patches status | patches | rectangles | nodes | motorcycles | separatrix edges | largest patch | ms |\n"
+              "|---|---|---|---|---|---|---|---|---|\n");
+  for(const std::string& r : patch_rows) std::printf("%s\n", r.c_str());
   return 0;
 }
