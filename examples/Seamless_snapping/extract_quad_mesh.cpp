@@ -1,7 +1,8 @@
 // Public API: the quad mesh of a UV map. The map (e.g. an Orbifold Tutte or a field-aligned parametrization
 // whose seam translations and cones are integers up to solver error) is snapped to an exact integer-grid map,
 // then extract_quad_mesh() makes its quad mesh: every vertex an integer point of the map, every face a unit
-// cell, checked and verified exactly.
+// cell, checked and verified exactly; quad_mesh_patches() then cuts it into rectangles of quads (the motorcycle
+// graph of the quad mesh), each quad a cell (i, j) of its patch's grid.
 //   extract_quad_mesh IN.obj [GRID_SCALE [OUT.off]]     (GRID_SCALE: a power of two, default 1)
 // CTest runs it on the bear map that quad_figure writes (Orbifold Tutte Parallelogram) at grid scale 4.
 #include <CGAL/Simple_cartesian.h>
@@ -9,6 +10,7 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <cstdio>
 #include <cstdlib>
@@ -53,6 +55,15 @@ int main(int argc, char** argv)
               "chart of face %u; the first quad covers %zu triangles\n", at[0], at[1], at[2], (long long)o.u, (long long)o.v,
               scale, unsigned(o.face), covered[*quads.faces().begin()].size());
   if(!q.covers_map()) return fail("cells cut by the border were dropped");
+
+  // 3. its patches: rectangles of width x height quads; per quad its patch, its cell (i, j), its bottom side
+  auto patch = quads.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+  const SS::Quad_patches p = SS::quad_mesh_patches(quads, patch);
+  if(!p.all_rectangles()) return fail(std::string("patches: ") + SS::status_name(p.status) + ": " + p.message);
+  const SS::Quad_patch_location<Mesh>& l = patch[*quads.faces().begin()];
+  std::printf("patches: %s; the first quad is cell (%d, %d) of patch %zu (%d x %d quads), its corner (%d, %d) at quad "
+              "vertex %u\n", p.message.c_str(), l.i, l.j, l.patch, p.patches[l.patch].width, p.patches[l.patch].height,
+              l.i, l.j, unsigned(quads.source(l.bottom)));
 
   if(argc > 3) {
     if(!CGAL::IO::write_OFF(argv[3], quads, CGAL::parameters::stream_precision(17))) return fail("cannot write the quad mesh");
