@@ -32,8 +32,10 @@
 //   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
 //                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
 //                               not a power of two; the output mesh is unchanged on every refusal
-//   quad: patches refused       quad_mesh_patches() on triangles, on two quads with one vertex in common: INVALID_INPUT,
-//                               nothing written (every extracted mesh above and below gets its patches checked too)
+//   quad: patches refused       quad_mesh_patches() on triangles, on two quads with one vertex in common, on a mesh
+//                               with a removed face: INVALID_INPUT, nothing written; the last after collect_garbage(),
+//                               a torus with a hole: 4 nodes, rectangles (every extracted mesh above and below gets its
+//                               patches checked too)
 //   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
 //                               (8 quads around it), off the integer points refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
@@ -62,6 +64,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Gmpq.h>
@@ -575,6 +578,22 @@ static void test_patch_refusals()
     for(const SS::Quad_patch_location<Mesh>& l : locations) assert(l.patch == 12345);
     std::printf("quad: patches refused: %s\n", r.message.c_str());
   }
+  // a quad mesh with a removed face (Surface_mesh keeps its index until collect_garbage()): refused, naming the cure;
+  // after collect_garbage() a torus of 5 x 5 quads with a hole, whose 4 corners send motorcycles: rectangles
+  Mesh m; UV_map uv;
+  make_flat_torus(m, uv, 5, 5);
+  Quad_result q;
+  extract(m, uv, 1, q);
+  assert(q.report.status == SS::SUCCESS && q.q.number_of_faces() == 25);
+  CGAL::Euler::remove_face(q.q.halfedge(face_descriptor(12)), q.q);
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.q.num_faces());
+  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q.q));
+  SS::Quad_patches r = SS::quad_mesh_patches(q.q, pm);
+  assert(r.status == SS::INVALID_INPUT && r.message.find("collect_garbage()") != std::string::npos);
+  q.q.collect_garbage();
+  r = SS::quad_mesh_patches(q.q, pm);
+  assert(r.status == SS::SUCCESS && r.all_rectangles() && r.nodes == 4);
+  check_quad_patches(q.q, "torus 5 x 5 with a hole");
 }
 
 static void test_refusals()

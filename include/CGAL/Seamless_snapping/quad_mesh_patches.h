@@ -22,6 +22,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <chrono>
+#include <iterator>
 #include <cstddef>
 #include <iomanip>
 #include <sstream>
@@ -156,25 +157,31 @@ Quad_patches quad_mesh_patches(const PolygonMesh& qm, FacePatchMap patch_map,
   const auto him = CGAL::get_initialized_halfedge_index_map(qm, np);
   const auto fim = CGAL::get_initialized_face_index_map(qm, np);
   internal::quad::Quad_arrays m;
-  const std::size_t nh = std::size_t(num_halfedges(qm)), nf = std::size_t(num_faces(qm));
-  m.n_vertices = int(num_vertices(qm));
+  // the sizes of the ranges (num_faces() of a Surface_mesh may count removed faces), which the indices must fill
+  const std::size_t nh = std::size_t(std::distance(halfedges(qm).begin(), halfedges(qm).end())),
+                    nf = std::size_t(std::distance(faces(qm).begin(), faces(qm).end()));
+  m.n_vertices = int(std::distance(vertices(qm).begin(), vertices(qm).end()));
   m.next.resize(nh); m.opp.resize(nh); m.target.resize(nh); m.face.resize(nh); m.face_halfedge.resize(nf);
   std::vector<typename GT::halfedge_descriptor> hd(nh);
   std::vector<typename GT::face_descriptor> fd(nf);
   Quad_patches r;
-  auto out_of_range = [&](std::size_t i, std::size_t n, const char* what) {
-    if(i < n) return false;
-    r.message = std::string("the ") + what + " index map gives " + std::to_string(i) + ", not below the number of " + what +
-                "s " + std::to_string(n) + " (a Surface_mesh with removed elements: collect_garbage() first)";
+  // every index map a bijection onto 0 .. n - 1, else INVALID_INPUT (no array is read out of its range)
+  std::vector<char> seen_v(std::size_t(m.n_vertices), 0), seen_f(nf, 0), seen_h(nh, 0);
+  auto not_indexed = [&](std::size_t i, std::vector<char>& seen, const char* what) {
+    if(i < seen.size() && !seen[i]) { seen[i] = 1; return false; }
+    r.message = std::string("the ") + what + " index map gives " + std::to_string(i) + (i < seen.size() ? " twice" :
+                ", not below the number of " + std::string(what) + "s " + std::to_string(seen.size())) +
+                " (a Surface_mesh with removed elements: collect_garbage() first; else pass an index map)";
+    r.total_ms = internal::ms_since(t0);
     return true;
   };
   for(typename GT::vertex_descriptor v : vertices(qm))
-    if(out_of_range(std::size_t(get(vim, v)), std::size_t(m.n_vertices), "vertex")) return r;
+    if(not_indexed(std::size_t(get(vim, v)), seen_v, "vertex")) return r;
   for(typename GT::face_descriptor f : faces(qm))
-    if(out_of_range(std::size_t(get(fim, f)), nf, "face")) return r;
+    if(not_indexed(std::size_t(get(fim, f)), seen_f, "face")) return r;
   for(typename GT::halfedge_descriptor h : halfedges(qm)) {
     const std::size_t i = std::size_t(get(him, h));
-    if(out_of_range(i, nh, "halfedge")) return r;
+    if(not_indexed(i, seen_h, "halfedge")) return r;
     hd[i] = h;
     m.next[i] = int(get(him, next(h, qm)));
     m.opp[i] = int(get(him, opposite(h, qm)));
