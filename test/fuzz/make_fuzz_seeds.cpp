@@ -8,15 +8,18 @@
 // Author(s)     : The Seamless Snapping authors
 
 // Writes the seed corpora of the fuzz targets, all generated (no data files are read):
-//   make_fuzz_seeds DIR   ->  DIR/obj_snap/*.obj, DIR/projection/*.bin
+//   make_fuzz_seeds DIR   ->  DIR/obj_snap/*.obj, DIR/projection/*.bin, DIR/quad_patches/*.bin
 // obj_snap: Orbifold Tutte maps (Square: 3 cones, Parallelogram: 4 cones) of a Loop-subdivided
 // icosahedron, as written (seamless up to solver error), with UV noise, scaled by 2^30, as a cut
 // mesh to be welded ("#weld" first line), and a few small hand-made files.
 // projection: small seamless-like and random systems of test/Seamless_snapping/generators.h with
 // noisy inputs, in the byte format of projection_bytes.h, and a few hand-made edge cases.
+// quad_patches: quad meshes in the byte format of quad_patches_bytes.h: grids of 2 x 2 and 3 x 3 quads, a cube, a
+// 3 x 3 torus, the torus with its garbage collected after nothing was removed.
 // Deterministic: the same files on every run.
 
 #include "projection_bytes.h"
+#include "quad_patches_bytes.h"
 
 #include "../Seamless_snapping/generators.h"
 #include "../Seamless_snapping/mesh_test_support.h"
@@ -182,14 +185,35 @@ static void projection_seeds(const fs::path& dir)
               small_system(3, { { { 0, 1 }, { 0, 1 }, { 1, -2 } } }, { 0 }), { 1., 0.5, 123.456 }, 0);
 }
 
+static void quad_patches_seeds(const fs::path& dir)
+{
+  auto grid = [](int n) {
+    std::vector<std::array<int, 4> > q;
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) q.push_back({{j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i}});
+    return q;
+  };
+  std::vector<std::array<int, 4> > torus;
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i) torus.push_back({{3 * j + i, 3 * j + (i + 1) % 3, 3 * ((j + 1) % 3) + (i + 1) % 3, 3 * ((j + 1) % 3) + i}});
+  const std::vector<std::array<int, 4> > cube = {{{0, 3, 2, 1}}, {{4, 5, 6, 7}}, {{0, 1, 5, 4}}, {{1, 2, 6, 5}}, {{2, 3, 7, 6}}, {{3, 0, 4, 7}}};
+  write_file(dir / "grid_2.bin", SS_fuzz::quad_soup_bytes(9, grid(2)));
+  write_file(dir / "grid_3.bin", SS_fuzz::quad_soup_bytes(16, grid(3)));
+  write_file(dir / "cube.bin", SS_fuzz::quad_soup_bytes(8, cube));
+  write_file(dir / "torus_3.bin", SS_fuzz::quad_soup_bytes(9, torus));
+  write_file(dir / "torus_3_garbage.bin", SS_fuzz::quad_soup_bytes(9, torus, true));
+}
+
 int main(int argc, char** argv)
 {
   if(argc != 2) { std::cerr << "usage: make_fuzz_seeds DIR" << std::endl; return EXIT_FAILURE; }
   const fs::path dir(argv[1]);
   fs::create_directories(dir / "obj_snap");
   fs::create_directories(dir / "projection");
+  fs::create_directories(dir / "quad_patches");
   obj_seeds(dir / "obj_snap");
   projection_seeds(dir / "projection");
+  quad_patches_seeds(dir / "quad_patches");
   std::cout << "make_fuzz_seeds: " << files << " seed files in " << dir.string() << std::endl;
   return EXIT_SUCCESS;
 }
