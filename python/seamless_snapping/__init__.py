@@ -28,7 +28,8 @@ import numpy as np
 from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
-           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "DIRECTIONS", "SnapError", "InputError",
+           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "DIRECTIONS", "SnapError",
+           "InputError",
            "__version__"]
 __version__ = _core.version
 
@@ -319,3 +320,25 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_fai
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return QV, QF, report
+
+
+def quad_mesh_patches(QF, *, raise_on_failure=True):
+    """The patches of a quad mesh given by QF (#QF x 4 int, rows of vertex indices, counter-clockwise, e.g. the QF of
+    extract_quad_mesh() or of another quad mesher): its motorcycle graph (traces along the quad edges from every
+    vertex of valence other than 4 and border vertex with other than 2 quads, each stopping at an earlier one, C++
+    quad_mesh_patches()) cuts it into rectangles of quads.
+
+    Returns the report as a dict: "status", "message", "patches", "rectangles", "all_rectangles", "nodes",
+    "motorcycles", "sizes" ([width, height] per patch, [0, 0] for one that is not a rectangle), and per row of QF
+    "QF_patch" (its patch; -1 where nothing was computed), "QF_patch_cell" (#QF x 2: its cell (i, j) in the patch's
+    grid) and "QF_patch_corner" (the rank k in its row of the vertex at the cell's corner (i, j); QF[q, (k + 1) % 4]
+    is at (i + 1, j), and so on counter-clockwise). A row that cannot be added to a manifold quad mesh (a repeated
+    vertex, an edge already in two quads or in one in the same direction) raises InputError; a vertex whose quads
+    form several fans gives "INVALID_INPUT" (SnapError, or the report with raise_on_failure=False).
+    """
+    out = _core.quad_mesh_patches(_integer_array(QF, "QF", "rows of 4 vertex indices"))
+    report = json.loads(out.pop("patches"))
+    report.update(out)
+    if report["status"] != "SUCCESS" and raise_on_failure:
+        raise SnapError(report)
+    return report

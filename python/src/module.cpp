@@ -13,6 +13,8 @@
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 
+#include <CGAL/boost/graph/Euler_operations.h>
+
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -20,10 +22,13 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -347,6 +352,35 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
 }
 
 // The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
+// the patches of the quad mesh q (quad_mesh_patches()) into `out`: per quad its patch, its cell (i, j) and the rank in its
+// row of QF of the vertex at the cell's corner (i, j) (QF lists the targets of halfedge(f), next(), ...), and the report
+void add_patches(Mesh& q, py::dict& out)
+{
+  auto patch = q.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+  const SS::Quad_patches patches = SS::quad_mesh_patches(q, patch);
+  const py::ssize_t nf = py::ssize_t(q.number_of_faces());
+  py::array_t<long long> patch_id(nf), cell({nf, py::ssize_t(2)}), corner(nf);
+  auto pa = patch_id.mutable_unchecked<1>();
+  auto ce = cell.mutable_unchecked<2>();
+  auto co = corner.mutable_unchecked<1>();
+  for(Mesh::Face_index f : q.faces()) {
+    const SS::Quad_patch_location<Mesh>& l = patch[f];
+    const py::ssize_t i = py::ssize_t(f);
+    pa(i) = patches.status == SS::SUCCESS ? (long long)(l.patch) : -1;
+    ce(i, 0) = l.i;
+    ce(i, 1) = l.j;
+    int k = 0;
+    if(patches.status == SS::SUCCESS)
+      for(Mesh::Halfedge_index h = q.halfedge(f); h != l.bottom; h = q.next(h)) ++k;
+    co(i) = (k + 3) % 4;
+  }
+  q.remove_property_map(patch);
+  out["QF_patch"] = patch_id;
+  out["QF_patch_cell"] = cell;
+  out["QF_patch_corner"] = corner;
+  out["patches"] = patches.to_json();
+}
+
 py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
                             double grid_scale)
 {
@@ -400,29 +434,36 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   origins["QV_vertex"] = vertex;
   origins["QV_uv"] = uv;
   origins["QF_faces"] = faces;
-  // the patches of the quad mesh (quad_mesh_patches()): per quad its patch, its cell (i, j) and the rank in its QF row
-  // of the vertex at the cell's corner (i, j) (QF lists the targets of halfedge(f), next(), ...)
-  auto patch = q.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
-  const SS::Quad_patches patches = SS::quad_mesh_patches(q, patch);
-  py::array_t<long long> patch_id(nf), cell({nf, py::ssize_t(2)}), corner(nf);
-  auto pa = patch_id.mutable_unchecked<1>();
-  auto ce = cell.mutable_unchecked<2>();
-  auto co = corner.mutable_unchecked<1>();
-  for(Mesh::Face_index f : q.faces()) {
-    const SS::Quad_patch_location<Mesh>& l = patch[f];
-    const py::ssize_t i = py::ssize_t(f);
-    pa(i) = (long long)(l.patch);
-    ce(i, 0) = l.i;
-    ce(i, 1) = l.j;
-    int k = 0;
-    for(Mesh::Halfedge_index h = q.halfedge(f); h != l.bottom; h = q.next(h)) ++k;
-    co(i) = (k + 3) % 4;
-  }
-  origins["QF_patch"] = patch_id;
-  origins["QF_patch_cell"] = cell;
-  origins["QF_patch_corner"] = corner;
-  origins["patches"] = patches.to_json();
+  add_patches(q, origins);
   return py::make_tuple(QV, QF, r.to_json(), origins);
+}
+
+// quad_mesh_patches() on the quads of QF (#QF x 4 rows of vertex indices, counter-clockwise), built face by face with
+// Euler::add_face(): the patches of extract_quad_mesh()'s report; a row that cannot be added (a repeated vertex, an
+// index out of range, an edge in two quads in one direction or in a third quad) is named (InputError)
+py::dict quad_mesh_patches(const MatrixXlR& QF)
+{
+  Mesh q;
+  py::dict out;
+  {
+    if(QF.cols() != 4) throw Input_error("QF must have 4 columns (quads), not " + std::to_string(QF.cols()));
+    long long nv = 0;
+    for(Eigen::Index r = 0; r < QF.rows(); ++r)
+      for(Eigen::Index c = 0; c < QF.cols(); ++c) {
+        if(QF(r, c) < 0 || QF(r, c) >= (1LL << 31)) throw Input_error("QF[" + std::to_string(r) + ", " + std::to_string(c) + "] is not a vertex index");
+        nv = (std::max)(nv, (long long)QF(r, c) + 1);
+      }
+    for(long long v = 0; v < nv; ++v) q.add_vertex(Mesh::Point(0, 0, 0));
+    for(Eigen::Index r = 0; r < QF.rows(); ++r) {
+      std::array<Mesh::Vertex_index, 4> c;
+      for(int k = 0; k < 4; ++k) c[std::size_t(k)] = Mesh::Vertex_index(Mesh::size_type(QF(r, k)));
+      if(std::set<Mesh::Vertex_index>(c.begin(), c.end()).size() != 4 || CGAL::Euler::add_face(c, q) == Mesh::null_face())
+        throw Input_error("QF row " + std::to_string(r) + " cannot be added to a manifold quad mesh (a repeated vertex, "
+                          "or an edge already in two quads or in one in the same direction)");
+    }
+  }
+  add_patches(q, out);
+  return out;
 }
 
 } // namespace
@@ -448,6 +489,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
   m.def("trace_isoline", &trace_isoline, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("face"),
         py::arg("corner"), py::arg("direction"), py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
+  m.def("quad_mesh_patches", &quad_mesh_patches, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("grid_scale"));
   m.attr("version") = "0.1.0";

@@ -677,6 +677,30 @@ def test_extract_quad_mesh_refusals():
     assert r["advice"].startswith("untangle the map first") and r["message"].endswith("; " + r["advice"])
 
 
+def test_quad_mesh_patches_standalone():
+    n = 5                                                  # a grid of n x n quads: one patch, its 4 corners the nodes
+    idx = lambda i, j: j * (n + 1) + i
+    grid = np.array([[idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)] for j in range(n) for i in range(n)])
+    r = ss.quad_mesh_patches(grid)
+    assert r["status"] == "SUCCESS" and r["all_rectangles"] and r["nodes"] == 4 and r["motorcycles"] == 0
+    assert r["sizes"] == [[n, n]] and sorted(map(tuple, r["QF_patch_cell"])) == [(i, j) for i in range(n) for j in range(n)]
+    # the quad mesh of an extracted map: rectangles covering it, as in extract_quad_mesh()'s report
+    V, F, UV, FUV = flat_torus(n=4)
+    QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
+    r = ss.quad_mesh_patches(QF)
+    assert r["all_rectangles"] and sum(w * h for w, h in r["sizes"]) == len(QF) == 16
+    # refusals: rows that are no quad of a manifold mesh (InputError), a vertex with two fans (INVALID_INPUT)
+    for bad in [grid[:, :3], np.array([[0, 1, 1, 2]]), np.array([[0, 1, 2, 3], [0, 1, 4, 5]]), np.array([[0, 1, 2, -3]])]:
+        with pytest.raises(ss.InputError):
+            ss.quad_mesh_patches(bad)
+    pinched = np.array([[0, 1, 2, 3], [0, 4, 5, 6]])
+    with pytest.raises(ss.SnapError) as err:
+        ss.quad_mesh_patches(pinched)
+    assert err.value.report["status"] == "INVALID_INPUT" and "vertex 0 is not manifold" in err.value.report["message"]
+    r = ss.quad_mesh_patches(pinched, raise_on_failure=False)
+    assert r["status"] == "INVALID_INPUT" and list(r["QF_patch"]) == [-1, -1]
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
