@@ -10,7 +10,7 @@
 // <name>_param.obj, see ../shared/reference/README.md): its V, F, valences, closed and manifold, measured
 // here from the OBJ file. A second table gives the valence histograms, a third the patches of each quad mesh
 // (quad_mesh_patches(): its motorcycle graph along the quad edges): patches, how many are rectangles, nodes,
-// motorcycles, separatrix edges, the largest patch (width x height) and the time.
+// motorcycles, separatrix edges, the largest patch (width x height), the time, and the patches of libQEx's stored mesh.
 //
 // usage: bench_quad [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
@@ -64,6 +64,7 @@ struct Reference
   std::size_t V = 0, F = 0, non_quads = 0, border_edges = 0, non_manifold_edges = 0;
   bool polygon_mesh = false;      // a manifold, consistently oriented polygon mesh (CGAL's test)
   std::vector<std::size_t> valences;
+  std::string patches = "-";      // its patches (quad_mesh_patches()), where it is a polygon mesh of quads
 };
 
 static Reference read_reference(const fs::path& file)
@@ -95,6 +96,14 @@ static Reference read_reference(const fs::path& file)
     ++r.valences[d];
   }
   r.polygon_mesh = CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+  if(r.polygon_mesh && r.non_quads == 0) {
+    Mesh m;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, m);
+    auto patch = m.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+    const SS::Quad_patches pt = SS::quad_mesh_patches(m, patch);
+    r.patches = pt.status == SS::SUCCESS ? std::to_string(pt.patches.size()) + " (" + std::to_string(pt.rectangles) +
+                                           " rectangles, " + std::to_string(pt.nodes) + " nodes)" : SS::status_name(pt.status);
+  }
   return r;
 }
 
@@ -189,17 +198,18 @@ int main(int argc, char** argv)
     const SS::Quad_patches pt = SS::quad_mesh_patches(quads, patch);
     std::size_t largest = 0;
     for(std::size_t k = 1; k < pt.patches.size(); ++k) if(pt.patches[k].quads > pt.patches[largest].quads) largest = k;
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f |", name.c_str(), SS::status_name(pt.status),
+    char row[384];
+    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f | %s |", name.c_str(), SS::status_name(pt.status),
                   pt.patches.size(), pt.rectangles, pt.nodes, pt.motorcycles, pt.separatrix_edges,
-                  pt.patches.empty() ? 0 : pt.patches[largest].width, pt.patches.empty() ? 0 : pt.patches[largest].height, pt.total_ms);
+                  pt.patches.empty() ? 0 : pt.patches[largest].width, pt.patches.empty() ? 0 : pt.patches[largest].height, pt.total_ms,
+                  ref.found ? ref.patches.c_str() : "-");
     patch_rows.push_back(row);
     std::fflush(stdout);
   }
   std::printf("\n| model | mesh | valences (valence:vertices) |\n|---|---|---|\n");
   for(const std::string& h : histograms) std::printf("%s\n", h.c_str());
-  std::printf("\n| model | patches status | patches | rectangles | nodes | motorcycles | separatrix edges | largest patch | ms |\n"
-              "|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n| model | patches status | patches | rectangles | nodes | motorcycles | separatrix edges | largest patch | ms |"
+              " libQEx's mesh: patches |\n|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& r : patch_rows) std::printf("%s\n", r.c_str());
   return 0;
 }
