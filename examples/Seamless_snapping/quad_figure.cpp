@@ -10,7 +10,8 @@
 // Panels: (1) the input map in UV: its outline (the mesh cut open along its cut edges is a disk; red), the
 // isolines u, v = k / GRID_SCALE (grey), the cones; (2) the exact integer-grid map, likewise, with the quad
 // vertices (the integer points, blue) and the cones on them; (3) the quad mesh in 3D (orthographic, painter's
-// algorithm), cones in red.
+// algorithm), cones in red, each of its rectangle patches (quad_mesh_patches()) in its own colour, the separatrices
+// between them dark.
 // The orbifold map is seamless up to solver error (about 1e-14 of its size), so panels 1 and 2 look alike:
 // what differs is exactness, which the program checks (is_exact_integer_grid_map()) before it draws.
 
@@ -20,6 +21,7 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>   // farthest_point_cones(), make_orbifold_tutte_uv()
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
@@ -167,11 +169,14 @@ int main(int argc, char** argv)
   Mesh quads;
   const SS::Quad_mesh_report q = SS::extract_quad_mesh(mesh, igm, quads, SS::parameters::grid_scale(S));
   if(q.status != SS::SUCCESS) return fail(std::string("quad mesh: ") + SS::status_name(q.status) + ": " + q.message);
+  auto patch = quads.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
+  const SS::Quad_patches patches = SS::quad_mesh_patches(quads, patch);
+  if(!patches.all_rectangles()) return fail("patches: " + patches.message);
 
   // --- SVG: three panels
   const double P = 300, margin = 20, top = 40;
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 3 * P + 4 * margin << "\" height=\"" << top + P + 80
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 3 * P + 4 * margin << "\" height=\"" << top + P + 97
       << "\" font-family=\"sans-serif\" font-size=\"13\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const char* titles[3] = {"input map (Orbifold Tutte)", "exact integer-grid map", "quad mesh"};
   for(int k = 0; k < 3; ++k)
@@ -220,23 +225,35 @@ int main(int argc, char** argv)
     const K::Vector_3 n = CGAL::cross_product(c[2] - c[0], c[3] - c[1]);
     const double len = std::sqrt(n.squared_length());
     if(len == 0 || n.z() <= 0) continue;              // facing away (the viewer looks along -z)
-    const int shade = int(110 + 130 * n.z() / len);
+    const double shade = (110 + 130 * n.z() / len) / 240;
+    static const int palette[6][3] = {{150, 190, 240}, {245, 180, 110}, {150, 215, 150}, {215, 160, 215}, {235, 215, 120}, {140, 210, 210}};
+    const int* base = palette[get(patch, df.second).patch % 6];
     svg << "<polygon points=\"";
     for(const Point_3& p : c) svg << fmt(screen(p).x()) << "," << fmt(screen(p).y()) << " ";
-    svg << "\" fill=\"rgb(" << shade * 3 / 4 << "," << shade * 7 / 8 << "," << shade << ")\" stroke=\"#223\" stroke-width=\"0.6\"/>\n";
+    svg << "\" fill=\"rgb(" << int(base[0] * shade) << "," << int(base[1] * shade) << "," << int(base[2] * shade)
+        << ")\" stroke=\"#223\" stroke-width=\"0.6\"/>\n";
+    halfedge_descriptor h = quads.halfedge(df.second);             // its sides on separatrices (other patch across)
+    for(int k = 0; k < 4; ++k, h = quads.next(h)) {
+      const halfedge_descriptor o = quads.opposite(h);
+      if(quads.is_border(o) || get(patch, quads.face(o)).patch == get(patch, df.second).patch) continue;
+      const Point_2 a = screen(view(quads.point(quads.source(h)))), b = screen(view(quads.point(quads.target(h))));
+      svg << "<line x1=\"" << fmt(a.x()) << "\" y1=\"" << fmt(a.y()) << "\" x2=\"" << fmt(b.x()) << "\" y2=\"" << fmt(b.y())
+          << "\" stroke=\"#112\" stroke-width=\"2\"/>\n";
+    }
   }
   for(Mesh::Vertex_index v : quads.vertices())
     if(quads.degree(v) != 4) {
       const Point_2 p = screen(view(quads.point(v)));
       svg << "<circle cx=\"" << fmt(p.x()) << "\" cy=\"" << fmt(p.y()) << "\" r=\"3.5\" fill=\"#d62728\"/>\n";
     }
-  const std::string caption[3] = {
+  const std::string caption[4] = {
     "CGAL's bear (" + std::to_string(mesh.number_of_faces()) + " triangles), Orbifold Tutte Parallelogram map: 4 cones of 180 degrees "
     "(circles), red: the cut edges, grey: the isolines",
     "u, v = k / " + std::to_string(int(S)) + ". Middle: snapped to an exact integer-grid map; blue: its integer points, the quad vertices.",
     "Right: its " + std::to_string(q.quads) + " quads (= the exact UV area), " + std::to_string(q.quad_vertices) +
-    " vertices, closed, manifold, Euler characteristic " + std::to_string(q.euler_characteristic) + "; red: the cones, valence 2."};
-  for(int l = 0; l < 3; ++l)
+    " vertices, closed, manifold, Euler characteristic " + std::to_string(q.euler_characteristic) + "; red: the cones, valence 2;",
+    "colours: its " + std::to_string(patches.patches.size()) + " rectangle patches (quad_mesh_patches()), dark: the separatrices between them."};
+  for(int l = 0; l < 4; ++l)
     svg << "<text x=\"" << margin << "\" y=\"" << top + P + 25 + 17 * l << "\">" << caption[l] << "</text>\n";
   svg << "</svg>\n";
   if(SS::IO::internal::write_text_atomically(argv[2], svg.str(), msg) != SS::SUCCESS) return fail(msg);
