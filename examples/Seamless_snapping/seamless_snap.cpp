@@ -416,8 +416,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                 report.field_cones);
   }
   if(!integer_grid && report.near_integer_grid_map && !quiet)
-    std::cout << "note: the input looks like an integer-grid map (every seam translation and cone within 1e-6 of "
-              << "integers); use --integer-grid to keep it one exactly (quad extraction, e.g. libQEx)\n";
+    std::cout << "note: the input looks like an integer-grid map (every seam translation, cone and align edge within 1e-6 "
+              << "of integers); use --integer-grid to keep it one exactly (quad extraction, e.g. libQEx)\n";
   if(!integer_grid && report.status == SS::SUCCESS &&
      report.cones_on_integer_points_after < report.cones_on_integer_points_before)
     std::cerr << "seamless_snap: warning: " << report.cones_on_integer_points_before - report.cones_on_integer_points_after

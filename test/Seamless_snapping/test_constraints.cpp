@@ -619,7 +619,7 @@ static void test_integer_grid_analytic()
     std::cout << "integer grid: a finer grid scale named for a cone: " << message << "\n";
   }
   // a 2 x 2 grid mapped to [0.25, 1.25]^2 (no seam): its border edges are align edges on the isolines 0.25 and 1.25,
-  // integers at grid scale 4, which is named; it snaps there (already exact)
+  // integers at grid scale 4, which is named; it snaps there (already exact); Snap_report::near_integer_grid_map says so
   {
     Mesh m;
     triangulated_grid(m, 2, true);
@@ -628,6 +628,14 @@ static void test_integer_grid_analytic()
       if(!m.is_border(h)) put(uv, h, Point_2(m.point(m.target(h)).x() / 2 + 0.25, m.point(m.target(h)).y() / 2 + 0.25));
     const SS::Snap_report r = check_finer_grid_scale_named(m, uv, 1, SS::INVALID_INPUT, 4);
     assert(r.align_edges == 8 && r.message.find("align edge (") != std::string::npos);
+    // the default snap does not call it an integer-grid map at grid scale 1 (its align edges are off the integers),
+    // but does at grid scale 4, where they lie on the isolines 1 and 5
+    for(double S : {1., 4.}) {
+      Mesh c = m;
+      UV_map cuv = uv_of(c);
+      const SS::Snap_report d = SS::snap_seamless_parameterization(c, cuv, SS::parameters::grid_scale(S));
+      assert(d.status == SS::SUCCESS && d.align_edges == 8 && d.near_integer_grid_map == (S == 4));
+    }
     std::cout << "integer grid: a finer grid scale named for align edges: " << r.message << "\n";
   }
   // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)

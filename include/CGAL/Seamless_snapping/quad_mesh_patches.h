@@ -68,7 +68,7 @@ struct Quad_patches
 {
   Status status = INVALID_INPUT;     ///< `SUCCESS`, or `INVALID_INPUT` (nothing written): a face is not a quad, a vertex is not manifold
   std::string message;               ///< what was found, or why not (naming the face or vertex)
-  std::vector<Quad_patch> patches;   ///< indexed by `Quad_patch_location::patch`, numbered in the order of their first quad in `faces(qm)`
+  std::vector<Quad_patch> patches;   ///< indexed by `Quad_patch_location::patch`, numbered in the order of their quads of smallest face index
   std::size_t rectangles = 0;        ///< patches with `rectangle` set
   std::size_t nodes = 0;             ///< interior vertices of valence other than 4 and border vertices with other than 2 quads
   std::size_t motorcycles = 0;       ///< traces started (one per edge with two quads at each node; from the first vertex where there is no node)

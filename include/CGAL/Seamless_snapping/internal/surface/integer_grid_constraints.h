@@ -177,21 +177,6 @@ inline bool cones_near_integers(const Corner_mesh& cm, const Seam_topology& st, 
   return true;
 }
 
-// true iff every cut-edge translation (at both ends) and every corner of every cone of the field is
-// within `tolerance` of an integer (the input "looks like" an integer-grid map)
-inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                   const std::vector<double>& x, double tolerance)
-{
-  auto near = [tolerance](double a) { return std::fabs(a - std::nearbyint(a)) <= tolerance; };
-  for(int e : st.cut_edges)
-    for(bool front : {true, false}) {
-      double t[2];
-      translation(cm, st, rot, cm.edge_halfedge[e], front, x, t);
-      if(!near(t[0]) || !near(t[1])) return false;
-    }
-  return cones_near_integers(cm, st, rot, x, tolerance);
-}
-
 struct Integer_grid_rows_result
 {
   std::vector<int> cones;                 // vertices pinned to integer points (cones of the field)
@@ -223,6 +208,21 @@ inline bool align_edges_near_isolines(const Corner_mesh& cm, const Seam_topology
     if(!(std::fabs(r) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) return false;
   }
   return true;
+}
+
+// true iff every cut-edge translation (at both ends), every corner of every cone of the field and both ends of every
+// align edge of `al` (one isoline each) are within `tolerance` of an integer (the input "looks like" an integer-grid map)
+inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const Align_edges& al,
+                                   const std::vector<double>& x, double tolerance)
+{
+  auto near = [tolerance](double a) { return std::fabs(a - std::nearbyint(a)) <= tolerance; };
+  for(int e : st.cut_edges)
+    for(bool front : {true, false}) {
+      double t[2];
+      translation(cm, st, rot, cm.edge_halfedge[e], front, x, t);
+      if(!near(t[0]) || !near(t[1])) return false;
+    }
+  return cones_near_integers(cm, st, rot, x, tolerance) && align_edges_near_isolines(cm, st, al, x, tolerance, 0);
 }
 
 // The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation (at both

@@ -340,7 +340,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   report.integer_translations_before = before.integer_translations;
   report.field_cones = before.field_cones;
   report.cones_on_integer_points_before = before.cones_on_integer_points;
-  report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, ubar_grid, 1e-6);
+  report.near_integer_grid_map = near_integer_structure(S.cm, S.st, S.rot, S.al, ubar_grid, 1e-6);
   std::vector<long>& translations = S.translations;   // integer-grid mode: rounded, changed by merging and separating
   std::vector<char> moved;                   // per vertex: on a path along which separating moved cones
   std::vector<int>& merged = S.merged_valence;
