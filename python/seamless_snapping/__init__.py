@@ -28,8 +28,8 @@ import numpy as np
 from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
-           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "DIRECTIONS", "SnapError",
-           "InputError",
+           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
+           "DIRECTIONS", "SnapError", "InputError",
            "__version__"]
 __version__ = _core.version
 
@@ -342,3 +342,22 @@ def quad_mesh_patches(QF, *, raise_on_failure=True):
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return report
+
+
+def patch_vertex_grids(QF, report):
+    """The vertices of each rectangle patch as a grid: for the report of quad_mesh_patches(QF) or of
+    extract_quad_mesh() (the one that gave QF), a list with, per patch, an int array of shape (height + 1, width + 1)
+    whose entry [j, i] is the vertex (row of QV) at the patch's grid point (i, j), e.g. the control points of a spline
+    patch fitted to it; None for a patch that is not a rectangle. Where a patch meets itself across a trail (a band
+    cut open once), the vertices of those two sides appear on both sides of its grid."""
+    patches = report["patches"] if "patches" in report and isinstance(report["patches"], dict) else report
+    if patches["status"] != "SUCCESS":
+        raise SnapError(patches)
+    QF = np.asarray(QF)
+    grids = [None if w == 0 else np.full((h + 1, w + 1), -1, dtype=np.int64) for w, h in patches["sizes"]]
+    offsets = ((0, 0), (1, 0), (1, 1), (0, 1))                 # the cell's corners, counter-clockwise from (i, j)
+    for q, (p, (i, j), k) in enumerate(zip(report["QF_patch"], report["QF_patch_cell"], report["QF_patch_corner"])):
+        if grids[p] is not None:
+            for t, (di, dj) in enumerate(offsets):
+                grids[p][j + dj, i + di] = QF[q][(k + t) % 4]
+    return grids

@@ -645,6 +645,9 @@ def check_quad_mesh(V, F, UV, FUV, QV, QF, report, grid_scale=1.0, closed=True):
         cells.add((p, i, j))
         for t, (di, dj) in enumerate([(0, 0), (1, 0), (1, 1), (0, 1)]):
             assert grid.setdefault((p, i + di, j + dj), QF[q][(k + t) % 4]) == QF[q][(k + t) % 4]
+    grids = ss.patch_vertex_grids(QF, report)               # the same grid points as arrays
+    assert all(grids[p][j, i] == v for (p, i, j), v in grid.items())
+    assert all(g.shape == (h + 1, w + 1) and (g >= 0).all() for g, (w, h) in zip(grids, patches["sizes"]))
 
 
 def test_extract_quad_mesh_generated():
@@ -684,6 +687,9 @@ def test_quad_mesh_patches_standalone():
     r = ss.quad_mesh_patches(grid)
     assert r["status"] == "SUCCESS" and r["all_rectangles"] and r["nodes"] == 4 and r["motorcycles"] == 0
     assert r["sizes"] == [[n, n]] and sorted(map(tuple, r["QF_patch_cell"])) == [(i, j) for i in range(n) for j in range(n)]
+    g = ss.patch_vertex_grids(grid, r)                      # the grid's vertices, row by row, up to the patch's frame
+    assert len(g) == 1 and g[0].shape == (n + 1, n + 1) and sorted(g[0].ravel()) == list(range((n + 1) ** 2))
+    assert any(np.array_equal(np.rot90(g[0], t), np.arange((n + 1) ** 2).reshape(n + 1, n + 1)) for t in range(4))
     # the quad mesh of an extracted map: rectangles covering it, as in extract_quad_mesh()'s report
     V, F, UV, FUV = flat_torus(n=4)
     QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
