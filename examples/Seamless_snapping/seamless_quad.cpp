@@ -304,11 +304,7 @@ int main(int argc, char** argv)
       first[f] = std::int32_t(covered[f].front()); count[f] = std::int32_t(covered[f].size());
       const SS::Quad_patch_location<Mesh>& l = patch[f];
       patch_id[f] = std::int32_t(l.patch); patch_i[f] = l.i; patch_j[f] = l.j;
-      // the face's vertices are written as the targets of halfedge(f), next(), ...: the bottom side, halfedge k of
-      // them, runs from vertex (k + 3) mod 4 of the list, the cell's corner (i, j), to vertex k
-      std::int32_t k = 0;
-      for(Mesh::Halfedge_index h = quads.halfedge(f); h != l.bottom; h = quads.next(h)) ++k;
-      patch_corner[f] = (k + 3) % 4;
+      patch_corner[f] = SS::patch_corner_rank(quads, f, l);   // in the order PLY lists the face's vertices
     }
     quads.remove_property_map(origin);
     quads.remove_property_map(covered);

@@ -369,10 +369,7 @@ void add_patches(Mesh& q, py::dict& out)
     pa(i) = patches.status == SS::SUCCESS ? (long long)(l.patch) : -1;
     ce(i, 0) = l.i;
     ce(i, 1) = l.j;
-    int k = 0;
-    if(patches.status == SS::SUCCESS)
-      for(Mesh::Halfedge_index h = q.halfedge(f); h != l.bottom; h = q.next(h)) ++k;
-    co(i) = (k + 3) % 4;
+    co(i) = patches.status == SS::SUCCESS ? SS::patch_corner_rank(q, f, l) : 0;
   }
   q.remove_property_map(patch);
   out["QF_patch"] = patch_id;

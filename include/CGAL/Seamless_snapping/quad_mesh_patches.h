@@ -50,6 +50,22 @@ struct Quad_patch_location
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
+ * returns the rank, 0 to 3, of the quad's vertex at its cell's corner `(i, j)` in the order in which
+ * `vertices_around_face(halfedge(f, qm), qm)` lists its vertices (the targets of `halfedge(f, qm)`, `next()`, ...), as
+ * file formats and index arrays list the quad: the next vertex in that order is at `(i + 1, j)`.
+ * \pre `l` is the location of face `f` that `quad_mesh_patches()` wrote
+ */
+template <class PolygonMesh>
+int patch_corner_rank(const PolygonMesh& qm, typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+                      const Quad_patch_location<PolygonMesh>& l)
+{
+  int k = 0;                                   // l.bottom is halfedge k of the face: from its vertex k - 1 to vertex k
+  for(auto h = halfedge(f, qm); h != l.bottom && k < 4; h = next(h, qm)) ++k;
+  return (k + 3) % 4;
+}
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
  * One patch of `quad_mesh_patches()`: quads connected across edges that no motorcycle ran along.
  */
 struct Quad_patch
