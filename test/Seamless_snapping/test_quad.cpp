@@ -32,6 +32,8 @@
 //   quad: refusals              fold-overs and zero-area triangles (FOLD_OVERS, exactly the faces counted here,
 //                               quad_valences() the same), a 90-degree cone (valence 1), a grid scale that is
 //                               not a power of two; the output mesh is unchanged on every refusal
+//   quad: patches refine        at twice the grid scale every patch is twice as long on both sides (the cubes at scales
+//                               1, 2, the bear at 2, 4, 8, the horse at 1, 2)
 //   quad: patches refused       quad_mesh_patches() on triangles, on two quads with one vertex in common, on a mesh
 //                               with a removed face: INVALID_INPUT, nothing written; the last after collect_garbage(),
 //                               a torus with a hole: 4 nodes, rectangles (every extracted mesh above and below gets its
@@ -282,6 +284,32 @@ static void check_quad_patches(const Mesh& q, const std::string& what)
               (what + ", patches").c_str(), r.patches.size(), r.nodes, r.motorcycles, wraps);
 }
 
+// The patch sizes of a quad mesh (quad_mesh_patches()), each as (shorter, longer) side, sorted. Refinement: the quad mesh
+// of a closed integer-grid map with cones at grid scale 2 S has the patches of the one at S, each twice as long on both
+// sides (its quads are those at S cut in four; the nodes are the same cones, the motorcycles start in the same order
+// and run along the same isolines, two rounds for one, and where two meet head-on in the middle of an edge at S, the
+// trails at 2 S cover that edge as well): checked where the tests extract one map at several scales (cubes, the bear,
+// the horse). Not for maps whose border is off the isolines (more cells fit at 2 S) or without nodes (seeded).
+static std::vector<std::pair<int, int> > patch_sizes(const Mesh& q)
+{
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
+  const SS::Quad_patches r = SS::quad_mesh_patches(q, boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q)));
+  assert(r.all_rectangles());
+  std::vector<std::pair<int, int> > sizes;
+  for(const SS::Quad_patch& p : r.patches) sizes.push_back(std::make_pair((std::min)(p.width, p.height), (std::max)(p.width, p.height)));
+  std::sort(sizes.begin(), sizes.end());
+  return sizes;
+}
+static void check_patches_refine(const std::vector<std::pair<int, int> >& coarse, const std::vector<std::pair<int, int> >& fine,
+                                 const std::string& what)
+{
+  std::vector<std::pair<int, int> > doubled;
+  for(const std::pair<int, int>& p : coarse) doubled.push_back(std::make_pair(2 * p.first, 2 * p.second));
+  if(doubled != fine) std::cerr << what << ": " << coarse.size() << " patches at the coarser scale, " << fine.size() << " at the finer" << std::endl;
+  assert(doubled == fine);
+  std::printf("quad: %-46s %zu patches, each twice as long on both sides at twice the grid scale\n", what.c_str(), fine.size());
+}
+
 // the same quad mesh, bit for bit: positions, faces, origins
 static bool same_quad_mesh(const Quad_result& a, const Quad_result& b)
 {
@@ -358,10 +386,13 @@ static void test_cube()
     Mesh m; UV_map uv;
     make_cube_map(m, uv, n);
     assert(CGAL::is_closed(m) && SS::is_exact_integer_grid_map(m, uv));
+    std::vector<std::pair<int, int> > coarser;
     for(double S : {1., 2.}) {
       Quad_result r;
       extract(m, uv, S, r);
       check_quad_mesh(m, uv, S, r, "cube " + std::to_string(n) + ", grid scale " + std::to_string(int(S)));
+      if(S == 2) check_patches_refine(coarser, patch_sizes(r.q), "cube " + std::to_string(n) + ", patches at scales 1, 2");
+      coarser = patch_sizes(r.q);
       assert(r.report.quads == std::size_t(6 * n * n * S * S) && r.report.euler_characteristic == 2);
       assert(r.report.cones == 8 && r.report.valence_histogram[3] == 8);
       // scale covariance: UVs times 2^-3 with grid_scale 8 S: the same mesh, bit for bit
@@ -676,6 +707,7 @@ static void test_bear_orbifold()
 {
   Mesh input; UV_map uv_in;
   if(!bear_orbifold(input, uv_in, SMP::Parallelogram)) return;
+  std::vector<std::pair<int, int> > coarser;
   for(double S : {2., 4., 8.}) {
     Mesh m = input;
     UV_map uv = uv_of(m);
@@ -684,6 +716,8 @@ static void test_bear_orbifold()
     Quad_result r;
     extract(m, uv, S, r);
     check_quad_mesh(m, uv, S, r, "bear orbifold Parallelogram, scale " + std::to_string(int(S)));
+    if(S > 2) check_patches_refine(coarser, patch_sizes(r.q), "bear orbifold, patches at scales " + std::to_string(int(S / 2)) + ", " + std::to_string(int(S)));
+    coarser = patch_sizes(r.q);
     assert(r.report.euler_characteristic == 2 && r.report.cones == 4 && r.report.valence_histogram[2] == 4);
     if(S == 8) {                                    // the map scaled by 2^-5, grid_scale 2^8: the same mesh
       Mesh small = m;
@@ -795,11 +829,14 @@ static void test_shared_data()
       ++quarter_cones;
       continue;
     }
+    std::vector<std::pair<int, int> > coarser;
     for(double S : {1., 2.}) {
       if(S == 2 && name.find("horse") == std::string::npos) continue;
       Quad_result r;                             // an IGM at grid scale 1 is one at 2 as well
       extract(m, uv, S, r);
       check_quad_mesh(m, uv, S, r, name + ", grid scale " + std::to_string(int(S)));
+      if(S == 2) check_patches_refine(coarser, patch_sizes(r.q), name + ", patches at scales 1, 2");
+      coarser = patch_sizes(r.q);
       ++extracted;
       if(S == 1) {                               // cut invariance (test_cut_invariance()), on real maps
         Mesh m2 = m;
