@@ -214,9 +214,10 @@ Quad_patches quad_mesh_patches(const PolygonMesh& qm, FacePatchMap patch_map,
     m.face_halfedge[std::size_t(get(fim, f))] = int(get(him, halfedge(f, qm)));
   }
 
-  r.message = internal::quad::quad_mesh_defect(m);
+  const internal::quad::Vertex_fans fans(m);
+  r.message = internal::quad::quad_mesh_defect(m, fans);
   if(!r.message.empty()) { r.message = "not a manifold quad mesh: " + r.message; r.total_ms = internal::ms_since(t0); return r; }
-  const internal::quad::Quad_patch_cells c = internal::quad::quad_patch_cells(m);
+  const internal::quad::Quad_patch_cells c = internal::quad::quad_patch_cells(m, fans);
   for(const internal::quad::Quad_patch_cells::Patch& p : c.patches) {
     Quad_patch q;
     q.quads = p.quads; q.rectangle = p.rectangle; q.width = p.width; q.height = p.height;

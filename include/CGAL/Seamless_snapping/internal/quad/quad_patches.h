@@ -64,8 +64,24 @@ struct Quad_patch_cells
   std::vector<char> trail;                // per halfedge: on a motorcycle's trail (both halfedges of the edge)
 };
 
+// Per vertex: its incoming halfedges (its degree), how many of them are border halfedges, and one of them (-1: isolated).
+struct Vertex_fans
+{
+  std::vector<int> degree, border_in, some_in;
+  explicit Vertex_fans(const Quad_arrays& m)
+    : degree(std::size_t(m.n_vertices), 0), border_in(std::size_t(m.n_vertices), 0), some_in(std::size_t(m.n_vertices), -1)
+  {
+    for(std::size_t h = 0; h < m.target.size(); ++h) {
+      const std::size_t v = std::size_t(m.target[h]);
+      ++degree[v];
+      border_in[v] += m.face[h] < 0 ? 1 : 0;
+      some_in[v] = int(h);
+    }
+  }
+};
+
 // Empty if the arrays form a manifold quad mesh, else why not.
-inline std::string quad_mesh_defect(const Quad_arrays& m)
+inline std::string quad_mesh_defect(const Quad_arrays& m, const Vertex_fans& fans)
 {
   for(std::size_t f = 0; f < m.face_halfedge.size(); ++f) {
     int n = 0, h = m.face_halfedge[f];
@@ -73,40 +89,28 @@ inline std::string quad_mesh_defect(const Quad_arrays& m)
     if(n != 4) return "face " + std::to_string(f) + " is not a quad";
   }
   // a manifold vertex: its incoming halfedges are one cycle of opp(next(h)), with at most one border halfedge
-  std::vector<int> in_degree(std::size_t(m.n_vertices), 0), border_in(std::size_t(m.n_vertices), 0), some_in(std::size_t(m.n_vertices), -1);
-  for(std::size_t h = 0; h < m.target.size(); ++h) {
-    const std::size_t v = std::size_t(m.target[h]);
-    ++in_degree[v];
-    border_in[v] += m.face[h] < 0 ? 1 : 0;
-    some_in[v] = int(h);
-  }
   for(int v = 0; v < m.n_vertices; ++v) {
-    const int h0 = some_in[std::size_t(v)];
+    const int h0 = fans.some_in[std::size_t(v)], degree = fans.degree[std::size_t(v)];
     if(h0 < 0) continue;                                      // isolated: no edge, no motorcycle
     int n = 0, h = h0;
-    do { ++n; h = m.opp[std::size_t(m.next[std::size_t(h)])]; } while(h != h0 && n <= in_degree[std::size_t(v)]);
-    if(n != in_degree[std::size_t(v)] || border_in[std::size_t(v)] > 1)
+    do { ++n; h = m.opp[std::size_t(m.next[std::size_t(h)])]; } while(h != h0 && n <= degree);
+    if(n != degree || fans.border_in[std::size_t(v)] > 1)
       return "vertex " + std::to_string(v) + " is not manifold (its quads form several fans)";
   }
   return std::string();
 }
 
-// Steps 1-3 (see the header). Precondition: quad_mesh_defect(m) is empty.
-inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m)
+// Steps 1-3 (see the header). Precondition: quad_mesh_defect(m, fans) is empty.
+inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m, const Vertex_fans& fans)
 {
   const std::size_t nh = m.next.size(), nf = m.face_halfedge.size(), nv = std::size_t(m.n_vertices);
   Quad_patch_cells out;
-  // per vertex: incoming halfedges, quads, border
-  std::vector<int> degree(nv, 0), quads(nv, 0), some_in(nv, -1);
-  std::vector<char> on_border(nv, 0);
-  for(std::size_t h = 0; h < nh; ++h) {
-    const std::size_t v = std::size_t(m.target[h]);
-    ++degree[v];
-    some_in[v] = int(h);
-    if(m.face[h] >= 0) ++quads[v]; else on_border[v] = 1;
-  }
+  const std::vector<int>& degree = fans.degree;
+  const std::vector<int>& some_in = fans.some_in;
+  auto on_border = [&](std::size_t v) { return fans.border_in[v] > 0; };
   auto interior_edge = [&](int h) { return m.face[std::size_t(h)] >= 0 && m.face[std::size_t(m.opp[std::size_t(h)])] >= 0; };
-  auto is_node = [&](std::size_t v) { return some_in[v] >= 0 && (on_border[v] ? quads[v] != 2 : degree[v] != 4); };
+  // a border vertex with other than 2 quads (its incoming halfedges but the border one), an interior one of valence other than 4
+  auto is_node = [&](std::size_t v) { return some_in[v] >= 0 && (on_border(v) ? degree[v] - fans.border_in[v] != 2 : degree[v] != 4); };
 
   // 1. motorcycles: the halfedge each runs along next
   std::vector<char> marked(nv, 0);
@@ -119,7 +123,7 @@ inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m)
     do { const int g = m.opp[std::size_t(h)]; if(interior_edge(g)) riding.push_back(g); h = m.opp[std::size_t(m.next[std::size_t(h)])]; } while(h != h0);
   };
   for(std::size_t v = 0; v < nv; ++v) if(is_node(v)) { ++out.nodes; launch(v); }
-  for(std::size_t v = 0; v < nv; ++v) if(on_border[v]) marked[v] = 1;
+  for(std::size_t v = 0; v < nv; ++v) if(on_border(v)) marked[v] = 1;
   if(riding.empty())
     for(std::size_t v = 0; v < nv; ++v) if(some_in[v] >= 0) { launch(v); break; }
   out.motorcycles = riding.size();
@@ -128,7 +132,7 @@ inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m)
     for(int g : riding) {
       out.trail[std::size_t(g)] = out.trail[std::size_t(m.opp[std::size_t(g)])] = 1;
       const std::size_t w = std::size_t(m.target[std::size_t(g)]);
-      if(marked[w]) { out.stops_on_trails += is_node(w) || on_border[w] ? 0 : 1; continue; }
+      if(marked[w]) { out.stops_on_trails += is_node(w) || on_border(w) ? 0 : 1; continue; }
       marked[w] = 1;                                          // a regular interior vertex: straight on
       still.push_back(m.next[std::size_t(m.opp[std::size_t(m.next[std::size_t(g)])])]);
     }
