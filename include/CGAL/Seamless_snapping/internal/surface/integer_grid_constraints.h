@@ -226,13 +226,12 @@ inline bool near_integer_structure(const Corner_mesh& cm, const Seam_topology& s
 }
 
 // The smallest k in 1..max_k such that at 2^k times the grid of `ubar` (grid units) every cut-edge translation (at both
-// ends), every corner of every cone of the field and, with `al`, both ends of every align edge are within `tolerance`
+// ends), every corner of every cone of the field and both ends of every align edge of `al` are within `tolerance`
 // of an integer (one isoline per align edge) below 2^52, 0 if none: a map whose grid lines lie at multiples of 2^-k
 // (scaling by a power of two is exact, so these are the values that grid scale gives; the half-integer points of 180
 // degree cones, for one, are integers at twice the grid scale). Each k stops at the first translation off the integers.
 inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                               const std::vector<double>& ubar, double tolerance, const Align_edges* al = nullptr,
-                               int max_k = 30)
+                               const std::vector<double>& ubar, double tolerance, const Align_edges& al, int max_k = 30)
 {
   for(int k = 1; k <= max_k; ++k) {
     bool all = true;
@@ -246,20 +245,19 @@ inline int finer_grid_exponent(const Corner_mesh& cm, const Seam_topology& st, c
         all = std::fabs(r) < 0x1p52 && std::fabs(b) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance;
       }
     }
-    if(all && cones_near_integers(cm, st, rot, ubar, tolerance, k) &&
-       (al == nullptr || align_edges_near_isolines(cm, st, *al, ubar, tolerance, k)))
+    if(all && cones_near_integers(cm, st, rot, ubar, tolerance, k) && align_edges_near_isolines(cm, st, al, ubar, tolerance, k))
       return k;
   }
   return 0;
 }
 
-// The end of a refusal of the integer-grid checks at `grid_scale` (the caller's, > 0): where finer_grid_exponent() finds
-// a finer grid scale, that one named ("; at grid scale ..."); else `otherwise`
+// The end of a refusal of the integer-grid checks at `grid_scale` (the caller's, > 0; with the align edges `al`): where
+// finer_grid_exponent() finds a finer grid scale, that one named ("; at grid scale ..."); else (or without `al`) `otherwise`
 inline std::string finer_grid_advice(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                      const Align_edges* al, const std::vector<double>& ubar, double tolerance,
                                      double grid_scale, const std::string& otherwise)
 {
-  const int k = grid_scale > 0 ? finer_grid_exponent(cm, st, rot, ubar, tolerance, al) : 0;
+  const int k = grid_scale > 0 && al != nullptr ? finer_grid_exponent(cm, st, rot, ubar, tolerance, *al) : 0;
   if(k == 0 || !std::isfinite(std::ldexp(grid_scale, k))) return otherwise;   // (no grid scale beyond the doubles named)
   const std::string finer = format_double(std::ldexp(grid_scale, k), 17);   // a power of two, read back exactly
   return "; at grid scale " + finer + " (" + std::to_string(1L << k) + " times this one) every translation, cone and " +
