@@ -66,6 +66,13 @@ static inline UV_map uv_of(Mesh& m)
   return m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
 }
 
+// every halfedge UV (border ones too) times 2^j, exactly where no bit is lost to underflow or overflow
+static inline void scale_uvs(const Mesh& m, UV_map uv, int j)
+{
+  for(halfedge_descriptor h : m.halfedges())
+    put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
+}
+
 // all halfedge UVs (also border ones), as raw bits
 static inline std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
 {

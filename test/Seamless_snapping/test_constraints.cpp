@@ -1245,8 +1245,7 @@ static void test_untangling_analytic()
     assert(ra.status == SS::SUCCESS && ra.untangled && ra.flips_after_repair == 0);
     for(int j : {-9, 13}) {
       Mesh b = m0; UV_map uvb = uv_of(b);
-      for(halfedge_descriptor h : b.halfedges())
-        put(uvb, h, Point_2(std::ldexp(get(uvb, h).x(), j), std::ldexp(get(uvb, h).y(), j)));
+      scale_uvs(b, uvb, j);
       const SS::Snap_report rb = SS::snap_seamless_parameterization(b, uvb, SS::parameters::integer_grid_map(igm)
                                                                        .grid_scale(std::ldexp(1., -j)).untangle(true));
       assert(rb.status == SS::SUCCESS && rb.untangled && rb.untangle_moved_sectors == ra.untangle_moved_sectors);

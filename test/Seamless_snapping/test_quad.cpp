@@ -157,9 +157,11 @@ static void check_origin(const Mesh& m, UV_map uv, double S, const Origin& o, co
 }
 
 // Checks r against m (see the header comment); `what` names the map in the output line.
-static void check_quad_patches(const Mesh& q, const std::string& what);
+typedef std::vector<std::pair<int, int> > Patch_sizes;   // per patch (shorter side, longer side), sorted
+static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what);
 
-static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
+// Returns the sizes of the mesh's patches (check_quad_patches()).
+static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
 {
   const SS::Quad_mesh_report& rep = r.report;
   if(rep.status != SS::SUCCESS) std::cerr << what << ": " << SS::status_name(rep.status) << " " << rep.message << std::endl;
@@ -227,7 +229,7 @@ static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_resul
               rep.euler_characteristic, rep.boundary_loops, irregular, cones, histogram.c_str(),
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
-  check_quad_patches(q, what);
+  return check_quad_patches(q, what);
 }
 
 // quad_mesh_patches() on an extracted mesh, checked here from its output alone: every quad in one patch, the
@@ -235,8 +237,8 @@ static void check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_resul
 // with other than 2 quads); every patch a rectangle (Eppstein et al.: on a mesh with nodes; the tori here get
 // seeded trails that close up into one), each cell of its w x h grid once; across a side of a quad, the quad of the
 // same patch is the next cell in that direction with its bottom side where the grid walk puts it, unless the side
-// lies on the rectangle's boundary (a patch that meets itself across a trail)
-static void check_quad_patches(const Mesh& q, const std::string& what)
+// lies on the rectangle's boundary (a patch that meets itself across a trail). Returns the patch sizes.
+static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what)
 {
   std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
   const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
@@ -282,28 +284,21 @@ static void check_quad_patches(const Mesh& q, const std::string& what)
   assert(quads == q.number_of_faces());
   std::printf("quad: %-46s %6zu patches, all rectangles, %zu nodes, %zu motorcycles, %zu sides across a trail in one patch\n",
               (what + ", patches").c_str(), r.patches.size(), r.nodes, r.motorcycles, wraps);
+  Patch_sizes sizes;
+  for(const SS::Quad_patch& p : r.patches) sizes.push_back(std::make_pair((std::min)(p.width, p.height), (std::max)(p.width, p.height)));
+  std::sort(sizes.begin(), sizes.end());
+  return sizes;
 }
 
-// The patch sizes of a quad mesh (quad_mesh_patches()), each as (shorter, longer) side, sorted. Refinement: the quad mesh
+// Refinement of the patches (sizes from check_quad_mesh()): the quad mesh
 // of a closed integer-grid map with cones at grid scale 2 S has the patches of the one at S, each twice as long on both
 // sides (its quads are those at S cut in four; the nodes are the same cones, the motorcycles start in the same order
 // and run along the same isolines, two rounds for one, and where two meet head-on in the middle of an edge at S, the
 // trails at 2 S cover that edge as well): checked where the tests extract one map at several scales (cubes, the bear,
 // the horse). Not for maps whose border is off the isolines (more cells fit at 2 S) or without nodes (seeded).
-static std::vector<std::pair<int, int> > patch_sizes(const Mesh& q)
+static void check_patches_refine(const Patch_sizes& coarse, const Patch_sizes& fine, const std::string& what)
 {
-  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
-  const SS::Quad_patches r = SS::quad_mesh_patches(q, boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q)));
-  assert(r.all_rectangles());
-  std::vector<std::pair<int, int> > sizes;
-  for(const SS::Quad_patch& p : r.patches) sizes.push_back(std::make_pair((std::min)(p.width, p.height), (std::max)(p.width, p.height)));
-  std::sort(sizes.begin(), sizes.end());
-  return sizes;
-}
-static void check_patches_refine(const std::vector<std::pair<int, int> >& coarse, const std::vector<std::pair<int, int> >& fine,
-                                 const std::string& what)
-{
-  std::vector<std::pair<int, int> > doubled;
+  Patch_sizes doubled;
   for(const std::pair<int, int>& p : coarse) doubled.push_back(std::make_pair(2 * p.first, 2 * p.second));
   if(doubled != fine) std::cerr << what << ": " << coarse.size() << " patches at the coarser scale, " << fine.size() << " at the finer" << std::endl;
   assert(doubled == fine);
@@ -325,12 +320,6 @@ static bool same_quad_mesh(const Quad_result& a, const Quad_result& b)
     if(va != vb) return false;
   }
   return true;
-}
-
-static void scale_uv(Mesh& m, UV_map uv, double s)
-{
-  for(halfedge_descriptor h : m.halfedges())
-    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * s, get(uv, h).y() * s));
 }
 
 // a refusal: the status, a message containing `words`, and the output mesh unchanged (one vertex added before)
@@ -386,19 +375,19 @@ static void test_cube()
     Mesh m; UV_map uv;
     make_cube_map(m, uv, n);
     assert(CGAL::is_closed(m) && SS::is_exact_integer_grid_map(m, uv));
-    std::vector<std::pair<int, int> > coarser;
+    Patch_sizes coarser;
     for(double S : {1., 2.}) {
       Quad_result r;
       extract(m, uv, S, r);
-      check_quad_mesh(m, uv, S, r, "cube " + std::to_string(n) + ", grid scale " + std::to_string(int(S)));
-      if(S == 2) check_patches_refine(coarser, patch_sizes(r.q), "cube " + std::to_string(n) + ", patches at scales 1, 2");
-      coarser = patch_sizes(r.q);
+      const Patch_sizes sizes = check_quad_mesh(m, uv, S, r, "cube " + std::to_string(n) + ", grid scale " + std::to_string(int(S)));
+      if(S == 2) check_patches_refine(coarser, sizes, "cube " + std::to_string(n) + ", patches at scales 1, 2");
+      coarser = sizes;
       assert(r.report.quads == std::size_t(6 * n * n * S * S) && r.report.euler_characteristic == 2);
       assert(r.report.cones == 8 && r.report.valence_histogram[3] == 8);
       // scale covariance: UVs times 2^-3 with grid_scale 8 S: the same mesh, bit for bit
       Mesh small = m;
       UV_map uvs = uv_of(small);
-      scale_uv(small, uvs, 0.125);
+      scale_uvs(small, uvs, -3);
       Quad_result rs;
       extract(small, uvs, 8 * S, rs);
       assert(rs.report.status == SS::SUCCESS && same_quad_mesh(r, rs));
@@ -707,7 +696,7 @@ static void test_bear_orbifold()
 {
   Mesh input; UV_map uv_in;
   if(!bear_orbifold(input, uv_in, SMP::Parallelogram)) return;
-  std::vector<std::pair<int, int> > coarser;
+  Patch_sizes coarser;
   for(double S : {2., 4., 8.}) {
     Mesh m = input;
     UV_map uv = uv_of(m);
@@ -715,14 +704,14 @@ static void test_bear_orbifold()
     assert(s.status == SS::SUCCESS && s.flips_after_repair == 0 && s.degenerate_after_repair == 0);
     Quad_result r;
     extract(m, uv, S, r);
-    check_quad_mesh(m, uv, S, r, "bear orbifold Parallelogram, scale " + std::to_string(int(S)));
-    if(S > 2) check_patches_refine(coarser, patch_sizes(r.q), "bear orbifold, patches at scales " + std::to_string(int(S / 2)) + ", " + std::to_string(int(S)));
-    coarser = patch_sizes(r.q);
+    const Patch_sizes sizes = check_quad_mesh(m, uv, S, r, "bear orbifold Parallelogram, scale " + std::to_string(int(S)));
+    if(S > 2) check_patches_refine(coarser, sizes, "bear orbifold, patches at scales " + std::to_string(int(S / 2)) + ", " + std::to_string(int(S)));
+    coarser = sizes;
     assert(r.report.euler_characteristic == 2 && r.report.cones == 4 && r.report.valence_histogram[2] == 4);
     if(S == 8) {                                    // the map scaled by 2^-5, grid_scale 2^8: the same mesh
       Mesh small = m;
       UV_map uvs = uv_of(small);
-      scale_uv(small, uvs, 1. / 32);
+      scale_uvs(small, uvs, -5);
       Quad_result rs;
       extract(small, uvs, S * 32, rs);
       assert(rs.report.status == SS::SUCCESS && same_quad_mesh(r, rs));
@@ -829,14 +818,14 @@ static void test_shared_data()
       ++quarter_cones;
       continue;
     }
-    std::vector<std::pair<int, int> > coarser;
+    Patch_sizes coarser;
     for(double S : {1., 2.}) {
       if(S == 2 && name.find("horse") == std::string::npos) continue;
       Quad_result r;                             // an IGM at grid scale 1 is one at 2 as well
       extract(m, uv, S, r);
-      check_quad_mesh(m, uv, S, r, name + ", grid scale " + std::to_string(int(S)));
-      if(S == 2) check_patches_refine(coarser, patch_sizes(r.q), name + ", patches at scales 1, 2");
-      coarser = patch_sizes(r.q);
+      const Patch_sizes sizes = check_quad_mesh(m, uv, S, r, name + ", grid scale " + std::to_string(int(S)));
+      if(S == 2) check_patches_refine(coarser, sizes, name + ", patches at scales 1, 2");
+      coarser = sizes;
       ++extracted;
       if(S == 1) {                               // cut invariance (test_cut_invariance()), on real maps
         Mesh m2 = m;

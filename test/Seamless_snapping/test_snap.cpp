@@ -196,12 +196,6 @@ static void test_data_meshes(std::vector<File_result>& results)
 // snap: scale covariance: UVs scaled by 2^j snap to the 2^j-scaled result of j = 0, bit for bit, or
 // are refused with a clear status (map untouched); no SUCCESS with a change far above the violation
 // ---------------------------------------------------------------------------------------------
-static void scale_uvs(const Mesh& m, UV_map uv, int j)
-{
-  for(halfedge_descriptor h : m.halfedges())
-    put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
-}
-
 // true iff every UV of `m` times 2^j is a double (no bit lost to underflow, no overflow)
 static bool scales_exactly(const Mesh& m, UV_map uv, int j)
 {
