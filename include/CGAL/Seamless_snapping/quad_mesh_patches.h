@@ -12,6 +12,7 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_mesh_arrays.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_patches.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
 
@@ -110,6 +111,41 @@ struct Quad_patches
   }
 };
 
+namespace internal {
+
+// quad_mesh_patches() up to its output map: qm as arrays (m, d), its patches and cells (c), the report (SUCCESS, or
+// INVALID_INPUT and why not); also the first steps of quad_layout()
+template <class PolygonMesh, class NamedParameters>
+Quad_patches quad_mesh_patch_cells(const PolygonMesh& qm, const NamedParameters& np, quad::Quad_arrays& m,
+                                   quad::Quad_mesh_descriptors<PolygonMesh>& d, quad::Quad_patch_cells& c)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Quad_patches r;
+  r.message = quad::quad_mesh_arrays(qm, np, m, d);
+  if(!r.message.empty()) { r.total_ms = ms_since(t0); return r; }
+  const quad::Vertex_fans fans(m);
+  r.message = quad::quad_mesh_defect(m, fans);
+  if(!r.message.empty()) { r.message = "not a manifold quad mesh: " + r.message; r.total_ms = ms_since(t0); return r; }
+  c = quad::quad_patch_cells(m, fans);
+  for(const quad::Quad_patch_cells::Patch& p : c.patches) {
+    Quad_patch q;
+    q.quads = p.quads; q.rectangle = p.rectangle; q.width = p.width; q.height = p.height;
+    r.patches.push_back(q);
+    r.rectangles += p.rectangle ? 1 : 0;
+  }
+  r.nodes = c.nodes; r.motorcycles = c.motorcycles; r.stops_on_trails = c.stops_on_trails;
+  for(char t : c.trail) r.separatrix_edges += t ? 1 : 0;
+  r.separatrix_edges /= 2;
+  r.status = SUCCESS;
+  r.message = std::to_string(r.patches.size()) + " patches (" + std::to_string(r.rectangles) + " rectangles), " +
+              std::to_string(r.nodes) + " nodes, " + std::to_string(r.motorcycles) + " motorcycles, " +
+              std::to_string(r.separatrix_edges) + " separatrix edges";
+  r.total_ms = ms_since(t0);
+  return r;
+}
+
+} // namespace internal
+
 /*!
  * \ingroup PkgSeamlessSnappingRef
  *
@@ -172,72 +208,19 @@ template <class PolygonMesh, class FacePatchMap, class NamedParameters = CGAL::p
 Quad_patches quad_mesh_patches(const PolygonMesh& qm, FacePatchMap patch_map,
                                const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef boost::graph_traits<PolygonMesh> GT;
   const auto t0 = std::chrono::steady_clock::now();
-  const auto vim = CGAL::get_initialized_vertex_index_map(qm, np);
-  const auto him = CGAL::get_initialized_halfedge_index_map(qm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(qm, np);
   internal::quad::Quad_arrays m;
-  // the sizes of the ranges (num_faces() of a Surface_mesh may count removed faces), which the indices must fill
-  const std::size_t nh = std::size_t(std::distance(halfedges(qm).begin(), halfedges(qm).end())),
-                    nf = std::size_t(std::distance(faces(qm).begin(), faces(qm).end()));
-  m.n_vertices = int(std::distance(vertices(qm).begin(), vertices(qm).end()));
-  m.next.resize(nh); m.opp.resize(nh); m.target.resize(nh); m.face.resize(nh); m.face_halfedge.resize(nf);
-  std::vector<typename GT::halfedge_descriptor> hd(nh);
-  std::vector<typename GT::face_descriptor> fd(nf);
-  Quad_patches r;
-  // every index map a bijection onto 0 .. n - 1, else INVALID_INPUT (no array is read out of its range)
-  std::vector<char> seen_v(std::size_t(m.n_vertices), 0), seen_f(nf, 0), seen_h(nh, 0);
-  auto not_indexed = [&](std::size_t i, std::vector<char>& seen, const char* what) {
-    if(i < seen.size() && !seen[i]) { seen[i] = 1; return false; }
-    r.message = std::string("the ") + what + " index map gives " + std::to_string(i) + (i < seen.size() ? " twice" :
-                ", not below the number of " + std::string(what) + "s " + std::to_string(seen.size())) +
-                " (a Surface_mesh with removed elements: collect_garbage() first; else pass an index map)";
-    r.total_ms = internal::ms_since(t0);
-    return true;
-  };
-  for(typename GT::vertex_descriptor v : vertices(qm))
-    if(not_indexed(std::size_t(get(vim, v)), seen_v, "vertex")) return r;
-  for(typename GT::face_descriptor f : faces(qm))
-    if(not_indexed(std::size_t(get(fim, f)), seen_f, "face")) return r;
-  for(typename GT::halfedge_descriptor h : halfedges(qm)) {
-    const std::size_t i = std::size_t(get(him, h));
-    if(not_indexed(i, seen_h, "halfedge")) return r;
-    hd[i] = h;
-    m.next[i] = int(get(him, next(h, qm)));
-    m.opp[i] = int(get(him, opposite(h, qm)));
-    m.target[i] = int(get(vim, target(h, qm)));
-    m.face[i] = is_border(h, qm) ? -1 : int(get(fim, face(h, qm)));
-  }
-  for(typename GT::face_descriptor f : faces(qm)) {
-    fd[std::size_t(get(fim, f))] = f;
-    m.face_halfedge[std::size_t(get(fim, f))] = int(get(him, halfedge(f, qm)));
-  }
-
-  const internal::quad::Vertex_fans fans(m);
-  r.message = internal::quad::quad_mesh_defect(m, fans);
-  if(!r.message.empty()) { r.message = "not a manifold quad mesh: " + r.message; r.total_ms = internal::ms_since(t0); return r; }
-  const internal::quad::Quad_patch_cells c = internal::quad::quad_patch_cells(m, fans);
-  for(const internal::quad::Quad_patch_cells::Patch& p : c.patches) {
-    Quad_patch q;
-    q.quads = p.quads; q.rectangle = p.rectangle; q.width = p.width; q.height = p.height;
-    r.patches.push_back(q);
-    r.rectangles += p.rectangle ? 1 : 0;
-  }
-  r.nodes = c.nodes; r.motorcycles = c.motorcycles; r.stops_on_trails = c.stops_on_trails;
-  for(std::size_t h = 0; h < nh; ++h) r.separatrix_edges += c.trail[h] ? 1 : 0;
-  r.separatrix_edges /= 2;
-  for(std::size_t f = 0; f < nf; ++f) {
+  internal::quad::Quad_mesh_descriptors<PolygonMesh> d;
+  internal::quad::Quad_patch_cells c;
+  Quad_patches r = internal::quad_mesh_patch_cells(qm, np, m, d, c);
+  if(r.status != SUCCESS) return r;
+  for(std::size_t f = 0; f < d.face.size(); ++f) {
     Quad_patch_location<PolygonMesh> l;
     l.patch = std::size_t(c.patch[f]);
     l.i = c.cell[f][0]; l.j = c.cell[f][1];
-    l.bottom = hd[std::size_t(c.bottom[f])];
-    put(patch_map, fd[f], l);
+    l.bottom = d.halfedge[std::size_t(c.bottom[f])];
+    put(patch_map, d.face[f], l);
   }
-  r.status = SUCCESS;
-  r.message = std::to_string(r.patches.size()) + " patches (" + std::to_string(r.rectangles) + " rectangles), " +
-              std::to_string(r.nodes) + " nodes, " + std::to_string(r.motorcycles) + " motorcycles, " +
-              std::to_string(r.separatrix_edges) + " separatrix edges";
   r.total_ms = internal::ms_since(t0);
   return r;
 }
