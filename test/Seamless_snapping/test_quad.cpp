@@ -61,6 +61,7 @@
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
@@ -238,6 +239,8 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
 // seeded trails that close up into one), each cell of its w x h grid once; across a side of a quad, the quad of the
 // same patch is the next cell in that direction with its bottom side where the grid walk puts it, unless the side
 // lies on the rectangle's boundary (a patch that meets itself across a trail). Returns the patch sizes.
+static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, const std::string& what);
+
 static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what)
 {
   std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
@@ -284,10 +287,84 @@ static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what)
   assert(quads == q.number_of_faces());
   std::printf("quad: %-46s %6zu patches, all rectangles, %zu nodes, %zu motorcycles, %zu sides across a trail in one patch\n",
               (what + ", patches").c_str(), r.patches.size(), r.nodes, r.motorcycles, wraps);
+  check_quad_layout(q, r, what);
   Patch_sizes sizes;
   for(const SS::Quad_patch& p : r.patches) sizes.push_back(std::make_pair((std::min)(p.width, p.height), (std::max)(p.width, p.height)));
   std::sort(sizes.begin(), sizes.end());
   return sizes;
+}
+
+// quad_layout() on an extracted mesh, checked from its output and the patches: a valid face graph, a polygon mesh
+// exactly when the report says so; one face per patch (face k patch k), the Euler characteristic of the quad mesh;
+// every layout halfedge's chain of quad edges runs, edge after edge, from the quad vertex of its source to that of its
+// target (one quad vertex per layout vertex, each once), in its patch along the patch's side (the quad across is in
+// another patch, or is the same patch across the rectangle's boundary) or along the border; the chain of the opposite
+// halfedge is the same edges reversed; the arcs cover each trail and border edge once; every face has 4 corners,
+// its sides between them as long as its patch's width, height, width, height; the T-junctions counted here.
+static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, const std::string& what)
+{
+  typedef SS::Quad_layout_arc<Mesh> Arc;
+  Mesh L;
+  auto arcs = L.add_property_map<halfedge_descriptor, Arc>("h:arc").first;
+  const SS::Quad_layout r = SS::quad_layout(q, L, arcs);
+  if(r.status != SS::SUCCESS) std::cerr << what << ": " << r.message << std::endl;
+  assert(r.status == SS::SUCCESS && r.patches.patches.size() == patches.patches.size());
+  assert(CGAL::is_valid_face_graph(L));
+  assert(!r.polygon_mesh || CGAL::is_valid_polygon_mesh(L));
+  assert(r.self_adjacent_arcs == 0 || !CGAL::is_valid_polygon_mesh(L));
+  assert(L.number_of_faces() == patches.patches.size() && r.vertices == L.number_of_vertices() && r.arcs == L.number_of_edges());
+  assert(euler(L) == euler(q) && r.euler_characteristic == euler(q));
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
+  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
+  SS::quad_mesh_patches(q, pm);
+  // per quad halfedge: on the border, or on the boundary of its patch's rectangle
+  auto on_side = [&](halfedge_descriptor e) {
+    if(q.is_border(e)) return true;
+    const SS::Quad_patch_location<Mesh>& l = get(pm, q.face(e));
+    const SS::Quad_patch& P = patches.patches[l.patch];
+    const bool on_boundary[4] = {l.j == 0, l.i == P.width - 1, l.j == P.height - 1, l.i == 0};
+    int side = 0;
+    for(halfedge_descriptor g = l.bottom; g != e; g = q.next(g)) ++side;
+    return on_boundary[side];
+  };
+  std::map<vertex_descriptor, vertex_descriptor> quad_vertex;    // layout vertex -> quad vertex
+  std::set<vertex_descriptor> used;
+  std::set<halfedge_descriptor> covered;
+  std::size_t t_junctions = 0, border = 0;
+  for(halfedge_descriptor h : L.halfedges()) {
+    const Arc& a = get(arcs, h);
+    const Arc& b = get(arcs, L.opposite(h));
+    assert(a.length > 0 && a.length == b.length && a.patch == (L.is_border(h) ? -1 : long(L.face(h))));
+    border += a.patch < 0 ? 1 : 0;
+    t_junctions += a.patch >= 0 && !a.corner ? 1 : 0;
+    halfedge_descriptor e = a.first;
+    for(int k = 0; k < a.length; ++k) {
+      assert(covered.insert(e).second && on_side(e));              // each quad halfedge in one chain
+      assert(a.patch < 0 ? q.is_border(e) : !q.is_border(e) && long(get(pm, q.face(e)).patch) == a.patch);
+      if(k + 1 < a.length) e = a.patch < 0 ? q.next(e) : q.next(q.opposite(q.next(e)));
+    }
+    assert(b.first == q.opposite(e));                              // the opposite chain: the same edges reversed
+    auto in = quad_vertex.insert(std::make_pair(L.target(h), q.target(e)));
+    assert(in.first->second == q.target(e) && L.point(L.target(h)) == q.point(q.target(e)));
+    if(in.second) assert(used.insert(q.target(e)).second);       // one layout vertex per quad vertex
+  }
+  std::size_t sides = 0;
+  for(halfedge_descriptor h : q.halfedges()) sides += on_side(h) ? 1 : 0;
+  assert(covered.size() == sides && r.border_arcs == border && r.t_junctions == t_junctions);
+  for(face_descriptor f : L.faces()) {
+    const SS::Quad_patch& P = patches.patches[std::size_t(f)];
+    std::vector<int> length;
+    int run = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(L.halfedge(f), L)) {
+      run += get(arcs, h).length;
+      if(get(arcs, h).corner) { length.push_back(run); run = 0; }
+    }
+    assert(length.size() == 4 && run == 0);                        // the face's first halfedge starts at a corner
+    assert(length[0] == length[2] && length[1] == length[3] && length[0] == P.width && length[1] == P.height);
+  }
+  std::printf("quad: %-46s %6zu faces, %zu vertices, %zu arcs (%zu on the border), %zu T-junctions, %zu self-adjacent arcs, %s\n",
+              (what + ", layout").c_str(), L.number_of_faces(), r.vertices, r.arcs, r.border_arcs, r.t_junctions,
+              r.self_adjacent_arcs, r.polygon_mesh ? "simple polygons" : "not all faces simple polygons");
 }
 
 // Refinement of the patches (sizes from check_quad_mesh()): the quad mesh

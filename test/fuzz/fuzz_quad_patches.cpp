@@ -13,11 +13,15 @@
 //  - SUCCESS only on a quad mesh; then every quad is in one patch (its count that patch's), its bottom side one of its
 //    halfedges; a rectangle patch holds width x height quads, each in a cell of the rectangle, each cell once; on a
 //    mesh with nodes every patch is a rectangle (the theorem the documentation cites);
-//  - any other status writes nothing (the output map keeps its values).
+//  - any other status writes nothing (the output map keeps its values);
+//  - quad_layout(): SUCCESS exactly when quad_mesh_patches() succeeds with rectangles, else nothing added; a valid face
+//    graph with one face per patch and the Euler characteristic of the mesh (isolated vertices not counted), every
+//    face with 4 corners and sides of its patch's width, height, width, height, each arc as long on both sides.
 // Any violation aborts (a finding); the sanitizers catch reads out of range. Build: -DSEAMLESS_SNAPPING_FUZZ=ON.
 
 #include "quad_patches_bytes.h"
 
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -95,5 +99,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   FUZZ_REQUIRE(quads == m.number_of_faces() && rectangles == r.rectangles, "the patches cover the quads");
   FUZZ_REQUIRE(r.nodes == 0 || r.all_rectangles(), "with nodes, every patch a rectangle (Eppstein et al. 2008)");
+
+  Mesh L;
+  auto arcs = L.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  const SS::Quad_layout q = SS::quad_layout(m, L, arcs);
+  (void)q.to_json();
+  FUZZ_REQUIRE((q.status == SS::SUCCESS) == r.all_rectangles(), "a layout exactly when every patch is a rectangle");
+  if(q.status != SS::SUCCESS) { FUZZ_REQUIRE(L.is_empty(), "nothing added on failure"); return 0; }
+  long isolated = 0;
+  for(Mesh::Vertex_index v : m.vertices()) isolated += m.is_isolated(v) ? 1 : 0;
+  const long chi = long(m.number_of_vertices()) - isolated - long(m.number_of_edges()) + long(m.number_of_faces());
+  FUZZ_REQUIRE(CGAL::is_valid_face_graph(L) && L.number_of_faces() == r.patches.size(), "a face graph, a face per patch");
+  FUZZ_REQUIRE(long(L.number_of_vertices()) - long(L.number_of_edges()) + long(L.number_of_faces()) == chi, "the Euler characteristic");
+  for(Mesh::Halfedge_index h : L.halfedges())
+    FUZZ_REQUIRE(get(arcs, h).length > 0 && get(arcs, h).length == get(arcs, L.opposite(h)).length, "an arc as long on both sides");
+  for(Mesh::Face_index f : L.faces()) {
+    std::vector<int> sides;
+    int run = 0;
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(L.halfedge(f), L)) {
+      run += get(arcs, h).length;
+      if(get(arcs, h).corner) { sides.push_back(run); run = 0; }
+    }
+    const SS::Quad_patch& P = r.patches[std::size_t(f)];
+    FUZZ_REQUIRE(sides.size() == 4 && run == 0 && sides[0] == P.width && sides[2] == P.width && sides[1] == P.height &&
+                 sides[3] == P.height, "4 corners, sides of the patch's width and height");
+  }
   return 0;
 }
