@@ -2,7 +2,8 @@
 Parallelogram map (written by quad_figure) in OBJ, OFF and PLY, checked here from the files (every face a quad,
 every edge in exactly two faces, V - E + F = 2, as many quads as the report's exact UV area; in PLY the patches:
 every quad a cell of its patch's grid whose corners, read from patch_corner, give each grid point of a patch one
-vertex, the report's patch sizes covering the quads), and from it as a cut
+vertex, the report's patch sizes covering the quads; the --layout file: one polygon per patch, at the quad vertices'
+points, through its patch's four grid corners in order, V - E + F = 2), and from it as a cut
 mesh (welded automatically; refused with --no-weld); refusals with
 exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
@@ -56,7 +57,8 @@ def faces_of(path):
 report = os.path.join(work, "quad.json")
 for ext in ["obj", "off", "ply"]:
     out = os.path.join(work, "bear_quads." + ext)
-    rc, text = run(parallelogram, out, "--grid-scale", "4", "--report", report)
+    layout = os.path.join(work, "bear_layout.ply")
+    rc, text = run(parallelogram, out, "--grid-scale", "4", "--report", report, *(["--layout", layout] if ext == "ply" else []))
     check(rc == 0 and "verified" in text, "%s: exit %d %s" % (ext, rc, text))
     if rc != 0:
         continue
@@ -95,6 +97,23 @@ for ext in ["obj", "off", "ply"]:
                 conflicts += 0 if grid.setdefault((pid, i + di, j + dj), f[(c + t) % 4]) == f[(c + t) % 4] else 1
         check(len(rows) == len(faces) and conflicts == 0 and "patches: %d patches" % pt["patches"] in text,
               "ply: every quad a cell of its patch, each grid point one vertex: %d conflicts" % conflicts)
+        # the layout: a polygon per patch through its grid's four corners in (cyclic) order, at the quad vertices' points
+        lay = r["layout"]
+        lv, lfaces = faces_of(layout)
+        lrows = [l.split() for l in open(layout).read().split("end_header")[1].split("\n")[1:] if l.strip()]
+        points = [l.split()[:3] for l in open(out).read().split("end_header")[1].split("\n")[1:1 + nv]]
+        quad_vertex = [int(l[3]) for l in lrows[:lv]]
+        check(lay["status"] == "SUCCESS" and lay["faces"] == len(lfaces) == pt["patches"] and lay["vertices"] == lv and
+              lv - lay["arcs"] + len(lfaces) == 2 and all(lrows[k][:3] == points[quad_vertex[k]] for k in range(lv)),
+              "ply layout: a face per patch, chi 2, each vertex at its quad vertex: %s" % lay)
+        sizes_ok = True
+        for p, l in enumerate(lrows[lv:lv + len(lfaces)]):
+            n = int(l[0])
+            polygon, (w, h) = [quad_vertex[int(x)] for x in l[1:1 + n]], [int(x) for x in l[1 + n:3 + n]]
+            corners = [grid.get((p, i, j)) for i, j in [(0, 0), (w, 0), (w, h), (0, h)]]
+            at = [polygon.index(c) for c in corners if c in polygon]
+            sizes_ok &= [w, h] == pt["sizes"][p] and len(at) == 4 and sum(at[(k + 1) % 4] < at[k] for k in range(4)) == 1
+        check(sizes_ok, "ply layout: each face its patch's size, through the patch's four corners in order")
 
 # 1b. the same map as a cut mesh (vertices duplicated along the seams, as Directional writes): welded automatically,
 # the same quad mesh; refused with --no-weld (its seams would be borders), nothing written

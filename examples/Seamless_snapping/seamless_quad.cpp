@@ -1,13 +1,14 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
-//                 [--report FILE.json] [--threads N] [--quiet]
+//                 [--layout FILE.(obj|off|ply)] [--report FILE.json] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
 // mesh (extract_quad_mesh(), which checks the map and verifies the mesh), cuts it into rectangle patches
-// (quad_mesh_patches(): in PLY per face patch_id, patch_i, patch_j, patch_corner) and writes OUT atomically.
-// Exit status 0 only when OUT was written.
+// (quad_mesh_patches(): in PLY per face patch_id, patch_i, patch_j, patch_corner) and writes OUT atomically;
+// with --layout, also the quad layout (quad_layout(): one polygon per patch) into FILE. Exit status 0 only when OUT
+// (and FILE) were written.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -16,6 +17,7 @@
 #include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/version.h>
@@ -49,7 +51,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--report FILE.json] [--threads N] [--quiet]\n";
+  "                     [--layout FILE.(obj|off|ply)] [--report FILE.json] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
@@ -83,7 +85,15 @@ static const char* help_text =
   "                       regular vertices (the map then folds around them and is refused; libQEx\n"
   "                       merges such pairs too), and other pairs on one point are not joined into one\n"
   "                       cone. The snap report lists the merged pairs\n"
-  "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ...} (the two reports) as JSON, also on failure\n"
+  "  --layout FILE        also write the quad layout (quad_layout()): one polygon per patch, its vertices the\n"
+  "                       quad vertices at patch corners (cones, border corners, T-junctions where a trace ends\n"
+  "                       on another), its edges the arcs between them (the 'coarse mesh' of the patches);\n"
+  "                       by extension .obj, .off or .ply (ASCII, per vertex quad_vertex: its index in OUT,\n"
+  "                       per face patch_width, patch_height: the patch's size in quads). A patch may touch\n"
+  "                       itself across an arc or a vertex (a line says how often): its polygon then lists\n"
+  "                       that vertex twice\n"
+  "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ..., \"patches\": ..., \"layout\": ...} (the\n"
+  "                       reports; \"layout\" null without --layout) as JSON, also on failure\n"
   "  --threads N          threads for independent steps of the reading and the snap (its untangling\n"
   "                       included; the same quad mesh whatever N): 0, the default, takes the machine's\n"
   "                       cores; 1 runs on one thread\n"
@@ -102,8 +112,9 @@ static const char* help_text =
   "rectangles of width x height quads, each quad a cell (i, j) of its patch's grid; a line counts them.\n"
   "Cells cut by a border that is not on an integer isoline are left out and counted (a line says so).\n"
   "\n"
-  "Exit status: 0 when OUT was written; 1 when reading, snapping, extracting or writing failed (one line\n"
-  "on stderr says why; OUT is then not created or changed); 2 for a command-line error.\n";
+  "Exit status: 0 when OUT (and the --layout file) was written; 1 when reading, snapping, extracting or\n"
+  "writing failed (one line on stderr says why; OUT is then not created or changed, unless writing the\n"
+  "layout file after it failed); 2 for a command-line error.\n";
 
 static std::string one_line(std::string s)
 {
@@ -128,7 +139,7 @@ static std::string extension_of(const std::string& file)
 int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
-  std::string in, out, report_file;
+  std::string in, out, report_file, layout_file;
   bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;
   unsigned threads = 0;                 // 0: the machine's cores
@@ -156,6 +167,10 @@ int main(int argc, char** argv)
       threads = unsigned(n);
       ++i;
     }
+    else if(a == "--layout") {
+      if(i + 1 >= argc) { std::cerr << "seamless_quad: --layout needs a file name\n" << usage_text; return 2; }
+      layout_file = argv[++i];
+    }
     else if(a == "--report") {
       if(i + 1 >= argc) { std::cerr << "seamless_quad: --report needs a file name\n" << usage_text; return 2; }
       report_file = argv[++i];
@@ -170,6 +185,10 @@ int main(int argc, char** argv)
   const std::string format = extension_of(out);
   if(format != "obj" && format != "off" && format != "ply") {
     std::cerr << "seamless_quad: OUT must end in .obj, .off or .ply\n" << usage_text; return 2;
+  }
+  const std::string layout_format = extension_of(layout_file);
+  if(!layout_file.empty() && layout_format != "obj" && layout_format != "off" && layout_format != "ply") {
+    std::cerr << "seamless_quad: the --layout file must end in .obj, .off or .ply\n" << usage_text; return 2;
   }
 
   // 1. read; the corner map: uv[h] = UV of target(h) in face(h). A cut mesh is welded unless --no-weld.
@@ -232,12 +251,18 @@ int main(int argc, char** argv)
   auto patch = quads.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
   SS::Quad_patches patches;
   if(q.status == SS::SUCCESS) patches = SS::quad_mesh_patches(quads, patch);
+  // with --layout, the quad layout (one polygon per patch)
+  Mesh layout;
+  auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  SS::Quad_layout lay;
+  if(q.status == SS::SUCCESS && !layout_file.empty()) lay = SS::quad_layout(quads, layout, arcs);
   if(!report_file.empty()) {
     const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
                              ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
                              snap.to_json() + ",\n  \"quad_mesh\": " +
                              (snap.status == SS::SUCCESS ? q.to_json() : std::string("null")) + ",\n  \"patches\": " +
-                             (q.status == SS::SUCCESS ? patches.to_json() : std::string("null")) + "}\n";
+                             (q.status == SS::SUCCESS ? patches.to_json() : std::string("null")) + ",\n  \"layout\": " +
+                             (q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null")) + "}\n";
     if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
   }
   if(snap.status != SS::SUCCESS)
@@ -273,7 +298,9 @@ int main(int argc, char** argv)
                 q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones,
                 q.covers_map() ? ", as many quads as the exact UV area" : "");
     std::printf("patches: %s\n", patches.message.c_str());
+    if(!layout_file.empty()) std::printf("layout: %s\n", lay.message.c_str());
   }
+  if(!layout_file.empty() && lay.status != SS::SUCCESS) return fail(lay.message + "; nothing was written");
   if(q.incomplete_cells > 0)
     std::cerr << "seamless_quad: note: " << q.incomplete_cells << " cells cut by the border (not on integer isolines) "
               << "were left out\n";
@@ -314,7 +341,30 @@ int main(int argc, char** argv)
   else if(format == "off") written = CGAL::IO::write_OFF(os, quads, CGAL::parameters::stream_precision(17));
   else written = CGAL::IO::write_OBJ(os, quads, CGAL::parameters::stream_precision(17));
   if(!written) return fail("cannot format the quad mesh as " + format);
+  std::ostringstream ls;                                // the layout, formatted before anything is written
+  if(!layout_file.empty()) {
+    ls.precision(17);
+    if(layout_format == "ply") {
+      auto quad_vertex = layout.add_property_map<Mesh::Vertex_index, std::int32_t>("v:quad_vertex").first;
+      auto width = layout.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_width").first;
+      auto height = layout.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_height").first;
+      for(Mesh::Vertex_index v : layout.vertices())      // the chain of the arc leaving v starts at its quad vertex
+        quad_vertex[v] = std::int32_t(quads.source(arcs[layout.next(layout.halfedge(v))].first));
+      for(Mesh::Face_index f : layout.faces()) {
+        width[f] = std::int32_t(lay.patches.patches[std::size_t(f)].width);
+        height[f] = std::int32_t(lay.patches.patches[std::size_t(f)].height);
+      }
+      layout.remove_property_map(arcs);
+      written = CGAL::IO::write_PLY(ls, layout, "quad layout of " + in, CGAL::parameters::use_binary_mode(false));
+    }
+    else if(layout_format == "off") written = CGAL::IO::write_OFF(ls, layout, CGAL::parameters::stream_precision(17));
+    else written = CGAL::IO::write_OBJ(ls, layout, CGAL::parameters::stream_precision(17));
+    if(!written) return fail("cannot format the quad layout as " + layout_format);
+  }
   if(SS::IO::internal::write_text_atomically(out, os.str(), message) != SS::SUCCESS) return fail(message);
+  if(!layout_file.empty() && SS::IO::internal::write_text_atomically(layout_file, ls.str(), message) != SS::SUCCESS)
+    return fail(message);
   if(!quiet) std::cout << std::to_string(q.quads) << " quads written to " << out << "\n";
+  if(!quiet && !layout_file.empty()) std::cout << lay.patches.patches.size() << " layout faces written to " << layout_file << "\n";
   return EXIT_SUCCESS;
 }
