@@ -29,6 +29,7 @@ from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
            "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
+           "quad_layout",
            "DIRECTIONS", "SnapError", "InputError",
            "__version__"]
 __version__ = _core.version
@@ -338,6 +339,32 @@ def quad_mesh_patches(QF, *, raise_on_failure=True):
     """
     out = _core.quad_mesh_patches(_integer_array(QF, "QF", "rows of 4 vertex indices"))
     report = json.loads(out.pop("patches"))
+    report.update(out)
+    if report["status"] != "SUCCESS" and raise_on_failure:
+        raise SnapError(report)
+    return report
+
+
+def quad_layout(QF, *, raise_on_failure=True):
+    """The quad layout of a quad mesh given by QF (as in quad_mesh_patches()): the coarse polygon mesh with one face
+    per patch of its motorcycle graph, whose vertices are the quad vertices at patch corners (irregular vertices,
+    border corners, T-junctions where a trace ends on another) and whose edges, the arcs, are the chains of quad
+    edges between them along the traces and the border (C++ quad_layout(); the "coarse mesh" of the patches).
+
+    Returns the report as a dict: "status", "message", "vertices", "arcs", "faces", "border_arcs", "t_junctions",
+    "self_adjacent_arcs" (arcs with one patch on both sides), "polygon_mesh" (none of those and every polygon simple),
+    "euler_characteristic" (that of the quad mesh), "patches" (the report of quad_mesh_patches(QF) without its
+    per-row arrays), and the layout: "LV" (per layout vertex its vertex index in QF), "LF" (per patch, in the order
+    of "patches"["sizes"], its polygon: indices into LV, counter-clockwise from the patch's grid corner (0, 0)),
+    "LF_corner" (per polygon vertex: a corner of the patch's rectangle; the others are T-junctions on its sides),
+    "LF_length" (per polygon side k: quad edges from vertex k to k + 1; between corners they add up to the patch's
+    width, height, width, height). Where a patch meets a vertex twice its polygon lists it twice. Refusals as in
+    quad_mesh_patches() (InputError for rows that are no quads of a manifold mesh; SnapError, or the report with
+    raise_on_failure=False, for "INVALID_INPUT").
+    """
+    out = _core.quad_layout(_integer_array(QF, "QF", "rows of 4 vertex indices"))
+    report = json.loads(out.pop("layout"))
+    report["patches"] = json.loads(out.pop("patches"))
     report.update(out)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

@@ -8,6 +8,7 @@
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
@@ -435,31 +436,75 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }
 
-// quad_mesh_patches() on the quads of QF (#QF x 4 rows of vertex indices, counter-clockwise), built face by face with
-// Euler::add_face(): the patches of extract_quad_mesh()'s report; a row that cannot be added (a repeated vertex, an
-// index out of range, an edge in two quads in one direction or in a third quad) is named (InputError)
+// The quad mesh of the rows of QF (#QF x 4 vertex indices, counter-clockwise), built face by face with Euler::add_face();
+// a row that cannot be added (a repeated vertex, an index out of range, an edge in two quads in one direction or in a
+// third quad) is named (InputError)
+void quad_mesh_from_rows(const MatrixXlR& QF, Mesh& q)
+{
+  if(QF.cols() != 4) throw Input_error("QF must have 4 columns (quads), not " + std::to_string(QF.cols()));
+  long long nv = 0;
+  for(Eigen::Index r = 0; r < QF.rows(); ++r)
+    for(Eigen::Index c = 0; c < QF.cols(); ++c) {
+      if(QF(r, c) < 0 || QF(r, c) >= (1LL << 31)) throw Input_error("QF[" + std::to_string(r) + ", " + std::to_string(c) + "] is not a vertex index");
+      nv = (std::max)(nv, (long long)QF(r, c) + 1);
+    }
+  for(long long v = 0; v < nv; ++v) q.add_vertex(Mesh::Point(0, 0, 0));
+  for(Eigen::Index r = 0; r < QF.rows(); ++r) {
+    std::array<Mesh::Vertex_index, 4> c;
+    for(int k = 0; k < 4; ++k) c[std::size_t(k)] = Mesh::Vertex_index(Mesh::size_type(QF(r, k)));
+    if(std::set<Mesh::Vertex_index>(c.begin(), c.end()).size() != 4 || CGAL::Euler::add_face(c, q) == Mesh::null_face())
+      throw Input_error("QF row " + std::to_string(r) + " cannot be added to a manifold quad mesh (a repeated vertex, "
+                        "or an edge already in two quads or in one in the same direction)");
+  }
+}
+
+// quad_mesh_patches() on the quads of QF: the patches of extract_quad_mesh()'s report
 py::dict quad_mesh_patches(const MatrixXlR& QF)
 {
   Mesh q;
+  quad_mesh_from_rows(QF, q);
   py::dict out;
-  {
-    if(QF.cols() != 4) throw Input_error("QF must have 4 columns (quads), not " + std::to_string(QF.cols()));
-    long long nv = 0;
-    for(Eigen::Index r = 0; r < QF.rows(); ++r)
-      for(Eigen::Index c = 0; c < QF.cols(); ++c) {
-        if(QF(r, c) < 0 || QF(r, c) >= (1LL << 31)) throw Input_error("QF[" + std::to_string(r) + ", " + std::to_string(c) + "] is not a vertex index");
-        nv = (std::max)(nv, (long long)QF(r, c) + 1);
-      }
-    for(long long v = 0; v < nv; ++v) q.add_vertex(Mesh::Point(0, 0, 0));
-    for(Eigen::Index r = 0; r < QF.rows(); ++r) {
-      std::array<Mesh::Vertex_index, 4> c;
-      for(int k = 0; k < 4; ++k) c[std::size_t(k)] = Mesh::Vertex_index(Mesh::size_type(QF(r, k)));
-      if(std::set<Mesh::Vertex_index>(c.begin(), c.end()).size() != 4 || CGAL::Euler::add_face(c, q) == Mesh::null_face())
-        throw Input_error("QF row " + std::to_string(r) + " cannot be added to a manifold quad mesh (a repeated vertex, "
-                          "or an edge already in two quads or in one in the same direction)");
-    }
-  }
   add_patches(q, out);
+  return out;
+}
+
+// quad_layout() on the quads of QF: the report (JSON), "LV" (per layout vertex its row of QV), and per patch its polygon
+// "LF" (layout vertices counter-clockwise from the patch's corner (0, 0)), "LF_corner" (vertex k a corner of the patch's
+// rectangle) and "LF_length" (quad edges from vertex k to k + 1)
+py::dict quad_layout(const MatrixXlR& QF)
+{
+  Mesh q, L;
+  quad_mesh_from_rows(QF, q);
+  auto arcs = L.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  const SS::Quad_layout r = SS::quad_layout(q, L, arcs);
+  py::dict out;
+  out["layout"] = r.to_json();
+  out["patches"] = r.patches.to_json();
+  if(r.status != SS::SUCCESS) return out;
+  py::array_t<long long> LV(py::ssize_t(L.number_of_vertices()));
+  auto lv = LV.mutable_unchecked<1>();
+  for(Mesh::Vertex_index v : L.vertices()) lv(py::ssize_t(v)) = (long long)(q.source(arcs[L.next(L.halfedge(v))].first));
+  py::list faces, corners, lengths;
+  for(Mesh::Face_index f : L.faces()) {
+    std::vector<long long> vs, ls;
+    std::vector<bool> cs;
+    bool corner = true;                                     // L.halfedge(f) starts at the corner (0, 0)
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(L.halfedge(f), L)) {
+      vs.push_back((long long)(L.source(h)));
+      cs.push_back(corner);
+      ls.push_back(arcs[h].length);
+      corner = arcs[h].corner;
+    }
+    py::array_t<bool> c(py::ssize_t(cs.size()));
+    for(std::size_t k = 0; k < cs.size(); ++k) c.mutable_at(py::ssize_t(k)) = cs[k];
+    faces.append(py::array_t<long long>(py::ssize_t(vs.size()), vs.data()));
+    corners.append(c);
+    lengths.append(py::array_t<long long>(py::ssize_t(ls.size()), ls.data()));
+  }
+  out["LV"] = LV;
+  out["LF"] = faces;
+  out["LF_corner"] = corners;
+  out["LF_length"] = lengths;
   return out;
 }
 
@@ -487,6 +532,7 @@ PYBIND11_MODULE(_core, m)
   m.def("trace_isoline", &trace_isoline, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("face"),
         py::arg("corner"), py::arg("direction"), py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
   m.def("quad_mesh_patches", &quad_mesh_patches, py::arg("QF"));
+  m.def("quad_layout", &quad_layout, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("grid_scale"));
   m.attr("version") = "0.1.0";

@@ -707,6 +707,50 @@ def test_quad_mesh_patches_standalone():
     assert r["status"] == "INVALID_INPUT" and list(r["QF_patch"]) == [-1, -1]
 
 
+def check_quad_layout(QF, r):
+    """the layout report r of quad_layout(QF): a face per patch, each polygon with its patch's 4 corners first at (0, 0)
+    and sides between them of width, height, width, height; the Euler characteristic of the quad mesh; LV distinct"""
+    QF = np.asarray(QF)
+    edges = {tuple(sorted((q[k], q[(k + 1) % 4]))) for q in QF for k in range(4)}
+    chi = len(np.unique(QF)) - len(edges) + len(QF)
+    assert r["status"] == "SUCCESS" and len(r["LF"]) == r["faces"] == r["patches"]["patches"]
+    assert len(r["LV"]) == r["vertices"] == len(set(r["LV"])) and r["euler_characteristic"] == chi
+    assert r["vertices"] - r["arcs"] + r["faces"] == chi
+    for poly, corner, length, (w, h) in zip(r["LF"], r["LF_corner"], r["LF_length"], r["patches"]["sizes"]):
+        assert corner[0] and corner.sum() == 4 and len(poly) == len(corner) == len(length)
+        cut = list(np.flatnonzero(corner)) + [len(poly)]
+        assert [int(length[cut[k]:cut[k + 1]].sum()) for k in range(4)] == [w, h, w, h]
+
+
+def test_quad_layout():
+    n = 5                                                  # a grid of n x n quads: one face, its 4 corners
+    idx = lambda i, j: j * (n + 1) + i
+    grid = np.array([[idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)] for j in range(n) for i in range(n)])
+    r = ss.quad_layout(grid)
+    check_quad_layout(grid, r)
+    assert sorted(r["LV"]) == [idx(0, 0), idx(n, 0), idx(0, n), idx(n, n)] and r["border_arcs"] == 4
+    assert r["polygon_mesh"] and r["t_junctions"] == 0 and list(r["LF_length"][0]) == [n] * 4
+    # an L of three n x n blocks: the reflex corner (3 quads) sends traces to the border, which cut it into 3 squares
+    jdx = lambda i, j: j * (2 * n + 1) + i
+    ell = np.array([[jdx(i, j), jdx(i + 1, j), jdx(i + 1, j + 1), jdx(i, j + 1)]
+                    for j in range(2 * n) for i in range(2 * n) if i < n or j < n])
+    r = ss.quad_layout(ell)
+    check_quad_layout(ell, r)
+    assert r["faces"] == 3 and r["patches"]["sizes"] == [[n, n]] * 3 and r["t_junctions"] == 0
+    corners = [(0, 0), (n, 0), (2 * n, 0), (0, n), (n, n), (2 * n, n), (0, 2 * n), (n, 2 * n)]
+    assert sorted(r["LV"]) == sorted(jdx(i, j) for i, j in corners)
+    # the flat torus (no node: traces from its first vertex close up): its two loops split at their middle
+    V, F, UV, FUV = flat_torus(n=4)
+    QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
+    r = ss.quad_layout(QF)
+    check_quad_layout(QF, r)
+    assert r["faces"] == 1 and r["euler_characteristic"] == 0 and not r["polygon_mesh"]
+    with pytest.raises(ss.SnapError):
+        ss.quad_layout(np.array([[0, 1, 2, 3], [0, 4, 5, 6]]))
+    with pytest.raises(ss.InputError):
+        ss.quad_layout(grid[:, :3])
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
@@ -718,6 +762,7 @@ def test_extract_quad_mesh_shared_data(name, weld):
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
     # welded: the rows of V with one position are one vertex; compare positions, not rows
     check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
+    check_quad_layout(QF, ss.quad_layout(QF))
     assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]
 
 
