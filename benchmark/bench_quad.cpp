@@ -10,7 +10,9 @@
 // <name>_param.obj, see ../shared/reference/README.md): its V, F, valences, closed and manifold, measured
 // here from the OBJ file. A second table gives the valence histograms, a third the patches of each quad mesh
 // (quad_mesh_patches(): its motorcycle graph along the quad edges): patches, how many are rectangles, nodes,
-// motorcycles, separatrix edges, the largest patch (width x height), the time, and the patches of libQEx's stored mesh.
+// motorcycles, separatrix edges, the largest patch (width x height), the time, the quad layout (quad_layout(): its
+// vertices, arcs, T-junctions, arcs with one patch on both sides, whether it is a polygon mesh, its time with the
+// patches it recomputes), and the patches of libQEx's stored mesh.
 //
 // usage: bench_quad [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
@@ -24,6 +26,7 @@
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
@@ -99,10 +102,17 @@ static Reference read_reference(const fs::path& file)
   if(r.polygon_mesh && r.non_quads == 0) {
     Mesh m;
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, m);
-    auto patch = m.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
-    const SS::Quad_patches pt = SS::quad_mesh_patches(m, patch);
+    Mesh layout;
+    auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+    const SS::Quad_layout lay = SS::quad_layout(m, layout, arcs);   // its patches too (lay.patches)
+    const SS::Quad_patches& pt = lay.patches;
     r.patches = pt.status == SS::SUCCESS ? std::to_string(pt.patches.size()) + " (" + std::to_string(pt.rectangles) +
-                                           " rectangles, " + std::to_string(pt.nodes) + " nodes)" : SS::status_name(pt.status);
+                                           " rectangles, " + std::to_string(pt.nodes) + " nodes; layout " +
+                                           (lay.status == SS::SUCCESS ? std::to_string(lay.vertices) + " / " + std::to_string(lay.arcs) +
+                                                                        " / " + std::to_string(lay.t_junctions) + " / " +
+                                                                        std::to_string(lay.self_adjacent_arcs)
+                                                                      : std::string(SS::status_name(lay.status))) + ")"
+                                         : SS::status_name(pt.status);
   }
   return r;
 }
@@ -198,10 +208,15 @@ int main(int argc, char** argv)
     const SS::Quad_patches pt = SS::quad_mesh_patches(quads, patch);
     std::size_t largest = 0;
     for(std::size_t k = 1; k < pt.patches.size(); ++k) if(pt.patches[k].quads > pt.patches[largest].quads) largest = k;
-    char row[384];
-    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f | %s |", name.c_str(), SS::status_name(pt.status),
+    Mesh layout;
+    auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+    const SS::Quad_layout lay = SS::quad_layout(quads, layout, arcs);
+    char row[512];
+    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f | %zu / %zu / %zu / %zu (%s) | %.2f | %s |",
+                  name.c_str(), SS::status_name(pt.status),
                   pt.patches.size(), pt.rectangles, pt.nodes, pt.motorcycles, pt.separatrix_edges,
                   pt.patches.empty() ? 0 : pt.patches[largest].width, pt.patches.empty() ? 0 : pt.patches[largest].height, pt.total_ms,
+                  lay.vertices, lay.arcs, lay.t_junctions, lay.self_adjacent_arcs, lay.polygon_mesh ? "yes" : "no", lay.total_ms,
                   ref.found ? ref.patches.c_str() : "-");
     patch_rows.push_back(row);
     std::fflush(stdout);
@@ -209,7 +224,8 @@ int main(int argc, char** argv)
   std::printf("\n| model | mesh | valences (valence:vertices) |\n|---|---|---|\n");
   for(const std::string& h : histograms) std::printf("%s\n", h.c_str());
   std::printf("\n| model | patches status | patches | rectangles | nodes | motorcycles | separatrix edges | largest patch | ms |"
-              " libQEx's mesh: patches |\n|---|---|---|---|---|---|---|---|---|---|\n");
+              " layout: vertices / arcs / T-junctions / self-adjacent arcs (polygon mesh) | layout ms | libQEx's mesh: patches (its layout) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& r : patch_rows) std::printf("%s\n", r.c_str());
   return 0;
 }
