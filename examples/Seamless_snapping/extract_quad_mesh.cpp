@@ -2,7 +2,8 @@
 // whose seam translations and cones are integers up to solver error) is snapped to an exact integer-grid map,
 // then extract_quad_mesh() makes its quad mesh: every vertex an integer point of the map, every face a unit
 // cell, checked and verified exactly; quad_mesh_patches() then cuts it into rectangles of quads (the motorcycle
-// graph of the quad mesh), each quad a cell (i, j) of its patch's grid.
+// graph of the quad mesh), each quad a cell (i, j) of its patch's grid, and quad_layout() makes the coarse mesh of
+// those patches (one polygon per patch, its sides chains of quad edges).
 //   extract_quad_mesh IN.obj [GRID_SCALE [OUT.off]]     (GRID_SCALE: a power of two, default 1)
 // CTest runs it on the bear map that quad_figure writes (Orbifold Tutte Parallelogram) at grid scale 4.
 #include <CGAL/Simple_cartesian.h>
@@ -10,6 +11,7 @@
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
+#include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <cstdio>
@@ -64,6 +66,15 @@ int main(int argc, char** argv)
   std::printf("patches: %s; the first quad is cell (%d, %d) of patch %zu (%d x %d quads), its corner (%d, %d) at quad "
               "vertex %u\n", p.message.c_str(), l.i, l.j, l.patch, p.patches[l.patch].width, p.patches[l.patch].height,
               l.i, l.j, unsigned(quads.source(l.bottom)));
+
+  // 4. the quad layout: a face per patch; per layout halfedge its chain of quad edges (first halfedge, length)
+  Mesh layout;
+  auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  const SS::Quad_layout lay = SS::quad_layout(quads, layout, arcs);
+  if(lay.status != SS::SUCCESS) return fail(std::string("layout: ") + SS::status_name(lay.status) + ": " + lay.message);
+  const Mesh::Halfedge_index h = layout.halfedge(*layout.faces().begin());
+  std::printf("layout: %s; patch 0 starts with an arc of %d quad edges from quad vertex %u\n", lay.message.c_str(),
+              arcs[h].length, unsigned(quads.source(arcs[h].first)));
 
   if(argc > 3) {
     if(!CGAL::IO::write_OFF(argv[3], quads, CGAL::parameters::stream_precision(17))) return fail("cannot write the quad mesh");

@@ -17,7 +17,9 @@
 // edge, a point inside its face, compared in Gmpq); its valence is quad_valences()'s for a mesh vertex, 4
 // elsewhere inside (3 on a border edge), so that the irregular vertices are exactly the cones; every face of
 // the map is covered; the report agrees with the mesh; its patches (quad_mesh_patches(), check_quad_patches())
-// are rectangles of quads, every quad a cell of its patch's grid consistent with its neighbours.
+// are rectangles of quads, every quad a cell of its patch's grid consistent with its neighbours; its quad layout
+// (quad_layout(), check_quad_layout()) has a face per patch whose sides between its 4 corners are the patch's width
+// and height, arcs whose chains of quad edges run along the patch sides, and the quad mesh's Euler characteristic.
 //   quad: cube                  a generated exact IGM with 8 cones of valence 3, sides 1-3, grid scales 1, 2:
 //                               6 n^2 S^2 quads, chi 2; the map scaled by 2^-3 with grid_scale 8 gives the same
 //                               mesh bit for bit (scale covariance)
