@@ -39,6 +39,13 @@ typedef Mesh::Property_map<Mesh::Halfedge_index, K::Point_2> UV_map;
 namespace SS = CGAL::Seamless_snapping;
 using SS::IO::internal::json_string;
 
+// one line on stderr, exit status 1
+static int fail(const std::string& why)
+{
+  std::cerr << "seamless_trace: " << why << std::endl;
+  return EXIT_FAILURE;
+}
+
 int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
@@ -116,16 +123,11 @@ int main(int argc, char** argv)
     std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges lie on "
               << "another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }
-  if(!ok) {
-    std::cerr << "seamless_trace: " << message << std::endl;
-    return EXIT_FAILURE;
-  }
+  if(!ok) return fail(message);
   const auto t0 = std::chrono::steady_clock::now();
   SS::Isoline_tracer<Mesh, UV_map> tracer(mesh, uv);
-  if(tracer.status() != SS::SUCCESS) {
-    std::cerr << "seamless_trace: " << SS::status_name(tracer.status()) << ": " << tracer.message() << std::endl;
-    return EXIT_FAILURE;
-  }
+  if(tracer.status() != SS::SUCCESS)
+    return fail(std::string(SS::status_name(tracer.status())) + ": " + tracer.message());
   const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const bool exact = SS::is_exactly_seamless(mesh, uv);
@@ -171,25 +173,19 @@ int main(int argc, char** argv)
     }
     os << "},\n  \"milliseconds\": " << ms << ",\n  \"trace_ms\": " << g.trace_ms << ",\n  \"subdivision_ms\": "
        << L.subdivision_ms << ",\n  \"mesh_ms\": " << L.mesh_ms << ",\n  \"measure_ms\": " << L.measure_ms << "\n}\n";
-    if(SS::IO::internal::write_text_atomically(json, os.str(), message) != SS::SUCCESS) {
-      std::cerr << "seamless_trace: " << message << std::endl;
-      return EXIT_FAILURE;
-    }
+    if(SS::IO::internal::write_text_atomically(json, os.str(), message) != SS::SUCCESS) return fail(message);
   }
   for(const std::string* file : {&layout_obj, &layout_ply}) {
     if(file->empty()) continue;
     const SS::Status s = file == &layout_obj ? SS::IO::write_patch_layout_OBJ(*file, L, message)
                                              : SS::IO::write_patch_layout_PLY(*file, L, message);
-    if(s != SS::SUCCESS) { std::cerr << "seamless_trace: " << message << std::endl; return EXIT_FAILURE; }
+    if(s != SS::SUCCESS) return fail(message);
     std::printf("%s\n", message.c_str());
   }
   if(!svg.empty()) {
     std::ostringstream os;
     SS::IO::write_motorcycle_graph_svg(os, mesh, uv, g);
-    if(SS::IO::internal::write_text_atomically(svg, os.str(), message) != SS::SUCCESS) {
-      std::cerr << "seamless_trace: " << message << std::endl;
-      return EXIT_FAILURE;
-    }
+    if(SS::IO::internal::write_text_atomically(svg, os.str(), message) != SS::SUCCESS) return fail(message);
   }
   return EXIT_SUCCESS;
 }
