@@ -38,8 +38,9 @@
 //                               1, 2, the bear at 2, 4, 8, the horse at 1, 2)
 //   quad: patches refused       quad_mesh_patches() on triangles, on two quads with one vertex in common, on a mesh
 //                               with a removed face: INVALID_INPUT, nothing written; the last after collect_garbage(),
-//                               a torus with a hole: 4 nodes, rectangles (every extracted mesh above and below gets its
-//                               patches checked too)
+//                               a torus with a hole: 4 nodes, rectangles; a quad and a ring of quads (the ring seeded
+//                               on its own: two rectangles) (every extracted mesh above and below gets its patches, their
+//                               independence of the numbering and its quad layout checked too)
 //   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
 //                               (8 quads around it), off the integer points refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
@@ -242,6 +243,7 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
 // same patch is the next cell in that direction with its bottom side where the grid walk puts it, unless the side
 // lies on the rectangle's boundary (a patch that meets itself across a trail). Returns the patch sizes.
 static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, const std::string& what);
+static void check_patches_independent_of_numbering(const Mesh& q, const std::vector<std::size_t>& patch_of, const std::string& what);
 
 static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what)
 {
@@ -290,10 +292,58 @@ static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what)
   std::printf("quad: %-46s %6zu patches, all rectangles, %zu nodes, %zu motorcycles, %zu sides across a trail in one patch\n",
               (what + ", patches").c_str(), r.patches.size(), r.nodes, r.motorcycles, wraps);
   check_quad_layout(q, r, what);
+  if(r.nodes > 0) {
+    std::vector<std::size_t> patch_of;
+    for(face_descriptor f : q.faces()) patch_of.push_back(get(pm, f).patch);
+    check_patches_independent_of_numbering(q, patch_of, what);
+  }
   Patch_sizes sizes;
   for(const SS::Quad_patch& p : r.patches) sizes.push_back(std::make_pair((std::min)(p.width, p.height), (std::max)(p.width, p.height)));
   std::sort(sizes.begin(), sizes.end());
   return sizes;
+}
+
+// The patches of a quad mesh with nodes do not depend on its numbering (the tie rule of quad_patches.h reads the
+// orientation only): the same mesh with its vertices and faces shuffled and each face's vertex list rotated (three
+// fixed seeds) has the same partition of its quads (as sets of faces of q); patch_of: per face of q its patch.
+static void check_patches_independent_of_numbering(const Mesh& q, const std::vector<std::size_t>& patch_of, const std::string& what)
+{
+  auto partition = [](const std::vector<std::size_t>& patch, const std::vector<std::size_t>& face_of) {
+    std::map<std::size_t, std::vector<std::size_t> > parts;           // patch -> faces of q
+    for(std::size_t f = 0; f < patch.size(); ++f) parts[patch[f]].push_back(face_of[f]);
+    std::set<std::vector<std::size_t> > out;
+    for(auto& p : parts) { std::sort(p.second.begin(), p.second.end()); out.insert(p.second); }
+    return out;
+  };
+  std::vector<std::size_t> identity(q.number_of_faces());
+  for(std::size_t f = 0; f < identity.size(); ++f) identity[f] = f;
+  const std::set<std::vector<std::size_t> > expected = partition(patch_of, identity);
+  for(unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937 rng(seed);
+    std::vector<vertex_descriptor> vs(q.vertices().begin(), q.vertices().end());
+    std::vector<face_descriptor> fs(q.faces().begin(), q.faces().end());
+    std::shuffle(vs.begin(), vs.end(), rng);
+    std::shuffle(fs.begin(), fs.end(), rng);
+    Mesh p;
+    std::map<vertex_descriptor, vertex_descriptor> to_p;
+    for(vertex_descriptor v : vs) to_p[v] = p.add_vertex(q.point(v));
+    std::vector<std::size_t> face_of;                                   // per face of p: its face of q
+    for(face_descriptor f : fs) {
+      std::vector<vertex_descriptor> c;
+      for(vertex_descriptor v : CGAL::vertices_around_face(q.halfedge(f), q)) c.push_back(to_p[v]);
+      std::rotate(c.begin(), c.begin() + long(rng() % c.size()), c.end());
+      const face_descriptor g = p.add_face(c);
+      assert(g != Mesh::null_face() && std::size_t(g) == face_of.size());
+      face_of.push_back(std::size_t(f));
+    }
+    std::vector<SS::Quad_patch_location<Mesh> > locations(p.number_of_faces());
+    const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, p));
+    assert(SS::quad_mesh_patches(p, pm).all_rectangles());
+    std::vector<std::size_t> patch;
+    for(face_descriptor f : p.faces()) patch.push_back(get(pm, f).patch);
+    if(partition(patch, face_of) != expected) std::cerr << what << ": another partition with seed " << seed << std::endl;
+    assert(partition(patch, face_of) == expected);
+  }
 }
 
 // quad_layout() on an extracted mesh, checked from its output and the patches: a valid face graph, a polygon mesh
@@ -693,6 +743,20 @@ static void test_patch_refusals()
   r = SS::quad_mesh_patches(q.q, pm);
   assert(r.status == SS::SUCCESS && r.all_rectangles() && r.nodes == 4);
   check_quad_patches(q.q, "torus 5 x 5 with a hole");
+
+  // two parts: one quad (its 4 corners are nodes that launch nothing) and a ring of 4 quads (no node: seeded at its first
+  // vertex, one motorcycle across it). The first version seeded vertex 0 only, and only where no node launched a
+  // motorcycle: here a corner of the quad, which launches nothing, and the ring stayed an annulus (as in the regression
+  // input of fuzz_quad_patches); every patch a rectangle now, and the layout: 2 faces
+  Mesh two;
+  std::vector<vertex_descriptor> w;
+  for(int k = 0; k < 12; ++k) w.push_back(two.add_vertex(Point_3(k % 4, k / 4, k % 3)));
+  two.add_face(w[0], w[1], w[2], w[3]);
+  for(int k = 0; k < 4; ++k) two.add_face(w[std::size_t(4 + k)], w[std::size_t(4 + (k + 1) % 4)], w[std::size_t(8 + (k + 1) % 4)], w[std::size_t(8 + k)]);
+  std::vector<SS::Quad_patch_location<Mesh> > parts(two.number_of_faces());
+  r = SS::quad_mesh_patches(two, boost::make_iterator_property_map(parts.begin(), get(boost::face_index, two)));
+  assert(r.status == SS::SUCCESS && r.all_rectangles() && r.patches.size() == 2 && r.nodes == 4 && r.motorcycles == 1);
+  check_quad_patches(two, "a quad and a ring of 4 quads");
 }
 
 static void test_refusals()

@@ -93,8 +93,8 @@ struct Quad_layout
  * sides, and the lengths of a face's sides between its corners are its patch's width, height, width, height.
  * An arc that would run from a vertex back to itself (a trail that returns to its node; the two loops of a torus
  * without nodes) is split at the middle vertex of its chain, which becomes a layout vertex too: CGAL's halfedge graphs
- * have no loop edge. A patch may lie on both sides of an arc (a band cut open once, as 2 of the horse's 279 arcs, 20 quad edges,
- * in its 108 patches) or meet a vertex twice (the torus: one face around the vertex where its loops cross). A self-adjacent arc
+ * have no loop edge. A patch may lie on both sides of an arc (a band cut open once: a ring of quads seeded once) or meet a
+ * vertex twice (the torus: one face around the vertex where its loops cross; 1 of the horse's 109 patches). A self-adjacent arc
  * makes the layout a valid face graph (`CGAL::is_valid_face_graph()`) but not a polygon mesh;
  * `Quad_layout::polygon_mesh` is set where neither occurs.
  *

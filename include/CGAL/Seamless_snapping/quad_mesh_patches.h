@@ -157,11 +157,13 @@ Quad_patches quad_mesh_patch_cells(const PolygonMesh& qm, const NamedParameters&
  *
  * Nodes are the interior vertices of valence other than 4 (on a mesh of `extract_quad_mesh()`, the cones of the map)
  * and the border vertices with other than 2 quads; from each, a motorcycle leaves along each of its edges that has a
- * quad on both sides. All move together, one edge per round, in the order of their nodes' indices; each goes
- * straight on (the opposite edge) at a regular interior vertex that no trail has reached yet and stops at any other
- * vertex (a node, the border, or a trail laid before: a T-junction). A mesh without nodes (a torus, a cylinder with
- * straight borders) gets motorcycles from its first vertex. The patches are the quads connected across edges that
- * no motorcycle ran along.
+ * quad on both sides. All move together, one edge per round, and stop at a vertex a trail reached in an earlier round
+ * (a node, the border, or a trail laid before: a T-junction). Where motorcycles reach a regular interior vertex first
+ * in the same round, one goes straight on (the opposite edge) and the others stop there: two that meet head-on both
+ * stop, and of two that arrive at right angles the one heading a quarter turn counter-clockwise from the other goes on.
+ * The rule reads the orientation of the mesh, never an index, so the patches do not depend on the numbering of its
+ * elements, but on a connected part without nodes (a torus, a cylinder with straight borders), which gets
+ * motorcycles from its first vertex. The patches are the quads connected across edges that no motorcycle ran along.
  *
  * Each patch is then checked to be a rectangle: a grid of `width` x `height` quads, every cell once, whose sides on
  * the rectangle's boundary, and only those, are trails or border edges (a patch may meet itself across a trail: a band

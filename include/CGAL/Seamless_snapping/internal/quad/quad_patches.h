@@ -16,12 +16,15 @@
 //
 // 1. Motorcycles. Nodes are the interior vertices of valence other than 4 and the border vertices with other
 //    than 2 quads; each sends a motorcycle along each of its edges that has a quad on both sides. All move
-//    together, one edge per round, in the order they were made (by vertex, then around it); a motorcycle marks
-//    the edges it runs along and the vertices it reaches, goes straight on at a vertex it is the first to reach
-//    (a regular interior vertex: the edge opposite the one it came by), and stops at a vertex already marked (a
-//    node, a border vertex, or a vertex of a trail laid before: a T-junction). A mesh without nodes (a torus, a
-//    cylinder whose borders have no corner) gets motorcycles from its first vertex, along each of its edges with
-//    two quads.
+//    together, one edge per round; a motorcycle marks the edges it runs along and the vertices it reaches, and
+//    stops at a vertex marked before the round (a node, a border vertex, or a vertex of a trail laid before: a
+//    T-junction). At a regular interior vertex first reached in a round, by one motorcycle or several at once, one
+//    goes straight on (the edge opposite the one it came by) and the others stop there: of those that no other
+//    meets head-on (two that meet head-on both stop; their trails join), the one whose heading is a quarter turn
+//    counter-clockwise from the other's, where two arrive at right angles. The rule reads the orientation only,
+//    no index: the partition does not depend on the numbering of the mesh or the order of the motorcycles (but
+//    for a mesh without nodes). A connected part without nodes (a torus, a cylinder whose borders have no corner)
+//    gets motorcycles from its first vertex, along each of its edges with two quads.
 // 2. Patches: the quads connected across edges that no motorcycle ran along.
 // 3. Grids: each patch is given integer coordinates from its quad of smallest index, whose halfedge(f) runs
 //    along its bottom side (+i): across the right side of a quad lies (i + 1, j) with its bottom side the
@@ -124,17 +127,60 @@ inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m, const Vertex_fans
   };
   for(std::size_t v = 0; v < nv; ++v) if(is_node(v)) { ++out.nodes; launch(v); }
   for(std::size_t v = 0; v < nv; ++v) if(on_border(v)) marked[v] = 1;
-  if(riding.empty())
-    for(std::size_t v = 0; v < nv; ++v) if(some_in[v] >= 0) { launch(v); break; }
+  {                                                           // a connected part without a node: seeded at its first vertex
+    std::vector<char> seen(nv, 0);                            // (a part whose nodes launch nothing, e.g. a grid with its 4
+    std::vector<std::size_t> stack;                           // corners, is one patch)
+    for(std::size_t v0 = 0; v0 < nv; ++v0) {
+      if(seen[v0] || some_in[v0] < 0) continue;
+      bool has_node = false;
+      seen[v0] = 1; stack.assign(1, v0);
+      while(!stack.empty()) {
+        const std::size_t v = stack.back(); stack.pop_back();
+        has_node = has_node || is_node(v);
+        int h = some_in[v];
+        do {
+          const std::size_t u = std::size_t(m.target[std::size_t(m.opp[std::size_t(h)])]);
+          if(!seen[u]) { seen[u] = 1; stack.push_back(u); }
+          h = m.opp[std::size_t(m.next[std::size_t(h)])];
+        } while(h != some_in[v]);
+      }
+      if(!has_node) launch(v0);
+    }
+  }
   out.motorcycles = riding.size();
+  std::vector<int> group(nv, -1);                             // per vertex reached in this round: its arrivals' group
+  std::vector<std::vector<int> > arrivals;
   while(!riding.empty()) {
-    std::vector<int> still;
+    arrivals.clear();
     for(int g : riding) {
       out.trail[std::size_t(g)] = out.trail[std::size_t(m.opp[std::size_t(g)])] = 1;
       const std::size_t w = std::size_t(m.target[std::size_t(g)]);
       if(marked[w]) { out.stops_on_trails += is_node(w) || on_border(w) ? 0 : 1; continue; }
-      marked[w] = 1;                                          // a regular interior vertex: straight on
-      still.push_back(m.next[std::size_t(m.opp[std::size_t(m.next[std::size_t(g)])])]);
+      if(group[w] < 0) { group[w] = int(arrivals.size()); arrivals.emplace_back(); }
+      arrivals[std::size_t(group[w])].push_back(g);
+    }
+    // who goes on from a regular interior vertex reached in this round (see the header)
+    std::vector<int> still;
+    for(const std::vector<int>& a : arrivals) {
+      const std::size_t w = std::size_t(m.target[std::size_t(a.front())]);
+      marked[w] = 1;
+      group[w] = -1;
+      int heading[4] = {0, 0, 0, 0};                          // quarter turns counter-clockwise from a[0]'s
+      for(std::size_t i = 1; i < a.size(); ++i) {
+        int h = a.front(), k = 0;                            // opp(next(h)): the next incoming halfedge clockwise
+        while(h != a[i] && k < 4) { h = m.opp[std::size_t(m.next[std::size_t(h)])]; ++k; }
+        heading[i] = (4 - k) % 4;
+      }
+      int goes = -1;                                          // of those without one from straight ahead, the one
+      for(std::size_t i = 0; i < a.size(); ++i) {             // turned counter-clockwise from the other
+        bool met = false;
+        for(std::size_t j = 0; j < a.size(); ++j) met = met || heading[j] == (heading[i] + 2) % 4;
+        if(!met && (goes < 0 || heading[i] == (heading[goes] + 1) % 4)) goes = int(i);
+      }
+      for(std::size_t i = 0; i < a.size(); ++i) {
+        if(int(i) == goes) still.push_back(m.next[std::size_t(m.opp[std::size_t(m.next[std::size_t(a[i])])])]);  // straight on
+        else ++out.stops_on_trails;
+      }
     }
     riding.swap(still);
   }
