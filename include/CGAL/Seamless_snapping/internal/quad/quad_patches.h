@@ -23,7 +23,7 @@
 //    meets head-on (two that meet head-on both stop; their trails join), the one whose heading is a quarter turn
 //    counter-clockwise from the other's, where two arrive at right angles. The rule reads the orientation only,
 //    no index: the partition does not depend on the numbering of the mesh or the order of the motorcycles (but
-//    for a mesh without nodes). A connected part without nodes (a torus, a cylinder whose borders have no corner)
+//    on a part without nodes). A connected part without nodes (a torus, a cylinder whose borders have no corner)
 //    gets motorcycles from its first vertex, along each of its edges with two quads.
 // 2. Patches: the quads connected across edges that no motorcycle ran along.
 // 3. Grids: each patch is given integer coordinates from its quad of smallest index, whose halfedge(f) runs
@@ -165,7 +165,7 @@ inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m, const Vertex_fans
       const std::size_t w = std::size_t(m.target[std::size_t(a.front())]);
       marked[w] = 1;
       group[w] = -1;
-      int heading[4] = {0, 0, 0, 0};                          // quarter turns counter-clockwise from a[0]'s
+      std::vector<int> heading(a.size(), 0);                  // quarter turns counter-clockwise from a[0]'s
       for(std::size_t i = 1; i < a.size(); ++i) {
         int h = a.front(), k = 0;                            // opp(next(h)): the next incoming halfedge clockwise
         while(h != a[i] && k < 4) { h = m.opp[std::size_t(m.next[std::size_t(h)])]; ++k; }
@@ -175,7 +175,7 @@ inline Quad_patch_cells quad_patch_cells(const Quad_arrays& m, const Vertex_fans
       for(std::size_t i = 0; i < a.size(); ++i) {             // turned counter-clockwise from the other
         bool met = false;
         for(std::size_t j = 0; j < a.size(); ++j) met = met || heading[j] == (heading[i] + 2) % 4;
-        if(!met && (goes < 0 || heading[i] == (heading[goes] + 1) % 4)) goes = int(i);
+        if(!met && (goes < 0 || heading[i] == (heading[std::size_t(goes)] + 1) % 4)) goes = int(i);
       }
       for(std::size_t i = 0; i < a.size(); ++i) {
         if(int(i) == goes) still.push_back(m.next[std::size_t(m.opp[std::size_t(m.next[std::size_t(a[i])])])]);  // straight on
