@@ -352,7 +352,8 @@ def quad_layout(QF, *, raise_on_failure=True):
     edges between them along the traces and the border (C++ quad_layout(); the "coarse mesh" of the patches).
 
     Returns the report as a dict: "status", "message", "vertices", "arcs", "faces", "border_arcs", "t_junctions",
-    "self_adjacent_arcs" (arcs with one patch on both sides), "polygon_mesh" (none of those and every polygon simple),
+    "self_adjacent_arcs" (arcs with one patch on both sides), "non_simple_faces" (polygons listing a vertex twice),
+    "polygon_mesh" (neither occurs),
     "euler_characteristic" (that of the quad mesh), "patches" (the report of quad_mesh_patches(QF) without its
     per-row arrays), and the layout: "LV" (per layout vertex its vertex index in QF), "LF" (per patch, in the order
     of "patches"["sizes"], its polygon: indices into LV, counter-clockwise from the patch's grid corner (0, 0)),

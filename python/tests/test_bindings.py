@@ -744,7 +744,7 @@ def test_quad_layout():
     QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
     r = ss.quad_layout(QF)
     check_quad_layout(QF, r)
-    assert r["faces"] == 1 and r["euler_characteristic"] == 0 and not r["polygon_mesh"]
+    assert r["faces"] == 1 and r["euler_characteristic"] == 0 and not r["polygon_mesh"] and r["non_simple_faces"] == 1
     with pytest.raises(ss.SnapError):
         ss.quad_layout(np.array([[0, 1, 2, 3], [0, 4, 5, 6]]))
     with pytest.raises(ss.InputError):

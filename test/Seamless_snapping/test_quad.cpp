@@ -403,6 +403,7 @@ static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, co
   std::size_t sides = 0;
   for(halfedge_descriptor h : q.halfedges()) sides += on_side(h) ? 1 : 0;
   assert(covered.size() == sides && r.border_arcs == border && r.t_junctions == t_junctions);
+  std::size_t non_simple = 0;                                      // faces meeting a vertex twice: their repeats
   for(face_descriptor f : L.faces()) {
     const SS::Quad_patch& P = patches.patches[std::size_t(f)];
     std::vector<int> length;
@@ -412,8 +413,12 @@ static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, co
       if(get(arcs, h).corner) { length.push_back(run); run = 0; }
     }
     assert(length.size() == 4 && run == 0);                        // the face's first halfedge starts at a corner
+    std::set<vertex_descriptor> met;
+    for(vertex_descriptor v : CGAL::vertices_around_face(L.halfedge(f), L)) non_simple += met.insert(v).second ? 0 : 1;
     assert(length[0] == length[2] && length[1] == length[3] && length[0] == P.width && length[1] == P.height);
   }
+  assert((non_simple > 0) == (r.non_simple_faces > 0) && r.non_simple_faces <= non_simple);
+  assert(r.polygon_mesh == (r.self_adjacent_arcs == 0 && r.non_simple_faces == 0));
   std::printf("quad: %-46s %6zu faces, %zu vertices, %zu arcs (%zu on the border), %zu T-junctions, %zu self-adjacent arcs, %s\n",
               (what + ", layout").c_str(), L.number_of_faces(), r.vertices, r.arcs, r.border_arcs, r.t_junctions,
               r.self_adjacent_arcs, r.polygon_mesh ? "simple polygons" : "not all faces simple polygons");

@@ -25,7 +25,6 @@
 #include <chrono>
 #include <cstddef>
 #include <iomanip>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -61,7 +60,8 @@ struct Quad_layout
   std::size_t border_arcs = 0;       ///< arcs on the border of the mesh
   std::size_t t_junctions = 0;       ///< (patch, vertex) incidences where the vertex lies on a side of the patch's rectangle, not at a corner (T-junctions, and the vertices that split loops)
   std::size_t self_adjacent_arcs = 0;///< arcs with one patch on both sides (a band cut open once)
-  bool polygon_mesh = false;         ///< no self-adjacent arc and every face a simple polygon (no vertex twice): then the layout is a polygon mesh (`CGAL::is_valid_polygon_mesh()`); a self-adjacent arc makes it a valid face graph only
+  std::size_t non_simple_faces = 0;  ///< faces that meet a vertex twice (their polygon lists it twice)
+  bool polygon_mesh = false;         ///< no self-adjacent arc and no non-simple face: then the layout is a polygon mesh (`CGAL::is_valid_polygon_mesh()`); a self-adjacent arc makes it a valid face graph only
   long euler_characteristic = 0;     ///< V - E + F of the layout, that of the quad mesh
   double total_ms = 0;               ///< wall clock, the patches included
 
@@ -73,6 +73,7 @@ struct Quad_layout
       << ",\n  \"message\": " << IO::internal::json_string(message) << ",\n  \"vertices\": " << vertices
       << ",\n  \"arcs\": " << arcs << ",\n  \"faces\": " << patches.patches.size() << ",\n  \"border_arcs\": " << border_arcs
       << ",\n  \"t_junctions\": " << t_junctions << ",\n  \"self_adjacent_arcs\": " << self_adjacent_arcs
+      << ",\n  \"non_simple_faces\": " << non_simple_faces
       << ",\n  \"polygon_mesh\": " << (polygon_mesh ? "true" : "false") << ",\n  \"euler_characteristic\": " << euler_characteristic
       << ",\n  \"total_ms\": " << IO::internal::json_number(total_ms) << "\n}\n";
     return o.str();
@@ -186,18 +187,25 @@ Quad_layout quad_layout(const PolygonMesh& qm, LayoutGraph& layout, LayoutArcMap
   r.t_junctions = a.t_junctions;
   r.self_adjacent_arcs = a.self_adjacent_arcs;
   r.euler_characteristic = long(r.vertices) - long(r.arcs) + long(lf.size());
-  r.polygon_mesh = r.self_adjacent_arcs == 0;
-  for(std::size_t p = 0; p < lf.size() && r.polygon_mesh; ++p) {   // a vertex met twice by a patch
-    std::set<int> met;
+  std::vector<int> met(lv.size(), -1);                            // per vertex: the last face that met it
+  for(std::size_t p = 0; p < lf.size(); ++p) {
+    bool twice = false;
     int l = a.face_halfedge[p];
-    do { r.polygon_mesh = met.insert(a.target[std::size_t(l)]).second; l = a.next[std::size_t(l)]; }
-    while(l != a.face_halfedge[p] && r.polygon_mesh);
+    do {
+      int& m = met[std::size_t(a.target[std::size_t(l)])];
+      twice = twice || m == int(p);
+      m = int(p);
+      l = a.next[std::size_t(l)];
+    } while(l != a.face_halfedge[p]);
+    r.non_simple_faces += twice ? 1 : 0;
   }
+  r.polygon_mesh = r.self_adjacent_arcs == 0 && r.non_simple_faces == 0;
   r.status = SUCCESS;
   r.message = std::to_string(lf.size()) + " patches, " + std::to_string(r.vertices) + " vertices, " + std::to_string(r.arcs) +
               " arcs (" + std::to_string(r.border_arcs) + " on the border), " + std::to_string(r.t_junctions) + " T-junctions" +
-              (r.polygon_mesh ? "" : "; not a polygon mesh (" + std::to_string(r.self_adjacent_arcs) +
-                                     " arcs with one patch on both sides, or a patch meeting a vertex twice)");
+              (r.polygon_mesh ? "" : "; not a polygon mesh: " + std::to_string(r.self_adjacent_arcs) +
+                                     " arcs with one patch on both sides, " + std::to_string(r.non_simple_faces) +
+                                     " faces meeting a vertex twice");
   r.total_ms = internal::ms_since(t0);
   return r;
 }
