@@ -348,8 +348,7 @@ int main(int argc, char** argv)
       auto quad_vertex = layout.add_property_map<Mesh::Vertex_index, std::int32_t>("v:quad_vertex").first;
       auto width = layout.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_width").first;
       auto height = layout.add_property_map<Mesh::Face_index, std::int32_t>("f:patch_height").first;
-      for(Mesh::Vertex_index v : layout.vertices())      // the chain of the arc leaving v starts at its quad vertex
-        quad_vertex[v] = std::int32_t(quads.source(arcs[layout.next(layout.halfedge(v))].first));
+      for(Mesh::Vertex_index v : layout.vertices()) quad_vertex[v] = std::int32_t(SS::layout_quad_vertex(quads, layout, arcs, v));
       for(Mesh::Face_index f : layout.faces()) {
         width[f] = std::int32_t(lay.patches.patches[std::size_t(f)].width);
         height[f] = std::int32_t(lay.patches.patches[std::size_t(f)].height);

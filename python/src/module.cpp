@@ -483,7 +483,7 @@ py::dict quad_layout(const MatrixXlR& QF)
   if(r.status != SS::SUCCESS) return out;
   py::array_t<long long> LV(py::ssize_t(L.number_of_vertices()));
   auto lv = LV.mutable_unchecked<1>();
-  for(Mesh::Vertex_index v : L.vertices()) lv(py::ssize_t(v)) = (long long)(q.source(arcs[L.next(L.halfedge(v))].first));
+  for(Mesh::Vertex_index v : L.vertices()) lv(py::ssize_t(v)) = (long long)(SS::layout_quad_vertex(q, L, arcs, v));
   py::list faces, corners, lengths;
   for(Mesh::Face_index f : L.faces()) {
     std::vector<long long> vs, ls;

@@ -400,6 +400,7 @@ static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, co
     assert(in.first->second == q.target(e) && L.point(L.target(h)) == q.point(q.target(e)));
     if(in.second) assert(used.insert(q.target(e)).second);       // one layout vertex per quad vertex
   }
+  for(const auto& lq : quad_vertex) assert(SS::layout_quad_vertex(q, L, arcs, lq.first) == lq.second);
   std::size_t sides = 0;
   for(halfedge_descriptor h : q.halfedges()) sides += on_side(h) ? 1 : 0;
   assert(covered.size() == sides && r.border_arcs == border && r.t_junctions == t_junctions);

@@ -48,6 +48,20 @@ struct Quad_layout_arc
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
+ * returns the vertex of the quad mesh `qm` at the layout vertex `v`: the source of the chain of the layout halfedge
+ * leaving `v` (`next(halfedge(v))`).
+ * \pre `v` is a vertex that `quad_layout()` added to `layout`, `arc_map` the map it wrote
+ */
+template <class PolygonMesh, class LayoutGraph, class LayoutArcMap>
+typename boost::graph_traits<PolygonMesh>::vertex_descriptor
+layout_quad_vertex(const PolygonMesh& qm, const LayoutGraph& layout, const LayoutArcMap& arc_map,
+                   typename boost::graph_traits<LayoutGraph>::vertex_descriptor v)
+{
+  return source(get(arc_map, next(halfedge(v, layout), layout)).first, qm);
+}
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
  * The result of `quad_layout()`.
  */
 struct Quad_layout
