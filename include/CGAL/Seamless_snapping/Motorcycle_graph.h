@@ -49,11 +49,16 @@ struct Motorcycle_graph
  *
  * traces the separatrices of the motorcycle graph of the map read by `tracer` ([CBK15]; Sec. 6.2 of Mandad & Campen
  * 2019): from every cone of `n` quarter turns its `n` axis rays, from every border corner the axis rays strictly inside
- * its fan. The traces advance together, one face at a time, the one with the smallest parametric length first (ties:
- * smaller index); each stops at a cone, the border, or the trail of any trace laid so far (a T-junction). A ray that
- * starts along an existing trail stops at once (`EARLIER_TRACE` without segments: the arc exists already).
- * Without cones and border corners (a torus), four traces (+u, +v, -u, -v) are seeded at the first corner of the
- * mesh, and `seeded` is set; where an isoline closes, its reverse trace starts along it and stops at once.
+ * its fan. The traces start together and move at unit speed in UV (time = parametric length, exact rationals: an event
+ * simulation, each face crossing and each meeting an event); each stops at a cone, the border, or where it reaches the
+ * trail of a trace that passed there earlier (a T-junction, `EARLIER_TRACE`). Traces that reach a point at the same
+ * time: two head-on both stop (their trails join), and of two at right angles the one heading a quarter turn
+ * counter-clockwise from the other goes on (the rule of `quad_mesh_patches()`). So the graph depends on the map, not
+ * on its triangulation or numbering (but for ties at mesh vertices and edges among more than two traces, decided pair
+ * by pair in the order of the trace indices): on an integer-grid map the patches are those of the quad mesh of
+ * `extract_quad_mesh()` cut by `quad_mesh_patches()`, with the same sizes, nodes and arcs (`test_quad` checks this on
+ * every covering quad mesh it extracts). Without cones and border corners (a torus), four traces (+u, +v, -u, -v) are
+ * seeded at the first corner of the mesh, and `seeded` is set.
  *
  *
  * With `with_layout`, the faces are then cut along all separatrices, exactly, into the patch layout

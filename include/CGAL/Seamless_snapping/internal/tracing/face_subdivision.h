@@ -67,8 +67,10 @@ class Face_subdivider
 public:
   Face_subdivider(const Tracing_map& map, Face_subdivision& out) : map_(map), cm_(map.cm), out_(out) {}
 
-  // subdivides every face by `segments` (in any order; inserted by Raw_segment::order). Every face
-  // must be positively oriented in UV.
+  // subdivides every face by `segments` (in any order; inserted by Raw_segment::order, a segment whose end lies on
+  // a segment inserted later (a trace that stopped on a trail whose crossing of the face ended after the stop) once
+  // that one is in). Two segments that end at one point inside a face (traces that met head-on) are one chord. Every
+  // face must be positively oriented in UV.
   void run(std::vector<const Raw_segment*> segments)
   {
     out_ = Face_subdivision();
@@ -96,7 +98,13 @@ public:
     face_polygons_.assign(std::size_t(cm_.n_faces), {});
     out_.polygons.reserve(std::size_t(cm_.n_faces) + segments.size());   // a segment splits at most one polygon in two
     for(int f = 0; f < cm_.n_faces; ++f) initial_polygon(f);
-    for(std::size_t i = 0; i < segments.size(); ++i) insert_segment(*segments[i], ends[i]);
+    std::vector<std::vector<std::size_t> > waiting(std::size_t(cm_.n_faces));   // per face: segments with an end not
+    for(std::size_t i = 0; i < segments.size(); ++i) {                        // yet on a piece's boundary
+      std::vector<std::size_t>& w = waiting[std::size_t(segments[i]->face)];
+      if(insert_segment(*segments[i], ends[i], false)) insert_waiting(segments, ends, w, false);
+      else w.push_back(i);
+    }
+    for(std::vector<std::size_t>& w : waiting) if(!w.empty()) insert_waiting(segments, ends, w, true);
   }
 
 private:
@@ -238,12 +246,43 @@ private:
     }
   }
 
-  // `ends`: the places of s.from and s.to
-  void insert_segment(const Raw_segment& s, const std::array<Place, 2>& ends)
+  // inserts the waiting segments `w` of a face that fit now, until none does; then, with `stuck`, two that end at one
+  // point inside the face (traces that met head-on) as one chord, and again; the rest as unplaced
+  void insert_waiting(const std::vector<const Raw_segment*>& segments, const std::vector<std::array<Place, 2> >& ends,
+                      std::vector<std::size_t>& w, bool stuck)
+  {
+    for(;;) {
+      bool progress = false;
+      for(std::size_t k = 0; k < w.size() && !progress; ++k)
+        if(insert_segment(*segments[w[k]], ends[w[k]], false)) { w.erase(w.begin() + std::ptrdiff_t(k)); progress = true; }
+      if(progress) continue;
+      if(!stuck) return;
+      for(std::size_t k = 0; k < w.size() && !progress; ++k)
+        for(std::size_t l = k + 1; l < w.size() && !progress; ++l) {
+          const Raw_segment& a = *segments[w[k]];
+          const Raw_segment& b = *segments[w[l]];
+          if(a.to.kind != IN_FACE || b.to.kind != IN_FACE || a.to.uv != b.to.uv || direction_mod4(a.m - b.m) != 2) continue;
+          Raw_segment chord = a;
+          chord.to = b.from;
+          insert_segment(chord, {{ends[w[k]][0], ends[w[l]][0]}}, true);
+          w.erase(w.begin() + std::ptrdiff_t(l));
+          w.erase(w.begin() + std::ptrdiff_t(k));
+          progress = true;
+        }
+      if(progress) continue;
+      for(std::size_t i : w) insert_segment(*segments[i], ends[i], true);
+      w.clear();
+      return;
+    }
+  }
+
+  // `ends`: the places of s.from and s.to. False (nothing done) if an end lies inside the piece that holds the segment
+  // and not `last_try` (a segment inserted later may put it on a boundary); on the last try such a segment is unplaced
+  bool insert_segment(const Raw_segment& s, const std::array<Place, 2>& ends, bool last_try)
   {
     const Exact_uv& p = s.from.uv;
     const Exact_uv& q = s.to.uv;
-    if(p == q) return;
+    if(p == q) return true;
     const int f = s.face;
     const Uv_box& p_box = ends[0].box;
     const Uv_box& q_box = ends[1].box;
@@ -259,10 +298,14 @@ private:
       if(!along) { pick = k; inside = true; break; }
       if(pick < 0) pick = k;                                 // along its boundary
     }
-    if(pick < 0) {
+    // an end strictly inside the piece (on_p_, on_q_: of the piece picked inside, the last one tested)
+    const bool dangling = inside && (std::find(on_p_.begin(), on_p_.end(), 1) == on_p_.end() ||
+                                     std::find(on_q_.begin(), on_q_.end(), 1) == on_q_.end());
+    if(dangling && !last_try) return false;
+    if(pick < 0 || dangling) {
       if(out_.unplaced++ == 0)
-        out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + " fits no piece of the face";
-      return;
+        out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + (pick < 0 ? " fits no piece of the face" : " ends inside a piece");
+      return true;
     }
     const int ip = vertex_id(f, p, ends[0]), iq = vertex_id(f, q, ends[1]);
     add_corner(f, p, p_box, ip);
@@ -276,7 +319,7 @@ private:
       for(std::size_t k = (i + 1) % n; k != j && straight; k = (k + 1) % n)
         straight = orientation_sign(p, p_box, q, q_box, P.uv[k], P.box[k]) == 0;
       for(std::size_t k = straight ? i : j; k != (straight ? j : i); k = (k + 1) % n) P.arc[k] = 1;
-      return;
+      return true;
     }
     Layout_polygon A, B;
     A.face = B.face = f;
@@ -291,6 +334,7 @@ private:
     P = std::move(A);
     face_polygons_[std::size_t(f)].push_back(int(out_.polygons.size()));
     out_.polygons.push_back(std::move(B));
+    return true;
   }
 };
 

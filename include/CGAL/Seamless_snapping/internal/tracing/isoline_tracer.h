@@ -11,9 +11,11 @@
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_TRACING_ISOLINE_TRACER_H
 
 // The isoline tracer as a resumable state machine: one call of step() crosses one face (and passes
-// the vertex it may end at), so that several traces can advance together (motorcycle graph).
+// the vertex it may end at): plan() the crossing, then execute() it, so that several traces can advance
+// together in exact time (the event simulation of the motorcycle graph, motorcycle_graph.h).
 // Stops (Trace_end): cone, border, target, closed loop, earlier trace (the trails of a
-// Trail_registry), step limit; or an inconsistency of the map, reported with its place.
+// Trail_registry, with the times their traces passed), step limit; or an inconsistency of the map,
+// reported with its place.
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/Trace_end.h>
@@ -66,16 +68,37 @@ struct Raw_segment
   std::size_t order = 0; // when it was laid, among the segments of all traces of one Trail_registry
 };
 
-// Trails of earlier traces, per face (segments in that face's chart) and per vertex.
+// Trails of traces, per face (paths in that face's chart) and per vertex, with the exact times (parametric lengths
+// from the start) at which their traces pass: the clock of the motorcycle graph (motorcycle_graph.h).
 struct Trail_registry
 {
-  struct Stored { int trace; Exact_uv a, b; };
+  // a path of `trace` in the face's chart from a, reached at `time`, towards b along direction m: the whole crossing
+  // the trace planned when it entered the face; it ends earlier if the trace stops (end_time)
+  struct Stored { int trace; Exact_uv a, b; FT time; int m; };
+  // a trace that must stop at time `time`, where it reaches the trail of `hit`, which passed there at `hit_time` (or
+  // at the same time and has the right of way), found when the trail of `hit` was planned (Isoline_stepper::plan());
+  // `meet`: it reaches there at the same time as `hit` and others perhaps (decided when it gets there)
+  struct Stop_request { int trace; FT time; int hit; FT hit_time; bool meet; };
   std::vector<std::vector<Stored> > per_face;
   std::vector<int> vertex_trace;      // -1 or the first trace through (or from) the vertex
-  std::vector<int> ended_on;          // per trace: the trace it ended on (EARLIER_TRACE), else -1
+  std::vector<FT> vertex_time;        // when it passed
+  std::vector<int> vertex_corner;     // the corner (target = the vertex) in whose face's chart it arrived with
+  std::vector<int> vertex_m;          // direction vertex_m (a start: the corner and direction it left by)
+  std::vector<char> ended;            // per trace: it has ended, at end_time
+  std::vector<FT> end_time;
+  std::vector<Stop_request> requests; // for the scheduler
   std::size_t laid = 0;               // segments laid so far (Raw_segment::order)
-  void init(const Corner_mesh& cm) { per_face.assign(cm.n_faces, {}); vertex_trace.assign(cm.n_vertices, -1); ended_on.clear(); laid = 0; }
-  int ended_on_trace(int trace) const { return trace >= 0 && std::size_t(trace) < ended_on.size() ? ended_on[std::size_t(trace)] : -1; }
+  void init(const Corner_mesh& cm, std::size_t traces)
+  {
+    per_face.assign(cm.n_faces, {});
+    vertex_trace.assign(cm.n_vertices, -1); vertex_time.assign(cm.n_vertices, FT(0));
+    vertex_corner.assign(cm.n_vertices, -1); vertex_m.assign(cm.n_vertices, 0);
+    ended.assign(traces, 0); end_time.assign(traces, FT(0));
+    requests.clear(); laid = 0;
+  }
+  // whether `trace` reached the point of its trail that it reaches at `time` (its trail there exists): it has not
+  // ended before; for a trace alive, the events up to now (>= time) have not stopped it
+  bool reached(int trace, const FT& time) const { return !ended[std::size_t(trace)] || !(end_time[std::size_t(trace)] < time); }
 };
 
 struct Trace_target
@@ -97,7 +120,17 @@ struct Trace_run
   int start_vertex = -1, start_corner = -1, start_m = 0, start_face = -1;
   Exact_uv start_p;
   std::size_t steps = 0;
-  double length = 0;          // parametric length, rounded (for scheduling and reports only)
+  double length = 0;          // parametric length, rounded (for reports only)
+  FT time;                    // parametric length at p, exact (the clock of the motorcycle graph)
+  // the next event, planned in the current face (Isoline_stepper::plan()): the exit `ex`, or a stop at `stop_at`
+  // along the direction (reason stop_end; EARLIER_TRACE: on the trail of `hit`, which passes there at `hit_time`)
+  Face_exit ex;
+  bool planned = false, stops = false, path_registered = false;
+  bool meet = false;          // the stop is a meeting inside the face: stop or go on is decided there (execute())
+  FT stop_at, hit_time, event_time;
+  FT passed_until = FT(-1);   // meetings up to this time are decided (it went on)
+  Trace_end stop_end = Trace_end::LENGTH_LIMIT;
+  int hit = -1;
   bool finished = false;
   Trace_end end = Trace_end::LENGTH_LIMIT;
   std::string detail;
@@ -121,9 +154,9 @@ public:
   void finish(Trace_run& r, Trace_end e, const std::string& detail) const
   {
     r.finished = true; r.end = e; r.detail = detail;
-    if(trails && e == Trace_end::EARLIER_TRACE && r.id >= 0) {
-      if(trails->ended_on.size() <= std::size_t(r.id)) trails->ended_on.resize(std::size_t(r.id) + 1, -1);
-      trails->ended_on[std::size_t(r.id)] = r.hit_trace;
+    if(trails && r.id >= 0 && std::size_t(r.id) < trails->ended.size()) {
+      trails->ended[std::size_t(r.id)] = 1;
+      trails->end_time[std::size_t(r.id)] = r.time;
     }
   }
 
@@ -152,7 +185,7 @@ public:
       return finish(r, Trace_end::INVALID_START, "no unique sector of vertex " + std::to_string(r.start_vertex) +
                                                  " contains the start direction (" + std::to_string(found.size()) + ")");
     r.start_corner = r.face_h; r.start_m = r.m;
-    register_vertex(r, r.start_vertex);
+    register_vertex(r, r.start_vertex, r.start_corner, r.start_m);
   }
 
   // Start at the point p of the closed UV triangle of face(h); on an edge, the trace begins in the
@@ -186,13 +219,29 @@ public:
     r.start_face = cm().face[r.face_h]; r.start_p = r.p; r.start_m = r.m;
   }
 
+  // One face: plan() the crossing, then execute() it.
   void step(Trace_run& r) const
+  {
+    plan(r);
+    if(!r.finished) execute(r);
+  }
+
+  // Plans r's crossing of its current face: the exit `r.ex`, or the first stop before it (target, closed loop, a
+  // trail). With a Trail_registry (the motorcycle graph), r's path is registered as a trail of the face from now on,
+  // and a trail stops r where its trace passed earlier; where r passes first, the other trace gets a stop request
+  // (Trail_registry::requests), since it reaches r's trail later. Traces that reach a point at the same time: head-on
+  // both stop; at right angles the one heading a quarter turn counter-clockwise from the other goes on (the rule of
+  // quad_mesh_patches(), so that on an integer-grid map both partitions agree). May finish r (no valid crossing).
+  void plan(Trace_run& r) const
   {
     if(r.finished) return;
     const Corner_mesh& M = cm();
+    int orientation = face_orientation(M, r.face_h);
+    while(orientation == 0 && pass_collapsed_face(r)) {
+      if(r.finished) return;
+      orientation = face_orientation(M, r.face_h);
+    }
     const int f = M.face[r.face_h];
-    const int orientation = face_orientation(M, r.face_h);
-    if(orientation == 0 && pass_collapsed_face(r)) return;
     if(orientation <= 0)
       return finish(r, Trace_end::FOLDED_FACE, "face " + std::to_string(f) + " is flipped or degenerate in UV");
     const Face_exit ex = cross_face(map, r.face_h, r.p, r.m);
@@ -202,18 +251,19 @@ public:
                                                         ", the direction points back onto it (face " + std::to_string(f) + ")");
       return finish(r, Trace_end::NO_CONTINUATION_AT_VERTEX, "no progress in face " + std::to_string(f));
     }
-    // stops inside the segment: target, closed loop, earlier trails (earliest along the segment)
-    // candidates at parameter a in (0, ex.along], or [0, ex.along] after the start; the earliest wins,
+    r.ex = ex;
+    r.planned = true;
+    r.stops = false;
+    r.meet = false;
+    r.hit = -1;
+    if(trails && !r.path_registered) register_path(r, f);
+    // stops inside the crossing at parameter a in (0, ex.along], or [0, ex.along] after the start; the earliest wins,
     // ties keep the first found (target, closed loop, then trails in their order)
     const bool include_start = !r.at_start;
-    FT stop_at;
-    Trace_end stop = Trace_end::LENGTH_LIMIT;
-    bool stopped = false;
-    int hit = -1;
-    auto consider = [&](const FT& a, Trace_end e, int trace) {
-      if(CGAL::is_negative(a) || (CGAL::is_zero(a) && !include_start) || a > ex.along) return;
-      if(stopped && !(a < stop_at)) return;
-      stop_at = a; stop = e; stopped = true; hit = trace;
+    auto consider = [&](const FT& a, Trace_end e, int trace, const FT& trace_time, bool at_once, bool meet) {
+      if(CGAL::is_negative(a) || (CGAL::is_zero(a) && !include_start && !at_once) || a > ex.along) return;
+      if(r.stops && !(a < r.stop_at) && !(a == r.stop_at && r.meet && !meet)) return;   // a stop beats a meeting there
+      r.stops = true; r.stop_at = a; r.stop_end = e; r.hit = trace; r.hit_time = trace_time; r.meet = meet;
     };
     auto on_line = [&](const Exact_uv& x, FT& a) {
       FT s;
@@ -221,40 +271,41 @@ public:
       return CGAL::is_zero(s);
     };
     FT a;
-    if(target && target->face == f && on_line(target->uv, a)) consider(a, Trace_end::TARGET, -1);
-    if(r.start_face == f && r.start_m == r.m && on_line(r.start_p, a) && !r.at_start) consider(a, Trace_end::CLOSED_LOOP, -1);
+    if(target && target->face == f && on_line(target->uv, a)) consider(a, Trace_end::TARGET, -1, FT(0), false, false);
+    if(r.start_face == f && r.start_m == r.m && on_line(r.start_p, a) && !r.at_start)
+      consider(a, Trace_end::CLOSED_LOOP, -1, FT(0), false, false);
     if(trails)
-      for(const Trail_registry::Stored& t : trails->per_face[f]) {
-        FT aA, sA, aB, sB;
-        frame_coordinates(r.m, t.a.u - r.p.u, t.a.v - r.p.v, aA, sA);
-        frame_coordinates(r.m, t.b.u - r.p.u, t.b.v - r.p.v, aB, sB);
-        const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
-        if(gA == 0 && gB == 0) {                                   // collinear: first common point
-          const FT lo = aA < aB ? aA : aB, hi = aA < aB ? aB : aA;
-          if(CGAL::is_positive(lo)) consider(lo, Trace_end::EARLIER_TRACE, t.trace);
-          else if(CGAL::is_positive(hi) || (CGAL::is_zero(hi) && include_start)) { // along it from P: stop at P
-            stop_at = FT(0); stop = Trace_end::EARLIER_TRACE; stopped = true; hit = t.trace;
-          }
-        } else if(gA * gB <= 0) {
-          const FT x = aA + (sA / (sA - sB)) * (aB - aA);
-          // a trace that ended on this one at its current point (both reached it in one round) is a T-junction
-          // onto this trace, which goes on (stopping too would leave a corner of two arcs, a 270-degree patch corner)
-          if(CGAL::is_zero(x) && trails->ended_on_trace(t.trace) == r.id) continue;
-          consider(x, Trace_end::EARLIER_TRACE, t.trace);
-        }
-      }
-    if(stopped) {
-      const Exact_uv x = advance(r.p, r.m, stop_at);
-      if(CGAL::is_positive(stop_at)) push_segment(r, f, locate_in_face(cm(), r.face_h, x));
-      r.hit_trace = hit;
-      return finish(r, stop, stop == Trace_end::EARLIER_TRACE ? "T-junction with trace " + std::to_string(hit) : "");
-    }
+      for(const Trail_registry::Stored& t : trails->per_face[f]) meet_trail(r, t, ex.along, include_start, consider);
+    r.event_time = r.time + (r.stops ? r.stop_at : ex.along);
+  }
 
+  // Carries out the planned event: the stop (if the trail that stops r is still there: its trace reached the point;
+  // else r is planned again), or the crossing to the exit and on into the next face or through the vertex there.
+  void execute(Trace_run& r) const
+  {
+    if(r.finished || !r.planned) return;
+    r.planned = false;
+    const int f = cm().face[r.face_h];
+    if(r.stops && r.meet && goes_on_at_meeting(r)) { r.passed_until = r.event_time; return plan(r); }
+    if(r.stops) {
+      if(r.hit >= 0 && trails && !trails->reached(r.hit, r.hit_time)) return plan(r);
+      const FT stop_at = r.stop_at;
+      if(CGAL::is_positive(stop_at)) {
+        push_segment(r, f, locate_in_face(cm(), r.face_h, advance(r.p, r.m, stop_at)));
+        r.length += CGAL::to_double(stop_at);
+        r.time = r.event_time;                                 // r.time + stop_at
+      }
+      r.hit_trace = r.hit;
+      return finish(r, r.stop_end, r.stop_end == Trace_end::EARLIER_TRACE ? "T-junction with trace " + std::to_string(r.hit) : "");
+    }
+    const Face_exit& ex = r.ex;                             // the next plan() replaces it, not cross_edge()
     const Raw_point to = ex.kind == EXIT_VERTEX ? Raw_point{AT_VERTEX, ex.h, ex.point} : Raw_point{ON_EDGE, ex.h, ex.point};
     push_segment(r, f, to);
     ++r.steps;
     r.length += CGAL::to_double(ex.along);
+    r.time = r.event_time;                                     // r.time + ex.along
     r.at_start = false;
+    r.path_registered = false;
 
     if(ex.kind == EXIT_VERTEX) return arrive_at_vertex(r, ex.h, r.m);
     cross_edge(r, ex.h, ex.point, ex.lambda);
@@ -319,7 +370,7 @@ public:
     r.start_vertex = cm().target[corner];
     depart(r, corner, direction_mod4(m));
     r.start_corner = corner; r.start_m = r.m;
-    register_vertex(r, r.start_vertex);
+    register_vertex(r, r.start_vertex, r.start_corner, r.start_m);
   }
 
 private:
@@ -329,29 +380,129 @@ private:
     r.loc = Raw_point{AT_VERTEX, corner, r.p};
   }
 
-  void register_vertex(const Trace_run& r, int v) const
+  // r passes (or leaves) the vertex v now, in the chart of face(corner) with direction m
+  void register_vertex(const Trace_run& r, int v, int corner, int m) const
   {
-    if(trails && trails->vertex_trace[v] < 0) trails->vertex_trace[v] = r.id;
+    if(!trails || trails->vertex_trace[v] >= 0) return;
+    trails->vertex_trace[v] = r.id;
+    trails->vertex_time[v] = r.time;
+    trails->vertex_corner[v] = corner;
+    trails->vertex_m[v] = m;
+  }
+
+  // r's planned crossing as a trail of face f (and of the face across a side it runs along, in that chart)
+  void register_path(Trace_run& r, int f) const
+  {
+    r.path_registered = true;
+    const Exact_uv& b = r.ex.point;
+    trails->per_face[f].push_back(Trail_registry::Stored{r.id, r.p, b, r.time, r.m});
+    const int c[3] = {r.face_h, cm().next[r.face_h], cm().next[cm().next[r.face_h]]};
+    const Uv_box P(r.p), Q(b);
+    for(int h : c) {
+      if(cm().is_border_halfedge(cm().opp[h]) || corner_side_sign(cm(), cm().prev[h], h, r.p, P) != 0 ||
+         corner_side_sign(cm(), cm().prev[h], h, b, Q) != 0)
+        continue;
+      const Edge_transition T = edge_transition(map, h, false);
+      trails->per_face[cm().face[cm().opp[h]]].push_back(
+          Trail_registry::Stored{r.id, T.apply(r.p), T.apply(b), r.time, direction_mod4(r.m + T.k)});
+    }
+  }
+
+  // At a meeting (execute()): the traces whose trails reach the point X of r's planned stop inside its face at the same
+  // time T, r among them (all registered their paths there before T), decide as quad_mesh_patches() does: those met
+  // head-on stop, and of the others (at most two, at right angles) the one heading a quarter turn counter-clockwise
+  // from the other goes on. False (r stops, r.hit set) also where a trail passed X before T.
+  bool goes_on_at_meeting(Trace_run& r) const
+  {
+    const int f = cm().face[r.face_h];
+    const Exact_uv X = advance(r.p, r.m, r.stop_at);
+    const FT T = r.event_time;
+    std::vector<std::pair<int, int> > group;                  // (trace, heading in f's chart)
+    for(const Trail_registry::Stored& t : trails->per_face[f]) {
+      if(t.trace == r.id) continue;
+      FT a, side;
+      frame_coordinates(t.m, X.u - t.a.u, X.v - t.a.v, a, side);
+      if(!CGAL::is_zero(side) || CGAL::is_negative(a)) continue;
+      FT len, side_b;
+      frame_coordinates(t.m, t.b.u - t.a.u, t.b.v - t.a.v, len, side_b);
+      if(len < a || !trails->reached(t.trace, t.time + a)) continue;
+      if(t.time + a < T) { r.hit = t.trace; r.hit_time = t.time + a; return false; }
+      if(t.time + a == T) group.emplace_back(t.trace, t.m);
+    }
+    auto heading_in = [&](int m) { for(const auto& g : group) if(g.second == direction_mod4(m)) return g.first; return -1; };
+    const int head_on = heading_in(r.m + 2), ccw = heading_in(r.m + 1);
+    const bool ccw_goes = ccw >= 0 && heading_in(r.m + 3) < 0;     // its head-on partner would be r's clockwise one
+    if(head_on >= 0 || ccw_goes) {
+      r.hit = head_on >= 0 ? head_on : ccw;
+      r.hit_time = T;
+      return false;
+    }
+    return true;
+  }
+
+  // Where r's crossing [0, along] (from r.p along r.m, at r.time) and the trail t share a point, the trace that passes
+  // it later stops there: r through consider(x, EARLIER_TRACE, trace, its time there), t's trace by a request; at the
+  // same time as plan() says. A trail of a trace that has ended reaches as far as it went; r's own trail stops r only
+  // where r passed before (a trace meets its own path at the same time only at its head). A crossing that starts
+  // along a trail laid before stops at once, also at the start (the arc exists already).
+  template <class Consider>
+  void meet_trail(const Trace_run& r, const Trail_registry::Stored& t, const FT& along, bool include_start,
+                  Consider& consider) const
+  {
+    const bool self = t.trace == r.id;
+    if(self && !(t.time < r.time)) return;                     // its path now
+    const bool t_ended = trails->ended[std::size_t(t.trace)] != 0;
+    FT aA, sA, aB, sB;
+    frame_coordinates(r.m, t.a.u - r.p.u, t.a.v - r.p.v, aA, sA);
+    frame_coordinates(r.m, t.b.u - r.p.u, t.b.v - r.p.v, aB, sB);
+    const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
+    // decides at r's parameter x, where t's trace passes at time tt (r at time tr): see plan()
+    auto meet = [&](const FT& x, const FT& tt, bool at_once) {   // at_once: along t from x = 0 on
+      if(t_ended && trails->end_time[std::size_t(t.trace)] < tt) return;      // t's trace stopped before
+      const FT tr = r.time + x;
+      bool r_stops = tt < tr, t_stops = tr < tt;
+      if(tt == tr && !self && locate_in_face(cm(), r.face_h, advance(r.p, r.m, x)).kind == IN_FACE) {   // a meeting
+        if(r.passed_until < tr) consider(x, Trace_end::EARLIER_TRACE, t.trace, tt, false, true);
+        if(!t_ended) trails->requests.push_back(Trail_registry::Stop_request{t.trace, tt, r.id, tr, true});
+        return;
+      }
+      if(tt == tr && !self) {                                  // on an edge or at a vertex: pairwise
+        const int rel = direction_mod4(t.m - r.m);             // 0: the same motion, the smaller index goes on
+        r_stops = rel != 3 && (rel != 0 || r.id > t.trace);
+        t_stops = rel == 3 || rel == 2 || (rel == 0 && t.trace > r.id);
+      }
+      if(self) { if(!(tt < tr)) return; t_stops = false; }
+      if(r_stops) consider(x, Trace_end::EARLIER_TRACE, t.trace, tt, at_once && CGAL::is_zero(x), false);
+      if(t_stops && !t_ended && !(CGAL::is_zero(x) && !include_start))
+        trails->requests.push_back(Trail_registry::Stop_request{t.trace, tt, r.id, tr, false});
+    };
+    if(gA == 0 && gB == 0) {                                   // collinear
+      const FT lo = aA < aB ? aA : aB, hi = aA < aB ? aB : aA;
+      const FT x0 = CGAL::is_positive(lo) ? lo : FT(0), x1 = hi < along ? hi : along;
+      if(x1 < x0) return;
+      if(aA < aB) {                                            // the same direction: r ahead of t, or t of r
+        meet(x0, t.time + (x0 - aA), CGAL::is_positive(x1));
+        return;
+      }
+      const FT xs = (t.time + aA - r.time) / 2;                // head-on: they meet at xs
+      const FT x = xs < x0 ? x0 : x1 < xs ? x1 : xs;
+      meet(x, t.time + (aA - x), CGAL::is_positive(x1));
+      return;
+    }
+    if(gA * gB > 0) return;
+    const FT x = aA + (sA / (sA - sB)) * (aB - aA);
+    if(CGAL::is_negative(x) || along < x) return;
+    const Exact_uv X = advance(r.p, r.m, x);
+    FT b, side;
+    frame_coordinates(t.m, X.u - t.a.u, X.v - t.a.v, b, side);
+    meet(x, t.time + b, false);
   }
 
   void push_segment(Trace_run& r, int f, const Raw_point& to) const
   {
     Raw_segment s;
     s.face = f; s.m = r.m; s.from = r.loc; s.from.uv = r.p; s.to = to;
-    if(trails) {
-      s.order = trails->laid++;
-      trails->per_face[f].push_back(Trail_registry::Stored{r.id, r.p, to.uv});
-      // a segment along an edge is a trail of the face on the other side too (in its chart)
-      const int c[3] = {r.face_h, cm().next[r.face_h], cm().next[cm().next[r.face_h]]};
-      const Uv_box P(r.p), Q(to.uv);
-      for(int h : c) {
-        if(cm().is_border_halfedge(cm().opp[h]) || corner_side_sign(cm(), cm().prev[h], h, r.p, P) != 0 ||
-           corner_side_sign(cm(), cm().prev[h], h, to.uv, Q) != 0)
-          continue;
-        const Edge_transition T = edge_transition(map, h, false);
-        trails->per_face[cm().face[cm().opp[h]]].push_back(Trail_registry::Stored{r.id, T.apply(r.p), T.apply(to.uv)});
-      }
-    }
+    if(trails) s.order = trails->laid++;
     r.segments.push_back(std::move(s));
   }
 
@@ -364,8 +515,20 @@ private:
     if(target && target->vertex == v) return finish(r, Trace_end::TARGET, where);
     if(map.st.is_cone[v]) return finish(r, Trace_end::CONE, where);
     if(trails && trails->vertex_trace[v] >= 0 && v != r.start_vertex) {
-      r.hit_trace = trails->vertex_trace[v];
-      return finish(r, Trace_end::EARLIER_TRACE, "T-junction at " + where);
+      // a trace passed v before: r stops; one that arrived now too: the rule of plan(), with the arrival directions
+      // in one chart (r's carried around the fan to the corner of the other's)
+      const int u = trails->vertex_trace[v];
+      int rel = -1;
+      if(trails->vertex_time[v] == r.time && u != r.id) {
+        const Vertex_fan fan = vertex_fan(M, map.rot, corner, m);
+        for(const Fan_wedge& w : fan.wedges)
+          if(!fan.degenerate && w.corner == trails->vertex_corner[v]) { rel = direction_mod4(trails->vertex_m[v] - w.m); break; }
+      }
+      if(rel == 2 || rel == 3) trails->requests.push_back(Trail_registry::Stop_request{u, r.time, r.id, r.time, false});
+      if(rel != 3) {
+        r.hit_trace = u;
+        return finish(r, Trace_end::EARLIER_TRACE, "T-junction at " + where);
+      }
     }
     const Vertex_fan fan = vertex_fan(M, map.rot, corner, m);
     if(fan.degenerate) return finish(r, Trace_end::DEGENERATE_VERTEX, where + " has a zero-length UV edge");
@@ -383,7 +546,7 @@ private:
       r.along_border = arrived_along_border;
       if(v == r.start_vertex && r.face_h == r.start_corner && r.m == r.start_m)
         return finish(r, Trace_end::CLOSED_LOOP, where);
-      register_vertex(r, v);
+      register_vertex(r, v, corner, m);
       if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
       return;
     }

@@ -12,10 +12,11 @@
 
 // Separatrices of the motorcycle graph [CBK15, CZ17]: from every cone of n quarter turns the n rays
 // along the axis directions, and from every border corner (a border vertex whose fan is not a half
-// turn) the axis rays strictly inside its fan. All traces advance together, one face at a time, the
-// one with the smallest parametric length first (ties: smaller index), and each stops at a cone, the
-// border, or the trail laid so far by any trace (T-junction). A ray that starts along an existing trail
-// (the other end of an arc already traced) stops at once, with no segment.
+// turn) the axis rays strictly inside its fan. All traces start at time 0 and move at unit speed (time =
+// parametric length); each stops at a cone, the border, or where it reaches the trail of a trace that
+// passed there earlier (T-junction); traces that reach a point at the same time: head-on both stop, at
+// right angles the one heading a quarter turn counter-clockwise from the other goes on. The result depends
+// neither on the triangulation nor on the numbering (up to traces along one line at once).
 // A map without cones and border corners (a torus) gets four seeded traces, +u, +v, -u and -v, from the
 // first corner of the first vertex: with all four the seed is a node with right angles only (with two,
 // the angle between +v and +u the other way round would be a 270 degree patch corner).
@@ -81,29 +82,57 @@ inline Separatrix_seeds separatrix_seeds(const Tracing_map& map)
   return S;
 }
 
-// Traces all separatrices together; runs[i] is separatrix i.
+// Traces all separatrices together; runs[i] is separatrix i. An event simulation in exact time (parametric length):
+// each trace's next event is the exit of its current face or a stop on a trail planned there
+// (Isoline_stepper::plan()), the earliest event first (ties: the smaller index; the outcome does not depend on it,
+// see plan()). A stop whose trail turns out not to reach its point (the other trace stopped before it) is
+// planned again; a trace whose trail another one reaches later gets that one stopped (stop requests).
 inline void trace_separatrices(const Tracing_map& map, const Separatrix_seeds& S, std::size_t max_steps,
                                std::vector<Trace_run>& runs, Trail_registry& trails)
 {
-  trails.init(map.cm);
+  trails.init(map.cm, S.corner.size());
   Isoline_stepper stepper(map);
   stepper.trails = &trails;
   if(max_steps > 0) stepper.max_steps = max_steps;
   runs.assign(S.corner.size(), Trace_run());
-  typedef std::pair<double, int> Key;
-  std::priority_queue<Key, std::vector<Key>, std::greater<Key> > queue;
+  struct Event { FT time; int trace; unsigned version; };
+  auto later = [](const Event& a, const Event& b) { return b.time < a.time || (a.time == b.time && b.trace < a.trace); };
+  std::priority_queue<Event, std::vector<Event>, decltype(later)> queue(later);
+  std::vector<unsigned> version(runs.size(), 0);
+  auto schedule = [&](int i) {
+    if(!runs[std::size_t(i)].finished) queue.push(Event{runs[std::size_t(i)].event_time, i, ++version[std::size_t(i)]});
+  };
+  auto serve_requests = [&] {
+    for(const Trail_registry::Stop_request& q : trails.requests) {
+      Trace_run& u = runs[std::size_t(q.trace)];
+      if(u.finished || !u.planned || u.event_time < q.time || (q.meet && !(u.passed_until < q.time)) ||
+         (u.event_time == q.time && u.stops && (q.meet || !u.meet)))   // at the same time a stop beats a meeting
+        continue;
+      u.stops = true; u.meet = q.meet; u.stop_at = q.time - u.time; u.stop_end = Trace_end::EARLIER_TRACE;
+      u.hit = q.hit; u.hit_time = q.hit_time; u.event_time = q.time;
+      schedule(q.trace);
+    }
+    trails.requests.clear();
+  };
   for(std::size_t i = 0; i < runs.size(); ++i) {
     runs[i].id = int(i);
     if(S.source_kind[i] == 2) stepper.start_at_vertex(runs[i], S.corner[i], S.m[i]);   // finds the sector
     else stepper.start_in_wedge(runs[i], S.corner[i], S.m[i]);
-    if(runs[i].finished) continue;
-    queue.push(Key(0., int(i)));
+  }
+  for(std::size_t i = 0; i < runs.size(); ++i) {
+    stepper.plan(runs[i]);
+    serve_requests();
+    schedule(int(i));
   }
   while(!queue.empty()) {
-    const int i = queue.top().second;
+    const Event e = queue.top();
     queue.pop();
-    stepper.step(runs[i]);
-    if(!runs[i].finished) queue.push(Key(runs[i].length, i));
+    Trace_run& r = runs[std::size_t(e.trace)];
+    if(e.version != version[std::size_t(e.trace)] || r.finished) continue;
+    stepper.execute(r);
+    if(!r.finished && !r.planned) stepper.plan(r);
+    serve_requests();
+    schedule(e.trace);
   }
 }
 
