@@ -19,7 +19,10 @@
 // the map is covered; the report agrees with the mesh; its patches (quad_mesh_patches(), check_quad_patches())
 // are rectangles of quads, every quad a cell of its patch's grid consistent with its neighbours; its quad layout
 // (quad_layout(), check_quad_layout()) has a face per patch whose sides between its 4 corners are the patch's width
-// and height, arcs whose chains of quad edges run along the patch sides, and the quad mesh's Euler characteristic.
+// and height, arcs whose chains of quad edges run along the patch sides, and the quad mesh's Euler characteristic;
+// and, on a map with cones that the quads cover, the motorcycle graph traced on the map itself
+// (build_motorcycle_graph(): exact event times, no code shared with the quad layer) has the same layout
+// (check_traced_layout()).
 //   quad: cube                  a generated exact IGM with 8 cones of valence 3, sides 1-3, grid scales 1, 2:
 //                               6 n^2 S^2 quads, chi 2; the map scaled by 2^-3 with grid_scale 8 gives the same
 //                               mesh bit for bit (scale covariance)
@@ -61,6 +64,7 @@
 
 #include "mesh_test_support.h"
 
+#include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/is_exact_integer_grid_map.h>
@@ -163,6 +167,8 @@ static void check_origin(const Mesh& m, UV_map uv, double S, const Origin& o, co
 // Checks r against m (see the header comment); `what` names the map in the output line.
 typedef std::vector<std::pair<int, int> > Patch_sizes;   // per patch (shorter side, longer side), sorted
 static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what);
+static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const Patch_sizes& sizes,
+                                const std::string& what);
 
 // Returns the sizes of the mesh's patches (check_quad_patches()).
 static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
@@ -233,7 +239,52 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
               rep.euler_characteristic, rep.boundary_loops, irregular, cones, histogram.c_str(),
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
-  return check_quad_patches(q, what);
+  const Patch_sizes sizes = check_quad_patches(q, what);
+  if(covers) check_traced_layout(m, uv, S, q, sizes, what);
+  return sizes;
+}
+
+// The motorcycle graph of the map traced exactly on its triangles (build_motorcycle_graph(): separatrices from the cones
+// in exact time, the tie rule of quad_mesh_patches()) against the quad mesh's (quad_mesh_patches(), quad_layout()),
+// two implementations that share no code: every traced patch a rectangle, as many as the quad mesh has, of the same
+// sizes in grid cells (width and height times the grid scale S, exactly), and the same layout: its nodes and arcs are
+// the quad layout's vertices and arcs. A map with a zero-area triangle gets no traced layout (refused), and one without
+// cones and border corners (a torus) seeded traces from a vertex of its own (not compared).
+static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const Patch_sizes& sizes,
+                                const std::string& what)
+{
+  const SS::Isoline_tracer<Mesh, UV_map> tracer(m, uv);
+  assert(tracer.status() == SS::SUCCESS);
+  const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  const SS::Patch_layout& L = g.layout;
+  if(g.seeded) {
+    std::printf("quad: %-46s seeded traces: not compared\n", (what + ", traced").c_str());
+    return;
+  }
+  if(L.status != SS::SUCCESS) {
+    assert(L.message.find("flipped or degenerate") != std::string::npos);
+    std::printf("quad: %-46s traced layout refused (%s)\n", (what + ", traced").c_str(), L.message.c_str());
+    return;
+  }
+  assert(g.failed == 0 && L.unplaced_segments == 0);
+  Patch_sizes traced;
+  for(const SS::Layout_patch& p : L.patches) {
+    assert(p.is_quad());
+    const Q w = p.width * Q(S), h = p.height * Q(S);
+    const int wi = int(CGAL::to_double(w)), hi = int(CGAL::to_double(h));
+    assert(Q(wi) == w && Q(hi) == h);
+    traced.push_back(std::make_pair((std::min)(wi, hi), (std::max)(wi, hi)));
+  }
+  std::sort(traced.begin(), traced.end());
+  Mesh layout;
+  auto arcs = layout.add_property_map<halfedge_descriptor, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  const SS::Quad_layout ql = SS::quad_layout(q, layout, arcs);
+  if(traced != sizes || L.nodes != ql.vertices || L.arcs != ql.arcs)
+    std::cerr << what << ": traced " << L.patches.size() << " patches, " << L.nodes << " nodes, " << L.arcs << " arcs; quad "
+              << sizes.size() << " patches, " << ql.vertices << " vertices, " << ql.arcs << " arcs" << std::endl;
+  assert(traced == sizes && L.nodes == ql.vertices && L.arcs == ql.arcs);
+  std::printf("quad: %-46s %6zu patches, the quad mesh's (sizes, %zu nodes, %zu arcs); traced in %.0f ms\n",
+              (what + ", traced").c_str(), L.patches.size(), L.nodes, L.arcs, g.trace_ms);
 }
 
 // quad_mesh_patches() on an extracted mesh, checked here from its output alone: every quad in one patch, the
