@@ -22,6 +22,10 @@
 //                                 integer-grid mode (a forced zero-area face): traced through, the layout refused
 //   trace: collapsed face         a zero-area face with three distinct corners is crossed exactly, also from its
 //                                 middle corner
+//   (every valid layout above)    the same motorcycle graph from the map renumbered: its vertices and faces shuffled,
+//                                 each face's corners rotated (the event simulation in exact time and its tie rule read
+//                                 no index): as many separatrices ending per reason, patches of the same exact sizes,
+//                                 nodes, arcs
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -46,6 +50,7 @@
 #include <cassert>
 #include <random>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -78,6 +83,8 @@ static bool same_surface_point(const Mesh& m, const Point& a, const Point& b)
 }
 
 static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g, const std::string& what);
+static void check_independent_of_numbering(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g,
+                                           const std::string& what);
 
 // ---------------------------------------------------------------------------------------------
 static void test_grid()
@@ -384,12 +391,61 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
               " graph %.0f ms, back %.0f ms\n", what.c_str(), g.cones, g.border_corners, g.separatrices.size(),
               g.ends[int(SS::Trace_end::CONE)], g.ends[int(SS::Trace_end::BORDER)],
               g.ends[int(SS::Trace_end::EARLIER_TRACE)], traced_back, graph_ms, ms_since(t0));
-  if(!collapsed_faces) check_layout(m, uv, g, what);
-  else {                                 // zero-area faces: traced through, but no layout (reported)
+  if(!collapsed_faces) {
+    check_layout(m, uv, g, what);
+    check_independent_of_numbering(m, uv, g, what);
+  } else {                                 // zero-area faces: traced through, but no layout (reported)
     assert(g.layout.status != SS::SUCCESS && g.layout.message.find("degenerate") != std::string::npos);
     std::printf("trace: %-40s layout refused: %s\n", what.c_str(), g.layout.message.c_str());
   }
   return g;
+}
+
+// The motorcycle graph does not depend on the numbering of the mesh: the map with its vertices and faces shuffled and
+// each face's corners rotated (a fixed seed) has as many separatrices ending per reason, the same nodes and arcs, and
+// patches of the same exact sizes (sorted pairs of shorter and longer side).
+static void check_independent_of_numbering(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g,
+                                           const std::string& what)
+{
+  std::mt19937 rng(7);
+  std::vector<vertex_descriptor> vs(m.vertices().begin(), m.vertices().end());
+  std::vector<face_descriptor> fs(m.faces().begin(), m.faces().end());
+  std::shuffle(vs.begin(), vs.end(), rng);
+  std::shuffle(fs.begin(), fs.end(), rng);
+  Mesh p;
+  UV_map puv = uv_of(p);
+  std::map<vertex_descriptor, vertex_descriptor> to_p;
+  for(vertex_descriptor v : vs) to_p[v] = p.add_vertex(m.point(v));
+  for(face_descriptor f : fs) {
+    std::vector<halfedge_descriptor> c(CGAL::halfedges_around_face(m.halfedge(f), m).begin(),
+                                       CGAL::halfedges_around_face(m.halfedge(f), m).end());
+    std::rotate(c.begin(), c.begin() + long(rng() % c.size()), c.end());
+    std::vector<vertex_descriptor> cv;
+    for(halfedge_descriptor h : c) cv.push_back(to_p[m.target(h)]);
+    const face_descriptor q = p.add_face(cv);
+    assert(q != Mesh::null_face());
+    for(halfedge_descriptor k : CGAL::halfedges_around_face(p.halfedge(q), p))
+      for(halfedge_descriptor h : c) if(to_p[m.target(h)] == p.target(k)) put(puv, k, get(uv, h));
+  }
+  const Tracer tracer(p, puv);
+  assert(tracer.status() == SS::SUCCESS);
+  const SS::Motorcycle_graph<Mesh> h = SS::build_motorcycle_graph(tracer);
+  typedef std::vector<std::pair<CGAL::Gmpq, CGAL::Gmpq> > Sizes;
+  auto sizes = [](const SS::Patch_layout& L) {
+    Sizes out;
+    for(const SS::Layout_patch& q : L.patches) out.emplace_back((std::min)(q.width, q.height), (std::max)(q.width, q.height));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const bool same = h.ends == g.ends && h.layout.nodes == g.layout.nodes && h.layout.arcs == g.layout.arcs &&
+                    sizes(h.layout) == sizes(g.layout);
+  if(!same)
+    std::cerr << what << ": renumbered: " << h.layout.patches.size() << " patches, " << h.layout.nodes << " nodes, "
+              << h.layout.arcs << " arcs; before " << g.layout.patches.size() << ", " << g.layout.nodes << ", "
+              << g.layout.arcs << std::endl;
+  assert(same);
+  std::printf("trace: %-40s renumbered: the same ends, %zu patches (sizes), %zu nodes, %zu arcs\n", what.c_str(),
+              g.layout.patches.size(), g.layout.nodes, g.layout.arcs);
 }
 
 // the motorcycle graph of a map as it is (inexact in general): it must terminate, and report
@@ -709,8 +765,8 @@ static void test_shared_data()
 
 // libQEx's maps (over 1 MB, so not in test_shared_data()) snapped to exact integer-grid maps with their collapsed cone
 // pairs merged (merge_cone_pairs(true)) and untangled: locally injective, so every separatrix ends regularly and the
-// layout is valid (every patch a rectangle). On fandisk two traces reach one point in the same round; the one
-// that got there first goes on (a T-junction), else the patch there would have a 270-degree corner.
+// layout is valid (every patch a rectangle). Where traces reach one point at the same time (on integer-grid maps at
+// integer points), one goes on at most (else a patch there would have a 270-degree corner).
 static void test_merged_libqex_maps()
 {
   std::vector<fs::path> files;
