@@ -234,8 +234,11 @@ def _exact_polyline(trace):
 def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_tolerance=1.0):
     """The motorcycle graph of the per-corner UV map (UV, FUV) of (V, F) (Sec. 6.2 of the paper): the
     separatrices from every cone of n quarter turns (its n axis rays) and from every border corner (the axis
-    rays strictly inside its fan), traced exactly (rational arithmetic) and together, each stopping at a cone,
-    the border or an earlier trace. Without cones and border corners four traces (+u, +v, -u, -v) are seeded.
+    rays strictly inside its fan), traced exactly (rational arithmetic) and together in exact time (unit speed in
+    UV), each stopping at a cone, the border or where it reaches the trail of a trace that passed there earlier;
+    two that meet head-on both stop, of two that cross at the same time the one heading a quarter turn
+    counter-clockwise from the other goes on (on an integer-grid map: the patches of `quad_mesh_patches` on the
+    mesh of `extract_quad_mesh`). Without cones and border corners four traces (+u, +v, -u, -v) are seeded.
 
     Returns a dict: "status" ("SUCCESS", or why the map cannot be traced, e.g. "INVALID_INPUT" or
     "NOT_QUARTER_TURN_SEAMLESS"), "message", and on SUCCESS:

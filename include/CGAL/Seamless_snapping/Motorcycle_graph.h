@@ -53,11 +53,12 @@ struct Motorcycle_graph
  * simulation, each face crossing and each meeting an event); each stops at a cone, the border, or where it reaches the
  * trail of a trace that passed there earlier (a T-junction, `EARLIER_TRACE`). Traces that reach a point at the same
  * time: two head-on both stop (their trails join), and of two at right angles the one heading a quarter turn
- * counter-clockwise from the other goes on (the rule of `quad_mesh_patches()`). So the graph depends on the map, not
- * on its triangulation or numbering (but for ties at mesh vertices and edges among more than two traces, decided pair
- * by pair in the order of the trace indices): on an integer-grid map the patches are those of the quad mesh of
- * `extract_quad_mesh()` cut by `quad_mesh_patches()`, with the same sizes, nodes and arcs (`test_quad` checks this on
- * every covering quad mesh it extracts). Without cones and border corners (a torus), four traces (+u, +v, -u, -v) are
+ * counter-clockwise from the other goes on (the rule of `quad_mesh_patches()`), decided once all that get there at
+ * that time have arrived, inside a face, on an edge or at a vertex. So the graph depends on the map, not on its
+ * triangulation or numbering: on an integer-grid map the patches are those of the quad mesh of `extract_quad_mesh()`
+ * cut by `quad_mesh_patches()`, with the same sizes, nodes and arcs (`test_quad` checks this on every covering quad
+ * mesh it extracts, and on the quad mesh itself triangulated with its patches as charts, where every meeting is at a
+ * vertex). Without cones and border corners (a torus), four traces (+u, +v, -u, -v) are
  * seeded at the first corner of the mesh, and `seeded` is set.
  *
  *

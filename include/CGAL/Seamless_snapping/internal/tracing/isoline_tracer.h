@@ -80,10 +80,11 @@ struct Trail_registry
   // `meet`: it reaches there at the same time as `hit` and others perhaps (decided when it gets there)
   struct Stop_request { int trace; FT time; int hit; FT hit_time; bool meet; };
   std::vector<std::vector<Stored> > per_face;
+  // a trace that reached a vertex: in the chart of face(corner) (target(corner) = the vertex), with direction m
+  struct Arrival { int trace, corner, m; };
   std::vector<int> vertex_trace;      // -1 or the first trace through (or from) the vertex
-  std::vector<FT> vertex_time;        // when it passed
-  std::vector<int> vertex_corner;     // the corner (target = the vertex) in whose face's chart it arrived with
-  std::vector<int> vertex_m;          // direction vertex_m (a start: the corner and direction it left by)
+  std::vector<FT> vertex_time;        // when it got there
+  std::vector<std::vector<Arrival> > vertex_arrivals;   // the traces that got there then (they decide together)
   std::vector<char> ended;            // per trace: it has ended, at end_time
   std::vector<FT> end_time;
   std::vector<Stop_request> requests; // for the scheduler
@@ -92,7 +93,7 @@ struct Trail_registry
   {
     per_face.assign(cm.n_faces, {});
     vertex_trace.assign(cm.n_vertices, -1); vertex_time.assign(cm.n_vertices, FT(0));
-    vertex_corner.assign(cm.n_vertices, -1); vertex_m.assign(cm.n_vertices, 0);
+    vertex_arrivals.assign(cm.n_vertices, {});
     ended.assign(traces, 0); end_time.assign(traces, FT(0));
     requests.clear(); laid = 0;
   }
@@ -126,7 +127,9 @@ struct Trace_run
   // along the direction (reason stop_end; EARLIER_TRACE: on the trail of `hit`, which passes there at `hit_time`)
   Face_exit ex;
   bool planned = false, stops = false, path_registered = false;
-  bool meet = false;          // the stop is a meeting inside the face: stop or go on is decided there (execute())
+  bool meet = false;          // the stop is a meeting inside the face or on an edge: stop or go on is decided there
+  bool vertex_meeting = false;// arrived at the vertex target(face_h) with direction m: stop or go on is decided there
+  int event_phase = 0;        // 1: a meeting, decided after the other events at its time (all arrivals known)
   FT stop_at, hit_time, event_time;
   FT passed_until = FT(-1);   // meetings up to this time are decided (it went on)
   Trace_end stop_end = Trace_end::LENGTH_LIMIT;
@@ -277,6 +280,7 @@ public:
     if(trails)
       for(const Trail_registry::Stored& t : trails->per_face[f]) meet_trail(r, t, ex.along, include_start, consider);
     r.event_time = r.time + (r.stops ? r.stop_at : ex.along);
+    r.event_phase = r.stops && r.meet ? 1 : 0;
   }
 
   // Carries out the planned event: the stop (if the trail that stops r is still there: its trace reached the point;
@@ -285,6 +289,19 @@ public:
   {
     if(r.finished || !r.planned) return;
     r.planned = false;
+    if(r.vertex_meeting) {
+      r.vertex_meeting = false;
+      const int v = cm().target[r.face_h];
+      if(!goes_on_at_vertex(r)) {
+        r.hit_trace = r.hit;
+        return finish(r, Trace_end::EARLIER_TRACE, "T-junction at vertex " + std::to_string(v));
+      }
+      Fan_wedge w;
+      int T = 0;
+      bool along_border = false;
+      if(continuation(r, r.face_h, r.m, w, T, along_border)) leave_vertex(r, v, w, T, along_border);
+      return;
+    }
     const int f = cm().face[r.face_h];
     if(r.stops && r.meet && goes_on_at_meeting(r)) { r.passed_until = r.event_time; return plan(r); }
     if(r.stops) {
@@ -380,14 +397,27 @@ private:
     r.loc = Raw_point{AT_VERTEX, corner, r.p};
   }
 
-  // r passes (or leaves) the vertex v now, in the chart of face(corner) with direction m
+  // r reaches (or leaves, at its start) the vertex v now, in the chart of face(corner) with direction m: the first
+  // trace there, or one of those that got there at the same time
   void register_vertex(const Trace_run& r, int v, int corner, int m) const
   {
-    if(!trails || trails->vertex_trace[v] >= 0) return;
-    trails->vertex_trace[v] = r.id;
-    trails->vertex_time[v] = r.time;
-    trails->vertex_corner[v] = corner;
-    trails->vertex_m[v] = m;
+    if(!trails) return;
+    if(trails->vertex_trace[v] < 0) {
+      trails->vertex_trace[v] = r.id;
+      trails->vertex_time[v] = r.time;
+    } else if(!(trails->vertex_time[v] == r.time)) return;
+    trails->vertex_arrivals[v].push_back(Trail_registry::Arrival{r.id, corner, m});
+  }
+
+  // Who goes on where traces meet at one time (quad_mesh_patches()'s rule): `others` are the headings of the others
+  // relative to r's (quarter turns counter-clockwise) and their traces. r stops if one meets it head-on, or if one at a
+  // quarter turn counter-clockwise from it is not met head-on itself (its partner would be at three quarter turns):
+  // returns that trace, else -1 (r goes on).
+  static int meeting_stop(const std::vector<std::pair<int, int> >& others)
+  {
+    auto at = [&](int rel) { for(const auto& o : others) if(o.first == rel) return o.second; return -1; };
+    if(at(2) >= 0) return at(2);
+    return at(1) >= 0 && at(3) < 0 ? at(1) : -1;
   }
 
   // r's planned crossing as a trail of face f (and of the face across a side it runs along, in that chart)
@@ -408,36 +438,53 @@ private:
     }
   }
 
-  // At a meeting (execute()): the traces whose trails reach the point X of r's planned stop inside its face at the same
-  // time T, r among them (all registered their paths there before T), decide as quad_mesh_patches() does: those met
-  // head-on stop, and of the others (at most two, at right angles) the one heading a quarter turn counter-clockwise
-  // from the other goes on. False (r stops, r.hit set) also where a trail passed X before T.
+  // At a meeting inside r's face or on one of its edges (execute()): the traces whose trails reach the point X of r's
+  // planned stop at the same time T, r among them, decide by meeting_stop(); their paths through X are registered in
+  // r's face or, for a point of an edge, in the face across it (headings carried over by the edge's rotation). False
+  // (r stops, r.hit set) also where a trail passed X before T.
   bool goes_on_at_meeting(Trace_run& r) const
   {
-    const int f = cm().face[r.face_h];
     const Exact_uv X = advance(r.p, r.m, r.stop_at);
     const FT T = r.event_time;
-    std::vector<std::pair<int, int> > group;                  // (trace, heading in f's chart)
-    for(const Trail_registry::Stored& t : trails->per_face[f]) {
-      if(t.trace == r.id) continue;
-      FT a, side;
-      frame_coordinates(t.m, X.u - t.a.u, X.v - t.a.v, a, side);
-      if(!CGAL::is_zero(side) || CGAL::is_negative(a)) continue;
-      FT len, side_b;
-      frame_coordinates(t.m, t.b.u - t.a.u, t.b.v - t.a.v, len, side_b);
-      if(len < a || !trails->reached(t.trace, t.time + a)) continue;
-      if(t.time + a < T) { r.hit = t.trace; r.hit_time = t.time + a; return false; }
-      if(t.time + a == T) group.emplace_back(t.trace, t.m);
+    const Raw_point where = locate_in_face(cm(), r.face_h, X);
+    std::vector<std::pair<int, int> > others;                  // (heading relative to r's, trace)
+    auto scan = [&](int f, const Exact_uv& x, int k) {          // k: the rotation from r's chart to f's
+      for(const Trail_registry::Stored& t : trails->per_face[std::size_t(f)]) {
+        if(t.trace == r.id) continue;
+        FT a, side, len, side_b;
+        frame_coordinates(t.m, x.u - t.a.u, x.v - t.a.v, a, side);
+        if(!CGAL::is_zero(side) || CGAL::is_negative(a)) continue;
+        frame_coordinates(t.m, t.b.u - t.a.u, t.b.v - t.a.v, len, side_b);
+        if(len < a || !trails->reached(t.trace, t.time + a)) continue;
+        if(t.time + a < T) { r.hit = t.trace; r.hit_time = t.time + a; return false; }
+        const std::pair<int, int> o(direction_mod4(t.m - k - r.m), t.trace);
+        if(t.time + a == T && std::find(others.begin(), others.end(), o) == others.end()) others.push_back(o);
+      }
+      return true;
+    };
+    if(!scan(cm().face[r.face_h], X, 0)) return false;
+    if(where.kind == ON_EDGE && !cm().is_border_halfedge(cm().opp[where.h])) {
+      const Edge_transition E = edge_transition(map, where.h, false);
+      if(!scan(cm().face[cm().opp[where.h]], E.apply(X), E.k)) return false;
     }
-    auto heading_in = [&](int m) { for(const auto& g : group) if(g.second == direction_mod4(m)) return g.first; return -1; };
-    const int head_on = heading_in(r.m + 2), ccw = heading_in(r.m + 1);
-    const bool ccw_goes = ccw >= 0 && heading_in(r.m + 3) < 0;     // its head-on partner would be r's clockwise one
-    if(head_on >= 0 || ccw_goes) {
-      r.hit = head_on >= 0 ? head_on : ccw;
-      r.hit_time = T;
-      return false;
-    }
-    return true;
+    r.hit = meeting_stop(others);
+    r.hit_time = T;
+    return r.hit < 0;
+  }
+
+  // At a meeting at the vertex target(r.face_h), which r reached with direction r.m (execute()): the traces that got
+  // there at the same time decide by meeting_stop(), their arrival directions carried around the fan into r's chart
+  bool goes_on_at_vertex(Trace_run& r) const
+  {
+    const int v = cm().target[r.face_h];
+    const Vertex_fan fan = vertex_fan(cm(), map.rot, r.face_h, r.m);
+    std::vector<std::pair<int, int> > others;
+    for(const Trail_registry::Arrival& a : trails->vertex_arrivals[std::size_t(v)])
+      for(const Fan_wedge& w : fan.wedges)
+        if(a.trace != r.id && w.corner == a.corner) others.emplace_back(direction_mod4(a.m - w.m), a.trace);
+    r.hit = meeting_stop(others);
+    r.hit_time = r.time;
+    return r.hit < 0;
   }
 
   // Where r's crossing [0, along] (from r.p along r.m, at r.time) and the trail t share a point, the trace that passes
@@ -461,15 +508,12 @@ private:
       if(t_ended && trails->end_time[std::size_t(t.trace)] < tt) return;      // t's trace stopped before
       const FT tr = r.time + x;
       bool r_stops = tt < tr, t_stops = tr < tt;
-      if(tt == tr && !self && locate_in_face(cm(), r.face_h, advance(r.p, r.m, x)).kind == IN_FACE) {   // a meeting
+      if(tt == tr && !self) {                                  // a meeting (at a vertex: arrive_at_vertex() decides;
+        if(CGAL::is_zero(x) && !include_start) return;         // at r's start: none)
+        if(locate_in_face(cm(), r.face_h, advance(r.p, r.m, x)).kind == AT_VERTEX) return;
         if(r.passed_until < tr) consider(x, Trace_end::EARLIER_TRACE, t.trace, tt, false, true);
         if(!t_ended) trails->requests.push_back(Trail_registry::Stop_request{t.trace, tt, r.id, tr, true});
         return;
-      }
-      if(tt == tr && !self) {                                  // on an edge or at a vertex: pairwise
-        const int rel = direction_mod4(t.m - r.m);             // 0: the same motion, the smaller index goes on
-        r_stops = rel != 3 && (rel != 0 || r.id > t.trace);
-        t_stops = rel == 3 || rel == 2 || (rel == 0 && t.trace > r.id);
       }
       if(self) { if(!(tt < tr)) return; t_stops = false; }
       if(r_stops) consider(x, Trace_end::EARLIER_TRACE, t.trace, tt, at_once && CGAL::is_zero(x), false);
@@ -506,7 +550,9 @@ private:
     r.segments.push_back(std::move(s));
   }
 
-  // the trace reached the vertex target(corner) in the chart of face(corner), direction m
+  // the trace reached the vertex target(corner) in the chart of face(corner), direction m. With a Trail_registry: it
+  // stops where a trace passed before; else it waits there for those that arrive at the same time (a meeting at the
+  // vertex, execute()), registered as one of them
   void arrive_at_vertex(Trace_run& r, int corner, int m) const
   {
     const Corner_mesh& M = cm();
@@ -514,48 +560,64 @@ private:
     const std::string where = "vertex " + std::to_string(v);
     if(target && target->vertex == v) return finish(r, Trace_end::TARGET, where);
     if(map.st.is_cone[v]) return finish(r, Trace_end::CONE, where);
-    if(trails && trails->vertex_trace[v] >= 0 && v != r.start_vertex) {
-      // a trace passed v before: r stops; one that arrived now too: the rule of plan(), with the arrival directions
-      // in one chart (r's carried around the fan to the corner of the other's)
-      const int u = trails->vertex_trace[v];
-      int rel = -1;
-      if(trails->vertex_time[v] == r.time && u != r.id) {
-        const Vertex_fan fan = vertex_fan(M, map.rot, corner, m);
-        for(const Fan_wedge& w : fan.wedges)
-          if(!fan.degenerate && w.corner == trails->vertex_corner[v]) { rel = direction_mod4(trails->vertex_m[v] - w.m); break; }
-      }
-      if(rel == 2 || rel == 3) trails->requests.push_back(Trail_registry::Stop_request{u, r.time, r.id, r.time, false});
-      if(rel != 3) {
-        r.hit_trace = u;
-        return finish(r, Trace_end::EARLIER_TRACE, "T-junction at " + where);
-      }
+    const bool meeting = trails && v != r.start_vertex;
+    if(meeting && trails->vertex_trace[v] >= 0 && trails->vertex_time[v] < r.time) {
+      r.hit_trace = trails->vertex_trace[v];
+      return finish(r, Trace_end::EARLIER_TRACE, "T-junction at " + where);
     }
+    Fan_wedge w;
+    int T = 0;
+    bool along_border = false;
+    if(!continuation(r, corner, m, w, T, along_border)) return;
+    if(meeting) {
+      register_vertex(r, v, corner, m);
+      r.face_h = corner; r.m = m;
+      r.planned = true; r.vertex_meeting = true; r.stops = false; r.meet = false;
+      r.event_time = r.time; r.event_phase = 1;
+      return;
+    }
+    leave_vertex(r, v, w, T, along_border);
+  }
+
+  // The wedge w of the vertex target(corner) that continues a trace arriving in the chart of face(corner) with direction
+  // m straight on, and the ray's lifted value T in it; false (r finished: a border, a zero-length edge, no or several
+  // continuing wedges) if there is none.
+  bool continuation(Trace_run& r, int corner, int m, Fan_wedge& w, int& T, bool& arrived_along_border) const
+  {
+    const Corner_mesh& M = cm();
+    const int v = M.target[corner];
+    const std::string where = "vertex " + std::to_string(v);
     const Vertex_fan fan = vertex_fan(M, map.rot, corner, m);
-    if(fan.degenerate) return finish(r, Trace_end::DEGENERATE_VERTEX, where + " has a zero-length UV edge");
+    if(fan.degenerate) { finish(r, Trace_end::DEGENERATE_VERTEX, where + " has a zero-length UV edge"); return false; }
     const int back = fan.wedges[fan.start].La <= 4 ? 4 : 12;     // lifted value of the ray back along the trace
     std::vector<int> found;
     wedges_containing(fan, back - 4, found);
     wedges_containing(fan, back + 4, found);
-    const bool arrived_along_border = !fan.closed &&
-        (fan.wedges.front().La == back || fan.wedges.back().Lb == back);
+    arrived_along_border = !fan.closed && (fan.wedges.front().La == back || fan.wedges.back().Lb == back);
     if(found.size() == 1) {
-      const Fan_wedge& w = fan.wedges[found[0]];
-      const int T = (w.La < back + 4 && back + 4 <= w.Lb) || (!fan.closed && found[0] == 0 && w.La == back + 4)
-                    ? back + 4 : back - 4;
-      depart(r, w.corner, ray_direction(w, T));
-      r.along_border = arrived_along_border;
-      if(v == r.start_vertex && r.face_h == r.start_corner && r.m == r.start_m)
-        return finish(r, Trace_end::CLOSED_LOOP, where);
-      register_vertex(r, v, corner, m);
-      if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
-      return;
+      w = fan.wedges[found[0]];
+      T = (w.La < back + 4 && back + 4 <= w.Lb) || (!fan.closed && found[0] == 0 && w.La == back + 4) ? back + 4 : back - 4;
+      return true;
     }
     if(found.empty() && !fan.closed)
-      return finish(r, arrived_along_border && map.fan_quarter_turns[v] == 2 ? Trace_end::FELL_OFF_BORDER : Trace_end::BORDER,
-                    "border " + where);
-    return finish(r, found.empty() ? Trace_end::NO_CONTINUATION_AT_VERTEX : Trace_end::SEVERAL_CONTINUATIONS_AT_VERTEX,
-                  where + ": " + std::to_string(found.size()) + " continuing sectors");
+      finish(r, arrived_along_border && map.fan_quarter_turns[v] == 2 ? Trace_end::FELL_OFF_BORDER : Trace_end::BORDER,
+             "border " + where);
+    else
+      finish(r, found.empty() ? Trace_end::NO_CONTINUATION_AT_VERTEX : Trace_end::SEVERAL_CONTINUATIONS_AT_VERTEX,
+             where + ": " + std::to_string(found.size()) + " continuing sectors");
+    return false;
   }
+
+  // leaves the vertex v by the wedge w along its ray T (continuation())
+  void leave_vertex(Trace_run& r, int v, const Fan_wedge& w, int T, bool arrived_along_border) const
+  {
+    depart(r, w.corner, ray_direction(w, T));
+    r.along_border = arrived_along_border;
+    if(v == r.start_vertex && r.face_h == r.start_corner && r.m == r.start_m)
+      return finish(r, Trace_end::CLOSED_LOOP, "vertex " + std::to_string(v));
+    if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
+  }
+
 };
 
 } // namespace tracing

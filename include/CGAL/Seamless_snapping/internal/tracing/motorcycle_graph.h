@@ -16,7 +16,7 @@
 // parametric length); each stops at a cone, the border, or where it reaches the trail of a trace that
 // passed there earlier (T-junction); traces that reach a point at the same time: head-on both stop, at
 // right angles the one heading a quarter turn counter-clockwise from the other goes on. The result depends
-// neither on the triangulation nor on the numbering (up to traces along one line at once).
+// neither on the triangulation nor on the numbering.
 // A map without cones and border corners (a torus) gets four seeded traces, +u, +v, -u and -v, from the
 // first corner of the first vertex: with all four the seed is a node with right angles only (with two,
 // the angle between +v and +u the other way round would be a 270 degree patch corner).
@@ -83,10 +83,12 @@ inline Separatrix_seeds separatrix_seeds(const Tracing_map& map)
 }
 
 // Traces all separatrices together; runs[i] is separatrix i. An event simulation in exact time (parametric length):
-// each trace's next event is the exit of its current face or a stop on a trail planned there
-// (Isoline_stepper::plan()), the earliest event first (ties: the smaller index; the outcome does not depend on it,
-// see plan()). A stop whose trail turns out not to reach its point (the other trace stopped before it) is
-// planned again; a trace whose trail another one reaches later gets that one stopped (stop requests).
+// each trace's next event is the exit of its current face, a stop on a trail planned there, or a meeting (traces that
+// reach a point at the same time: inside a face, on an edge, at a vertex), decided once every trace that gets there
+// then has arrived (Isoline_stepper::plan(), execute()); the earliest event first, meetings after the other events
+// of their time (then the smaller index: the outcome does not depend on it). A stop whose trail turns out not to
+// reach its point (the other trace stopped before it) is planned again; a trace whose trail another one reaches
+// later gets that one stopped (stop requests).
 inline void trace_separatrices(const Tracing_map& map, const Separatrix_seeds& S, std::size_t max_steps,
                                std::vector<Trace_run>& runs, Trail_registry& trails)
 {
@@ -95,21 +97,24 @@ inline void trace_separatrices(const Tracing_map& map, const Separatrix_seeds& S
   stepper.trails = &trails;
   if(max_steps > 0) stepper.max_steps = max_steps;
   runs.assign(S.corner.size(), Trace_run());
-  struct Event { FT time; int trace; unsigned version; };
-  auto later = [](const Event& a, const Event& b) { return b.time < a.time || (a.time == b.time && b.trace < a.trace); };
+  struct Event { FT time; int phase, trace; unsigned version; };    // phase 1: meetings, after the other events then
+  auto later = [](const Event& a, const Event& b) {
+    return b.time < a.time || (a.time == b.time && (b.phase < a.phase || (a.phase == b.phase && b.trace < a.trace)));
+  };
   std::priority_queue<Event, std::vector<Event>, decltype(later)> queue(later);
   std::vector<unsigned> version(runs.size(), 0);
   auto schedule = [&](int i) {
-    if(!runs[std::size_t(i)].finished) queue.push(Event{runs[std::size_t(i)].event_time, i, ++version[std::size_t(i)]});
+    const Trace_run& r = runs[std::size_t(i)];
+    if(!r.finished) queue.push(Event{r.event_time, r.event_phase, i, ++version[std::size_t(i)]});
   };
   auto serve_requests = [&] {
     for(const Trail_registry::Stop_request& q : trails.requests) {
       Trace_run& u = runs[std::size_t(q.trace)];
-      if(u.finished || !u.planned || u.event_time < q.time || (q.meet && !(u.passed_until < q.time)) ||
+      if(u.finished || !u.planned || u.vertex_meeting || u.event_time < q.time || (q.meet && !(u.passed_until < q.time)) ||
          (u.event_time == q.time && u.stops && (q.meet || !u.meet)))   // at the same time a stop beats a meeting
         continue;
       u.stops = true; u.meet = q.meet; u.stop_at = q.time - u.time; u.stop_end = Trace_end::EARLIER_TRACE;
-      u.hit = q.hit; u.hit_time = q.hit_time; u.event_time = q.time;
+      u.hit = q.hit; u.hit_time = q.hit_time; u.event_time = q.time; u.event_phase = q.meet ? 1 : 0;
       schedule(q.trace);
     }
     trails.requests.clear();
