@@ -22,7 +22,8 @@
 // and height, arcs whose chains of quad edges run along the patch sides, and the quad mesh's Euler characteristic;
 // and, on a map with cones that the quads cover, the motorcycle graph traced on the map itself
 // (build_motorcycle_graph(): exact event times, no code shared with the quad layer) has the same layout
-// (check_traced_layout()).
+// (check_traced_layout()), and so does the one traced on the closed quad mesh itself, triangulated, with its patches as
+// charts (check_traced_patch_charts(): every meeting of traces at a vertex).
 //   quad: cube                  a generated exact IGM with 8 cones of valence 3, sides 1-3, grid scales 1, 2:
 //                               6 n^2 S^2 quads, chi 2; the map scaled by 2^-3 with grid_scale 8 gives the same
 //                               mesh bit for bit (scale covariance)
@@ -169,6 +170,7 @@ typedef std::vector<std::pair<int, int> > Patch_sizes;   // per patch (shorter s
 static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what);
 static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const Patch_sizes& sizes,
                                 const std::string& what);
+static void check_traced_patch_charts(const Mesh& q, const Patch_sizes& sizes, const std::string& what);
 
 // Returns the sizes of the mesh's patches (check_quad_patches()).
 static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
@@ -241,7 +243,58 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
   const Patch_sizes sizes = check_quad_patches(q, what);
   if(covers) check_traced_layout(m, uv, S, q, sizes, what);
+  if(covers && CGAL::is_closed(q) && cones > 0) check_traced_patch_charts(q, sizes, what);
   return sizes;
+}
+
+// The quad mesh as a map of its own: each quad cut into two triangles, the UV of each corner its cell corner in its
+// patch (quad_mesh_patches(): every patch a chart, the trails seams with quarter-turn transitions and integer
+// translations, the nodes cones), an exact integer-grid map whose isolines run along the mesh edges: every trace
+// runs along edges and every meeting of traces is at a mesh vertex (arrive_at_vertex()'s meetings, three traces at
+// once where two meet head-on and one crosses). Its traced motorcycle graph is the quad mesh's: the same patch sizes,
+// nodes and arcs (quad_layout()).
+static void check_traced_patch_charts(const Mesh& q, const Patch_sizes& sizes, const std::string& what)
+{
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
+  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
+  assert(SS::quad_mesh_patches(q, pm).all_rectangles());
+  Mesh t;
+  UV_map tuv = uv_of(t);
+  for(vertex_descriptor v : q.vertices()) t.add_vertex(q.point(v));
+  for(face_descriptor f : q.faces()) {
+    const SS::Quad_patch_location<Mesh>& l = get(pm, f);
+    const halfedge_descriptor b = l.bottom;                    // from (i, j) to (i + 1, j)
+    const vertex_descriptor c[4] = {q.source(b), q.target(b), q.target(q.next(b)), q.target(q.next(q.next(b)))};
+    const Point_2 p[4] = {Point_2(l.i, l.j), Point_2(l.i + 1, l.j), Point_2(l.i + 1, l.j + 1), Point_2(l.i, l.j + 1)};
+    for(const std::array<int, 3>& tri : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
+      const face_descriptor g = t.add_face(c[tri[0]], c[tri[1]], c[tri[2]]);
+      assert(g != Mesh::null_face());
+      for(halfedge_descriptor k : CGAL::halfedges_around_face(t.halfedge(g), t))
+        for(int m = 0; m < 3; ++m) if(t.target(k) == c[tri[std::size_t(m)]]) put(tuv, k, p[tri[std::size_t(m)]]);
+    }
+  }
+  const SS::Isoline_tracer<Mesh, UV_map> tracer(t, tuv);
+  assert(tracer.status() == SS::SUCCESS);
+  const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+  const SS::Patch_layout& L = g.layout;
+  if(!L.is_valid()) std::cerr << what << ": patch charts traced: " << L.message << std::endl;
+  assert(g.failed == 0 && L.is_valid());
+  Patch_sizes traced;
+  for(const SS::Layout_patch& p : L.patches) {
+    const int w = int(CGAL::to_double(p.width)), h = int(CGAL::to_double(p.height));
+    assert(CGAL::Gmpq(w) == p.width && CGAL::Gmpq(h) == p.height);
+    traced.push_back(std::make_pair((std::min)(w, h), (std::max)(w, h)));
+  }
+  std::sort(traced.begin(), traced.end());
+  Mesh layout;
+  auto arcs = layout.add_property_map<halfedge_descriptor, SS::Quad_layout_arc<Mesh> >("h:arc").first;
+  const SS::Quad_layout ql = SS::quad_layout(q, layout, arcs);
+  if(traced != sizes || L.nodes != ql.vertices || L.arcs != ql.arcs)
+    std::cerr << what << ": patch charts traced: " << L.patches.size() << " patches, " << L.nodes << " nodes, " << L.arcs
+              << " arcs; quad " << sizes.size() << ", " << ql.vertices << ", " << ql.arcs << std::endl;
+  assert(traced == sizes && L.nodes == ql.vertices && L.arcs == ql.arcs);
+  std::printf("quad: %-46s %6zu patches, the quad mesh's, traced on its %zu triangles in its patch charts\n",
+              (what + ", patch charts").c_str(), L.patches.size(), std::size_t(t.number_of_faces()));
 }
 
 // The motorcycle graph of the map traced exactly on its triangles (build_motorcycle_graph(): separatrices from the cones
@@ -472,7 +525,7 @@ static void check_quad_layout(const Mesh& q, const SS::Quad_patches& patches, co
   assert((non_simple > 0) == (r.non_simple_faces > 0) && r.non_simple_faces <= non_simple);
   assert(r.polygon_mesh == (r.self_adjacent_arcs == 0 && r.non_simple_faces == 0));
   std::printf("quad: %-46s %6zu faces, %zu vertices, %zu arcs (%zu on the border), %zu T-junctions, %zu self-adjacent arcs, %s\n",
-              (what + ", layout").c_str(), L.number_of_faces(), r.vertices, r.arcs, r.border_arcs, r.t_junctions,
+              (what + ", layout").c_str(), std::size_t(L.number_of_faces()), r.vertices, r.arcs, r.border_arcs, r.t_junctions,
               r.self_adjacent_arcs, r.polygon_mesh ? "simple polygons" : "not all faces simple polygons");
 }
 
