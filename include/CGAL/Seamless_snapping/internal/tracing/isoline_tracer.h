@@ -241,7 +241,7 @@ public:
     const Corner_mesh& M = cm();
     int orientation = face_orientation(M, r.face_h);
     while(orientation == 0 && pass_collapsed_face(r)) {
-      if(r.finished) return;
+      if(r.finished || r.vertex_meeting) return;               // through the face to a vertex: a meeting there
       orientation = face_orientation(M, r.face_h);
     }
     const int f = M.face[r.face_h];
