@@ -356,7 +356,7 @@ def quad_layout(QF, *, raise_on_failure=True):
 
     Returns the report as a dict: "status", "message", "vertices", "arcs", "faces", "border_arcs", "t_junctions",
     "self_adjacent_arcs" (arcs with one patch on both sides), "non_simple_faces" (polygons listing a vertex twice),
-    "polygon_mesh" (neither occurs),
+    "polygon_mesh" (neither occurs), "loop_splits" (vertices that split an arc from a vertex back to itself),
     "euler_characteristic" (that of the quad mesh), "patches" (the report of quad_mesh_patches(QF) without its
     per-row arrays), and the layout: "LV" (per layout vertex its vertex index in QF), "LF" (per patch, in the order
     of "patches"["sizes"], its polygon: indices into LV, counter-clockwise from the patch's grid corner (0, 0)),

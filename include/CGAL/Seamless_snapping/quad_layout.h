@@ -74,6 +74,7 @@ struct Quad_layout
   std::size_t border_arcs = 0;       ///< arcs on the border of the mesh
   std::size_t t_junctions = 0;       ///< (patch, vertex) incidences where the vertex lies on a side of the patch's rectangle, not at a corner (T-junctions, and the vertices that split loops)
   std::size_t self_adjacent_arcs = 0;///< arcs with one patch on both sides (a band cut open once)
+  std::size_t loop_splits = 0;       ///< of the vertices, those that split a loop (at the middle of its chain; no corner of a patch)
   std::size_t non_simple_faces = 0;  ///< faces that meet a vertex twice (their polygon lists it twice)
   bool polygon_mesh = false;         ///< no self-adjacent arc and no non-simple face: then the layout is a polygon mesh (`CGAL::is_valid_polygon_mesh()`); a self-adjacent arc makes it a valid face graph only
   long euler_characteristic = 0;     ///< V - E + F of the layout, that of the quad mesh
@@ -87,7 +88,7 @@ struct Quad_layout
       << ",\n  \"message\": " << IO::internal::json_string(message) << ",\n  \"vertices\": " << vertices
       << ",\n  \"arcs\": " << arcs << ",\n  \"faces\": " << patches.patches.size() << ",\n  \"border_arcs\": " << border_arcs
       << ",\n  \"t_junctions\": " << t_junctions << ",\n  \"self_adjacent_arcs\": " << self_adjacent_arcs
-      << ",\n  \"non_simple_faces\": " << non_simple_faces
+      << ",\n  \"non_simple_faces\": " << non_simple_faces << ",\n  \"loop_splits\": " << loop_splits
       << ",\n  \"polygon_mesh\": " << (polygon_mesh ? "true" : "false") << ",\n  \"euler_characteristic\": " << euler_characteristic
       << ",\n  \"total_ms\": " << IO::internal::json_number(total_ms) << "\n}\n";
     return o.str();
@@ -200,6 +201,7 @@ Quad_layout quad_layout(const PolygonMesh& qm, LayoutGraph& layout, LayoutArcMap
   r.arcs = lh.size() / 2;
   r.t_junctions = a.t_junctions;
   r.self_adjacent_arcs = a.self_adjacent_arcs;
+  r.loop_splits = a.loop_splits;
   r.euler_characteristic = long(r.vertices) - long(r.arcs) + long(lf.size());
   std::vector<int> met(lv.size(), -1);                            // per vertex: the last face that met it
   for(std::size_t p = 0; p < lf.size(); ++p) {

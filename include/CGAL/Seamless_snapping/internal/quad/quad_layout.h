@@ -50,6 +50,7 @@ struct Quad_layout_arrays
   std::vector<int> face_halfedge;   // per patch: its run from the rectangle's corner (0, 0)
   std::size_t t_junctions = 0;      // (patch, vertex) incidences on a side of the rectangle, not at a corner
   std::size_t self_adjacent_arcs = 0;   // arcs with one patch on both sides
+  std::size_t loop_splits = 0;          // layout vertices that split a loop (no corner of a patch)
 };
 
 // Steps 1-3. Precondition: every patch of c is a rectangle. Empty message on success.
@@ -89,7 +90,9 @@ inline std::string quad_layout(const Quad_arrays& m, const Quad_patch_cells& c, 
         if(layout_vertex[std::size_t(m.target[std::size_t(boundary[k])])] < 0) continue;
         if(m.target[std::size_t(boundary[k])] == m.target[std::size_t(m.opp[std::size_t(boundary[b])])]) {
           if(k == b) return "a quad edge from a vertex to itself";
-          layout_vertex[std::size_t(m.target[std::size_t(boundary[b + (k - b) / 2])])] = 0;
+          int& middle = layout_vertex[std::size_t(m.target[std::size_t(boundary[b + (k - b) / 2])])];
+          out.loop_splits += middle < 0 ? 1 : 0;
+          middle = 0;
           split = true;
         }
         b = k + 1;
