@@ -64,6 +64,7 @@
 //                               naming a cone pair the integer translations put onto one point, as the snap report does
 
 #include "mesh_test_support.h"
+#include "patch_chart_map.h"
 
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
@@ -168,9 +169,8 @@ static void check_origin(const Mesh& m, UV_map uv, double S, const Origin& o, co
 // Checks r against m (see the header comment); `what` names the map in the output line.
 typedef std::vector<std::pair<int, int> > Patch_sizes;   // per patch (shorter side, longer side), sorted
 static Patch_sizes check_quad_patches(const Mesh& q, const std::string& what);
-static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const Patch_sizes& sizes,
-                                const std::string& what);
-static void check_traced_patch_charts(const Mesh& q, const Patch_sizes& sizes, const std::string& what);
+static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const std::string& what);
+static void check_traced_patch_charts(const Mesh& q, const std::string& what);
 
 // Returns the sizes of the mesh's patches (check_quad_patches()).
 static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Quad_result& r, const std::string& what)
@@ -242,8 +242,8 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
   const Patch_sizes sizes = check_quad_patches(q, what);
-  if(covers) check_traced_layout(m, uv, S, q, sizes, what);
-  if(covers && CGAL::is_closed(q) && cones > 0) check_traced_patch_charts(q, sizes, what);
+  if(covers) check_traced_layout(m, uv, S, q, what);
+  if(covers && CGAL::is_closed(q) && cones > 0) check_traced_patch_charts(q, what);
   return sizes;
 }
 
@@ -299,45 +299,50 @@ static void check_traced_patch_charts(const Mesh& q, const Patch_sizes& sizes, c
 
 // The motorcycle graph of the map traced exactly on its triangles (build_motorcycle_graph(): separatrices from the cones
 // in exact time, the tie rule of quad_mesh_patches()) against the quad mesh's (quad_mesh_patches(), quad_layout()),
-// two implementations that share no code: every traced patch a rectangle, as many as the quad mesh has, of the same
-// sizes in grid cells (width and height times the grid scale S, exactly), and the same layout: its nodes and arcs are
-// the quad layout's vertices and arcs. A map with a zero-area triangle gets no traced layout (refused), and one without
-// cones and border corners (a torus) seeded traces from a vertex of its own (not compared).
-static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const Patch_sizes& sizes,
-                                const std::string& what)
+// two implementations that share no code: every traced patch a rectangle, of the sizes of the quad mesh's patches in
+// grid cells (width and height times the grid scale S, exactly), and the same layout: its nodes and arcs are the quad
+// layout's vertices and arcs (SS_test::traced_layout_mismatch()). A map with a zero-area triangle gets no traced layout
+// (refused), and one without cones and border corners (a torus) seeded traces from a vertex of its own (not compared).
+static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& q, const std::string& what)
 {
   const SS::Isoline_tracer<Mesh, UV_map> tracer(m, uv);
   assert(tracer.status() == SS::SUCCESS);
   const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
-  const SS::Patch_layout& L = g.layout;
   if(g.seeded) {
     std::printf("quad: %-46s seeded traces: not compared\n", (what + ", traced").c_str());
     return;
   }
-  if(L.status != SS::SUCCESS) {
-    assert(L.message.find("flipped or degenerate") != std::string::npos);
-    std::printf("quad: %-46s traced layout refused (%s)\n", (what + ", traced").c_str(), L.message.c_str());
+  if(g.layout.status != SS::SUCCESS) {
+    assert(g.layout.message.find("flipped or degenerate") != std::string::npos);
+    std::printf("quad: %-46s traced layout refused (%s)\n", (what + ", traced").c_str(), g.layout.message.c_str());
     return;
   }
-  assert(g.failed == 0 && L.unplaced_segments == 0);
-  Patch_sizes traced;
-  for(const SS::Layout_patch& p : L.patches) {
-    assert(p.is_quad());
-    const Q w = p.width * Q(S), h = p.height * Q(S);
-    const int wi = int(CGAL::to_double(w)), hi = int(CGAL::to_double(h));
-    assert(Q(wi) == w && Q(hi) == h);
-    traced.push_back(std::make_pair((std::min)(wi, hi), (std::max)(wi, hi)));
-  }
-  std::sort(traced.begin(), traced.end());
-  Mesh layout;
-  auto arcs = layout.add_property_map<halfedge_descriptor, SS::Quad_layout_arc<Mesh> >("h:arc").first;
-  const SS::Quad_layout ql = SS::quad_layout(q, layout, arcs);
-  if(traced != sizes || L.nodes != ql.vertices || L.arcs != ql.arcs)
-    std::cerr << what << ": traced " << L.patches.size() << " patches, " << L.nodes << " nodes, " << L.arcs << " arcs; quad "
-              << sizes.size() << " patches, " << ql.vertices << " vertices, " << ql.arcs << " arcs" << std::endl;
-  assert(traced == sizes && L.nodes == ql.vertices && L.arcs == ql.arcs);
+  const std::string mismatch = SS_test::traced_layout_mismatch(g, q, S);
+  if(!mismatch.empty()) std::cerr << what << ": " << mismatch << std::endl;
+  assert(mismatch.empty());
   std::printf("quad: %-46s %6zu patches, the quad mesh's (sizes, %zu nodes, %zu arcs); traced in %.0f ms\n",
-              (what + ", traced").c_str(), L.patches.size(), L.nodes, L.arcs, g.trace_ms);
+              (what + ", traced").c_str(), g.layout.patches.size(), g.layout.nodes, g.layout.arcs, g.trace_ms);
+}
+
+// The quad mesh as a map of its own (SS_test::patch_chart_map(): its quads cut in two, its patches as charts), where
+// every trace runs along edges and every meeting of traces is at a vertex or on an edge (arrive_at_vertex()'s meetings,
+// three traces at once where two meet head-on and one crosses): its traced motorcycle graph is the quad mesh's.
+static void check_traced_patch_charts(const Mesh& q, const std::string& what)
+{
+  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
+  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
+  assert(SS::quad_mesh_patches(q, pm).all_rectangles());
+  Mesh t;
+  UV_map tuv = uv_of(t);
+  const bool built = SS_test::patch_chart_map(q, pm, t, tuv);
+  assert(built);
+  const SS::Isoline_tracer<Mesh, UV_map> tracer(t, tuv);
+  assert(tracer.status() == SS::SUCCESS);
+  const std::string mismatch = SS_test::traced_layout_mismatch(SS::build_motorcycle_graph(tracer), q, 1);
+  if(!mismatch.empty()) std::cerr << what << ": patch charts: " << mismatch << std::endl;
+  assert(mismatch.empty());
+  std::printf("quad: %-46s the quad mesh's patches, traced on its %zu triangles in its patch charts\n",
+              (what + ", patch charts").c_str(), std::size_t(t.number_of_faces()));
 }
 
 // quad_mesh_patches() on an extracted mesh, checked here from its output alone: every quad in one patch, the

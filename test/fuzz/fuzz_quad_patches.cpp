@@ -16,14 +16,19 @@
 //  - any other status writes nothing (the output map keeps its values);
 //  - quad_layout(): SUCCESS exactly when quad_mesh_patches() succeeds with rectangles, else nothing added; a valid face
 //    graph with one face per patch and the Euler characteristic of the mesh (isolated vertices not counted), every
-//    face with 4 corners and sides of its patch's width, height, width, height, each arc as long on both sides.
+//    face with 4 corners and sides of its patch's width, height, width, height, each arc as long on both sides;
+//  - on a connected mesh with nodes: the mesh as a map of its own (its quads cut in two, its patches as charts,
+//    patch_chart_map.h) is a seamless map whose motorcycle graph traced in exact time (build_motorcycle_graph(), a
+//    second implementation that shares no code with quad_mesh_patches()) has the same patches (sizes), nodes and arcs.
 // Any violation aborts (a finding); the sanitizers catch reads out of range. Build: -DSEAMLESS_SNAPPING_FUZZ=ON.
 
 #include "quad_patches_bytes.h"
+#include "../Seamless_snapping/patch_chart_map.h"
 
 #include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Simple_cartesian.h>
@@ -124,5 +129,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_REQUIRE(sides.size() == 4 && run == 0 && sides[0] == P.width && sides[2] == P.width && sides[1] == P.height &&
                  sides[3] == P.height, "4 corners, sides of the patch's width and height");
   }
+  // the mesh as a map of its own, traced (parts without nodes are seeded by quad_mesh_patches() alone: one part only)
+  std::vector<std::size_t> component(m.num_faces());
+  const auto cm = boost::make_iterator_property_map(component.begin(), get(boost::face_index, m));
+  if(r.nodes == 0 || CGAL::Polygon_mesh_processing::connected_components(m, cm) != 1) return 0;
+  Mesh t;
+  auto uv = t.add_property_map<Mesh::Halfedge_index, CGAL::Simple_cartesian<double>::Point_2>("h:uv").first;
+  FUZZ_REQUIRE(SS_test::patch_chart_map(m, boost::make_iterator_property_map(locations.begin(), get(boost::face_index, m)), t, uv),
+               "the quads cut in two");
+  const SS::Isoline_tracer<Mesh, decltype(uv)> tracer(t, uv);
+  FUZZ_REQUIRE(tracer.status() == SS::SUCCESS, "the patch charts are a map the tracer reads");
+  const std::string mismatch = SS_test::traced_layout_mismatch(SS::build_motorcycle_graph(tracer), m, 1);
+  if(!mismatch.empty()) std::fprintf(stderr, "fuzz_quad_patches: %s\n", mismatch.c_str());
+  FUZZ_REQUIRE(mismatch.empty(), "the traced motorcycle graph of the patch charts is the quad mesh's");
   return 0;
 }
