@@ -488,10 +488,11 @@ private:
   }
 
   // Where r's crossing [0, along] (from r.p along r.m, at r.time) and the trail t share a point, the trace that passes
-  // it later stops there: r through consider(x, EARLIER_TRACE, trace, its time there), t's trace by a request; at the
-  // same time as plan() says. A trail of a trace that has ended reaches as far as it went; r's own trail stops r only
-  // where r passed before (a trace meets its own path at the same time only at its head). A crossing that starts
-  // along a trail laid before stops at once, also at the start (the arc exists already).
+  // it later stops there: r through consider(x, EARLIER_TRACE, trace, its time there), t's trace by a request. Both at
+  // the same time: a meeting inside the face or on an edge (a meeting event for both, decided in execute()), none at a
+  // vertex (arrive_at_vertex() decides) or at r's start. A trail of a trace that has ended reaches as far as it went;
+  // r's own trail stops r only where r passed before (a trace meets its own path at the same time only at its head). A
+  // crossing that starts along a trail laid before stops at once, also at the start (the arc exists already).
   template <class Consider>
   void meet_trail(const Trace_run& r, const Trail_registry::Stored& t, const FT& along, bool include_start,
                   Consider& consider) const
