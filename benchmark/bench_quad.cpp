@@ -12,7 +12,10 @@
 // (quad_mesh_patches(): its motorcycle graph along the quad edges): patches, how many are rectangles, nodes,
 // motorcycles, separatrix edges, the largest patch (width x height), the time, the quad layout (quad_layout(): its
 // vertices, arcs, T-junctions, arcs with one patch on both sides, whether it is a polygon mesh, its time with the
-// patches it recomputes), and the patches of libQEx's stored mesh.
+// patches it recomputes), the layout of the map's motorcycle graph traced exactly on its triangles
+// (build_motorcycle_graph(), as seamless_trace: patches / nodes / arcs, its time, and whether it is the quad layout:
+// as many patches, its nodes and arcs the quad layout's vertices and arcs but those that split loops), and the
+// patches of libQEx's stored mesh.
 //
 // usage: bench_quad [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
@@ -25,6 +28,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
+#include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
@@ -211,21 +215,32 @@ int main(int argc, char** argv)
     Mesh layout;
     auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
     const SS::Quad_layout lay = SS::quad_layout(quads, layout, arcs);
-    char row[512];
-    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f | %zu / %zu / %zu / %zu (%s) | %.2f | %s |",
+    const SS::Isoline_tracer<Mesh, UV_map> tracer(m, uv);
+    const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
+    const SS::Patch_layout& L = g.layout;
+    char traced[160] = "-";
+    if(L.status == SS::SUCCESS)
+      std::snprintf(traced, sizeof traced, "%zu / %zu / %zu | %.0f | %s", L.patches.size(), L.nodes, L.arcs,
+                    g.trace_ms + L.subdivision_ms + L.mesh_ms + L.measure_ms,
+                    L.patches.size() == pt.patches.size() && L.nodes + lay.loop_splits == lay.vertices &&
+                    L.arcs + lay.loop_splits == lay.arcs ? "yes" : "no");
+    else std::snprintf(traced, sizeof traced, "- | | %s", L.message.c_str());
+    char row[768];
+    std::snprintf(row, sizeof row, "| %s | %s | %zu | %zu | %zu | %zu | %zu | %d x %d | %.2f | %zu / %zu / %zu / %zu (%s) | %.2f | %s | %s |",
                   name.c_str(), SS::status_name(pt.status),
                   pt.patches.size(), pt.rectangles, pt.nodes, pt.motorcycles, pt.separatrix_edges,
                   pt.patches.empty() ? 0 : pt.patches[largest].width, pt.patches.empty() ? 0 : pt.patches[largest].height, pt.total_ms,
                   lay.vertices, lay.arcs, lay.t_junctions, lay.self_adjacent_arcs, lay.polygon_mesh ? "yes" : "no", lay.total_ms,
-                  ref.found ? ref.patches.c_str() : "-");
+                  traced, ref.found ? ref.patches.c_str() : "-");
     patch_rows.push_back(row);
     std::fflush(stdout);
   }
   std::printf("\n| model | mesh | valences (valence:vertices) |\n|---|---|---|\n");
   for(const std::string& h : histograms) std::printf("%s\n", h.c_str());
   std::printf("\n| model | patches status | patches | rectangles | nodes | motorcycles | separatrix edges | largest patch | ms |"
-              " layout: vertices / arcs / T-junctions / self-adjacent arcs (polygon mesh) | layout ms | libQEx's mesh: patches (its layout) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              " layout: vertices / arcs / T-junctions / self-adjacent arcs (polygon mesh) | layout ms |"
+              " traced on the map: patches / nodes / arcs | traced ms | = quad layout | libQEx's mesh: patches (its layout) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& r : patch_rows) std::printf("%s\n", r.c_str());
   return 0;
 }
