@@ -762,8 +762,13 @@ def test_extract_quad_mesh_shared_data(name, weld):
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
     # welded: the rows of V with one position are one vertex; compare positions, not rows
     check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
-    check_quad_layout(QF, ss.quad_layout(QF))
+    lay = ss.quad_layout(QF)
+    check_quad_layout(QF, lay)
     assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]
+    # the map's motorcycle graph, traced exactly on its triangles, is the quad mesh's: the same patches, nodes, arcs
+    traced = ss.motorcycle_graph(V, F, UV2, FUV2, weld=weld)["layout"]
+    assert traced["valid"] and traced["patches"] == len(lay["LF"])
+    assert (traced["nodes"], traced["arcs"]) == (lay["vertices"] - lay["loop_splits"], lay["arcs"] - lay["loop_splits"])
 
 
 def test_separate_cone_pairs():
