@@ -247,56 +247,6 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   return sizes;
 }
 
-// The quad mesh as a map of its own: each quad cut into two triangles, the UV of each corner its cell corner in its
-// patch (quad_mesh_patches(): every patch a chart, the trails seams with quarter-turn transitions and integer
-// translations, the nodes cones), an exact integer-grid map whose isolines run along the mesh edges: every trace
-// runs along edges and every meeting of traces is at a mesh vertex (arrive_at_vertex()'s meetings, three traces at
-// once where two meet head-on and one crosses). Its traced motorcycle graph is the quad mesh's: the same patch sizes,
-// nodes and arcs (quad_layout()).
-static void check_traced_patch_charts(const Mesh& q, const Patch_sizes& sizes, const std::string& what)
-{
-  std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());
-  const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, q));
-  assert(SS::quad_mesh_patches(q, pm).all_rectangles());
-  Mesh t;
-  UV_map tuv = uv_of(t);
-  for(vertex_descriptor v : q.vertices()) t.add_vertex(q.point(v));
-  for(face_descriptor f : q.faces()) {
-    const SS::Quad_patch_location<Mesh>& l = get(pm, f);
-    const halfedge_descriptor b = l.bottom;                    // from (i, j) to (i + 1, j)
-    const vertex_descriptor c[4] = {q.source(b), q.target(b), q.target(q.next(b)), q.target(q.next(q.next(b)))};
-    const Point_2 p[4] = {Point_2(l.i, l.j), Point_2(l.i + 1, l.j), Point_2(l.i + 1, l.j + 1), Point_2(l.i, l.j + 1)};
-    for(const std::array<int, 3>& tri : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
-      const face_descriptor g = t.add_face(c[tri[0]], c[tri[1]], c[tri[2]]);
-      assert(g != Mesh::null_face());
-      for(halfedge_descriptor k : CGAL::halfedges_around_face(t.halfedge(g), t))
-        for(int m = 0; m < 3; ++m) if(t.target(k) == c[tri[std::size_t(m)]]) put(tuv, k, p[tri[std::size_t(m)]]);
-    }
-  }
-  const SS::Isoline_tracer<Mesh, UV_map> tracer(t, tuv);
-  assert(tracer.status() == SS::SUCCESS);
-  const SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
-  const SS::Patch_layout& L = g.layout;
-  if(!L.is_valid()) std::cerr << what << ": patch charts traced: " << L.message << std::endl;
-  assert(g.failed == 0 && L.is_valid());
-  Patch_sizes traced;
-  for(const SS::Layout_patch& p : L.patches) {
-    const int w = int(CGAL::to_double(p.width)), h = int(CGAL::to_double(p.height));
-    assert(CGAL::Gmpq(w) == p.width && CGAL::Gmpq(h) == p.height);
-    traced.push_back(std::make_pair((std::min)(w, h), (std::max)(w, h)));
-  }
-  std::sort(traced.begin(), traced.end());
-  Mesh layout;
-  auto arcs = layout.add_property_map<halfedge_descriptor, SS::Quad_layout_arc<Mesh> >("h:arc").first;
-  const SS::Quad_layout ql = SS::quad_layout(q, layout, arcs);
-  if(traced != sizes || L.nodes != ql.vertices || L.arcs != ql.arcs)
-    std::cerr << what << ": patch charts traced: " << L.patches.size() << " patches, " << L.nodes << " nodes, " << L.arcs
-              << " arcs; quad " << sizes.size() << ", " << ql.vertices << ", " << ql.arcs << std::endl;
-  assert(traced == sizes && L.nodes == ql.vertices && L.arcs == ql.arcs);
-  std::printf("quad: %-46s %6zu patches, the quad mesh's, traced on its %zu triangles in its patch charts\n",
-              (what + ", patch charts").c_str(), L.patches.size(), std::size_t(t.number_of_faces()));
-}
-
 // The motorcycle graph of the map traced exactly on its triangles (build_motorcycle_graph(): separatrices from the cones
 // in exact time, the tie rule of quad_mesh_patches()) against the quad mesh's (quad_mesh_patches(), quad_layout()),
 // two implementations that share no code: every traced patch a rectangle, of the sizes of the quad mesh's patches in
@@ -324,9 +274,10 @@ static void check_traced_layout(const Mesh& m, UV_map uv, double S, const Mesh& 
               (what + ", traced").c_str(), g.layout.patches.size(), g.layout.nodes, g.layout.arcs, g.trace_ms);
 }
 
-// The quad mesh as a map of its own (SS_test::patch_chart_map(): its quads cut in two, its patches as charts), where
-// every trace runs along edges and every meeting of traces is at a vertex or on an edge (arrive_at_vertex()'s meetings,
-// three traces at once where two meet head-on and one crosses): its traced motorcycle graph is the quad mesh's.
+// The quad mesh as a map of its own (SS_test::patch_chart_map(): its quads cut in four at their centers, its patches
+// as charts), where every trace runs along edges and every meeting of traces is at a vertex or on an edge
+// (arrive_at_vertex()'s meetings, three traces at once where two meet head-on and one crosses): its traced motorcycle
+// graph is the quad mesh's.
 static void check_traced_patch_charts(const Mesh& q, const std::string& what)
 {
   std::vector<SS::Quad_patch_location<Mesh> > locations(q.number_of_faces());

@@ -17,7 +17,7 @@
 //  - quad_layout(): SUCCESS exactly when quad_mesh_patches() succeeds with rectangles, else nothing added; a valid face
 //    graph with one face per patch and the Euler characteristic of the mesh (isolated vertices not counted), every
 //    face with 4 corners and sides of its patch's width, height, width, height, each arc as long on both sides;
-//  - on a connected mesh with nodes: the mesh as a map of its own (its quads cut in two, its patches as charts,
+//  - on a connected mesh with nodes: the mesh as a map of its own (its quads cut in four, its patches as charts,
 //    patch_chart_map.h) is a seamless map whose motorcycle graph traced in exact time (build_motorcycle_graph(), a
 //    second implementation that shares no code with quad_mesh_patches()) has the same patches (sizes), nodes and arcs.
 // Any violation aborts (a finding); the sanitizers catch reads out of range. Build: -DSEAMLESS_SNAPPING_FUZZ=ON.
@@ -136,7 +136,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Mesh t;
   auto uv = t.add_property_map<Mesh::Halfedge_index, CGAL::Simple_cartesian<double>::Point_2>("h:uv").first;
   FUZZ_REQUIRE(SS_test::patch_chart_map(m, boost::make_iterator_property_map(locations.begin(), get(boost::face_index, m)), t, uv),
-               "the quads cut in two");
+               "the quads cut in four");
   const SS::Isoline_tracer<Mesh, decltype(uv)> tracer(t, uv);
   FUZZ_REQUIRE(tracer.status() == SS::SUCCESS, "the patch charts are a map the tracer reads");
   const std::string mismatch = SS_test::traced_layout_mismatch(SS::build_motorcycle_graph(tracer), m, 1);
