@@ -82,9 +82,10 @@ struct Trail_registry
   std::vector<std::vector<Stored> > per_face;
   // a trace that reached a vertex: in the chart of face(corner) (target(corner) = the vertex), with direction m
   struct Arrival { int trace, corner, m; };
-  std::vector<int> vertex_trace;      // -1 or the first trace through (or from) the vertex
-  std::vector<FT> vertex_time;        // when it got there
-  std::vector<std::vector<Arrival> > vertex_arrivals;   // the traces that got there then (they decide together)
+  // per vertex: the traces that got there first (through it or from it), all at one time, vertex_time (they decide
+  // together); the first of them is the one a later trace stops on
+  std::vector<std::vector<Arrival> > vertex_arrivals;
+  std::vector<FT> vertex_time;
   std::vector<char> ended;            // per trace: it has ended, at end_time
   std::vector<FT> end_time;
   std::vector<Stop_request> requests; // for the scheduler
@@ -92,8 +93,7 @@ struct Trail_registry
   void init(const Corner_mesh& cm, std::size_t traces)
   {
     per_face.assign(cm.n_faces, {});
-    vertex_trace.assign(cm.n_vertices, -1); vertex_time.assign(cm.n_vertices, FT(0));
-    vertex_arrivals.assign(cm.n_vertices, {});
+    vertex_arrivals.assign(cm.n_vertices, {}); vertex_time.assign(cm.n_vertices, FT(0));
     ended.assign(traces, 0); end_time.assign(traces, FT(0));
     requests.clear(); laid = 0;
   }
@@ -402,11 +402,10 @@ private:
   void register_vertex(const Trace_run& r, int v, int corner, int m) const
   {
     if(!trails) return;
-    if(trails->vertex_trace[v] < 0) {
-      trails->vertex_trace[v] = r.id;
-      trails->vertex_time[v] = r.time;
-    } else if(!(trails->vertex_time[v] == r.time)) return;
-    trails->vertex_arrivals[v].push_back(Trail_registry::Arrival{r.id, corner, m});
+    std::vector<Trail_registry::Arrival>& arrivals = trails->vertex_arrivals[std::size_t(v)];
+    if(arrivals.empty()) trails->vertex_time[std::size_t(v)] = r.time;
+    else if(!(trails->vertex_time[std::size_t(v)] == r.time)) return;
+    arrivals.push_back(Trail_registry::Arrival{r.id, corner, m});
   }
 
   // Who goes on where traces meet at one time (quad_mesh_patches()'s rule): `others` are the headings of the others
@@ -476,10 +475,11 @@ private:
   // there at the same time decide by meeting_stop(), their arrival directions carried around the fan into r's chart
   bool goes_on_at_vertex(Trace_run& r) const
   {
-    const int v = cm().target[r.face_h];
+    const std::vector<Trail_registry::Arrival>& arrivals = trails->vertex_arrivals[std::size_t(cm().target[r.face_h])];
+    if(arrivals.size() == 1) return true;                      // r alone
     const Vertex_fan fan = vertex_fan(cm(), map.rot, r.face_h, r.m);
     std::vector<std::pair<int, int> > others;
-    for(const Trail_registry::Arrival& a : trails->vertex_arrivals[std::size_t(v)])
+    for(const Trail_registry::Arrival& a : arrivals)
       for(const Fan_wedge& w : fan.wedges)
         if(a.trace != r.id && w.corner == a.corner) others.emplace_back(direction_mod4(a.m - w.m), a.trace);
     r.hit = meeting_stop(others);
@@ -562,8 +562,8 @@ private:
     if(target && target->vertex == v) return finish(r, Trace_end::TARGET, where);
     if(map.st.is_cone[v]) return finish(r, Trace_end::CONE, where);
     const bool meeting = trails && v != r.start_vertex;
-    if(meeting && trails->vertex_trace[v] >= 0 && trails->vertex_time[v] < r.time) {
-      r.hit_trace = trails->vertex_trace[v];
+    if(meeting && !trails->vertex_arrivals[std::size_t(v)].empty() && trails->vertex_time[std::size_t(v)] < r.time) {
+      r.hit_trace = trails->vertex_arrivals[std::size_t(v)].front().trace;
       return finish(r, Trace_end::EARLIER_TRACE, "T-junction at " + where);
     }
     Fan_wedge w;
