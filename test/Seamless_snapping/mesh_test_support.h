@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,34 @@ static inline std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
     out.push_back(a); out.push_back(b);
   }
   return out;
+}
+
+// The mesh m renumbered into the empty mesh p: its vertices, then its faces added in a shuffled order and each face's
+// corners rotated (std::mt19937 with `seed`: the vertices shuffled, then the faces, then one draw per face). Returns per
+// halfedge of p (by index) the halfedge of m with the same target vertex and face, e.g. to copy corner UVs.
+static inline std::vector<halfedge_descriptor> renumbered_copy(const Mesh& m, unsigned seed, Mesh& p)
+{
+  std::mt19937 rng(seed);
+  std::vector<vertex_descriptor> vs(m.vertices().begin(), m.vertices().end());
+  std::vector<Mesh::Face_index> fs(m.faces().begin(), m.faces().end());
+  std::shuffle(vs.begin(), vs.end(), rng);
+  std::shuffle(fs.begin(), fs.end(), rng);
+  std::vector<vertex_descriptor> to_p(m.num_vertices());
+  for(vertex_descriptor v : vs) to_p[std::size_t(v)] = p.add_vertex(m.point(v));
+  std::vector<halfedge_descriptor> origin;
+  for(Mesh::Face_index f : fs) {
+    std::vector<halfedge_descriptor> c(CGAL::halfedges_around_face(m.halfedge(f), m).begin(),
+                                       CGAL::halfedges_around_face(m.halfedge(f), m).end());
+    std::rotate(c.begin(), c.begin() + long(rng() % c.size()), c.end());
+    std::vector<vertex_descriptor> cv;
+    for(halfedge_descriptor h : c) cv.push_back(to_p[std::size_t(m.target(h))]);
+    const Mesh::Face_index g = p.add_face(cv);
+    assert(g != Mesh::null_face());
+    origin.resize(p.num_halfedges());
+    for(halfedge_descriptor k : CGAL::halfedges_around_face(p.halfedge(g), p))
+      for(halfedge_descriptor h : c) if(to_p[std::size_t(m.target(h))] == p.target(k)) origin[std::size_t(k)] = h;
+  }
+  return origin;
 }
 
 // The map of the faces within `rings` face rings of vertex v re-expressed by the grid symmetry p -> R p (R a quarter

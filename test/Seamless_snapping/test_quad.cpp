@@ -379,23 +379,10 @@ static void check_patches_independent_of_numbering(const Mesh& q, const std::vec
   for(std::size_t f = 0; f < identity.size(); ++f) identity[f] = f;
   const std::set<std::vector<std::size_t> > expected = partition(patch_of, identity);
   for(unsigned seed : {1u, 2u, 3u}) {
-    std::mt19937 rng(seed);
-    std::vector<vertex_descriptor> vs(q.vertices().begin(), q.vertices().end());
-    std::vector<face_descriptor> fs(q.faces().begin(), q.faces().end());
-    std::shuffle(vs.begin(), vs.end(), rng);
-    std::shuffle(fs.begin(), fs.end(), rng);
     Mesh p;
-    std::map<vertex_descriptor, vertex_descriptor> to_p;
-    for(vertex_descriptor v : vs) to_p[v] = p.add_vertex(q.point(v));
+    const std::vector<halfedge_descriptor> origin = renumbered_copy(q, seed, p);
     std::vector<std::size_t> face_of;                                   // per face of p: its face of q
-    for(face_descriptor f : fs) {
-      std::vector<vertex_descriptor> c;
-      for(vertex_descriptor v : CGAL::vertices_around_face(q.halfedge(f), q)) c.push_back(to_p[v]);
-      std::rotate(c.begin(), c.begin() + long(rng() % c.size()), c.end());
-      const face_descriptor g = p.add_face(c);
-      assert(g != Mesh::null_face() && std::size_t(g) == face_of.size());
-      face_of.push_back(std::size_t(f));
-    }
+    for(face_descriptor f : p.faces()) face_of.push_back(std::size_t(q.face(origin[std::size_t(p.halfedge(f))])));
     std::vector<SS::Quad_patch_location<Mesh> > locations(p.number_of_faces());
     const auto pm = boost::make_iterator_property_map(locations.begin(), get(boost::face_index, p));
     assert(SS::quad_mesh_patches(p, pm).all_rectangles());

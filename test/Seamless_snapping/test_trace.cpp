@@ -50,7 +50,6 @@
 #include <cassert>
 #include <random>
 #include <cstdio>
-#include <map>
 #include <set>
 #include <sstream>
 
@@ -407,26 +406,10 @@ static SS::Motorcycle_graph<Mesh> check_exact_graph(const Mesh& m, UV_map uv, co
 static void check_independent_of_numbering(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Mesh>& g,
                                            const std::string& what)
 {
-  std::mt19937 rng(7);
-  std::vector<vertex_descriptor> vs(m.vertices().begin(), m.vertices().end());
-  std::vector<face_descriptor> fs(m.faces().begin(), m.faces().end());
-  std::shuffle(vs.begin(), vs.end(), rng);
-  std::shuffle(fs.begin(), fs.end(), rng);
   Mesh p;
   UV_map puv = uv_of(p);
-  std::map<vertex_descriptor, vertex_descriptor> to_p;
-  for(vertex_descriptor v : vs) to_p[v] = p.add_vertex(m.point(v));
-  for(face_descriptor f : fs) {
-    std::vector<halfedge_descriptor> c(CGAL::halfedges_around_face(m.halfedge(f), m).begin(),
-                                       CGAL::halfedges_around_face(m.halfedge(f), m).end());
-    std::rotate(c.begin(), c.begin() + long(rng() % c.size()), c.end());
-    std::vector<vertex_descriptor> cv;
-    for(halfedge_descriptor h : c) cv.push_back(to_p[m.target(h)]);
-    const face_descriptor q = p.add_face(cv);
-    assert(q != Mesh::null_face());
-    for(halfedge_descriptor k : CGAL::halfedges_around_face(p.halfedge(q), p))
-      for(halfedge_descriptor h : c) if(to_p[m.target(h)] == p.target(k)) put(puv, k, get(uv, h));
-  }
+  const std::vector<halfedge_descriptor> origin = renumbered_copy(m, 7, p);
+  for(halfedge_descriptor k : p.halfedges()) if(!p.is_border(k)) put(puv, k, get(uv, origin[std::size_t(k)]));
   const Tracer tracer(p, puv);
   assert(tracer.status() == SS::SUCCESS);
   const SS::Motorcycle_graph<Mesh> h = SS::build_motorcycle_graph(tracer);
