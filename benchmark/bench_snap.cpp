@@ -308,13 +308,14 @@ static int integer_grid_study(const std::vector<fs::path>& files, int repeat)
 // (after its exact snap and the repair); of those at the end, how many are proven forced; vertices left not locally
 // injective (of them, next to a cone pair the rounding collapsed); rings, moved sectors, the change in grid cells
 // (max / RMS beyond the snap, and the snap alone's max); the times of the snap alone (untangle(false)) and of
-// untangling + snap (of it, the polish), and their ratio; exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
+// untangling + snap (of it, the polish), and their ratio; the untangling's work (optimizations / their Newton iterations /
+// the polish's Newton iterations); exact = is_exactly_seamless / is_exact_integer_grid_map (Gmpq) on the result.
 static int untangle_study(const std::vector<fs::path>& files, int repeat, unsigned threads)
 {
   std::printf("number_of_threads(%u)\n", threads);
-  std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %7s %6s | %s\n", "model", "mode", "#F",
-              "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
-              "snap ms", "unt.+snap", "polish", "ratio", "exact");
+  std::printf("%-34s %5s %7s | %9s %9s %9s %9s %6s | %7s | %5s %6s %17s %9s | %9s %9s %7s %6s %12s | %s\n", "model", "mode",
+              "#F", "input", "snap", "untangled", "end", "forced", "wound", "rings", "moved", "max/RMS cells", "snap max",
+              "snap ms", "unt.+snap", "polish", "ratio", "opt/Newt/pol", "exact");
   int failures = 0;
   for(const fs::path& p : files) {
     Mesh input;
@@ -356,14 +357,16 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat, unsign
       auto counts = [](std::size_t n, std::size_t z) { return std::to_string(n) + "/" + std::to_string(z); };
       const std::string change = best.untangled ? (std::to_string(best.untangle_max_change * best.grid_scale).substr(0, 6) + " / " +
                                                    std::to_string(best.untangle_rms_change * best.grid_scale).substr(0, 6)) : "-";
-      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %7.1f %6.2f | %s%s\n",
+      const std::string work = std::to_string(best.untangle_attempts) + "/" + std::to_string(best.untangle_newton_steps) + "/" +
+                               std::to_string(best.untangle_polish_steps);
+      std::printf("%-34s %5s %7zu | %9s %9s %9s %9s %6zu | %3zu (%zu) | %5d %6zu %17s %9.2e | %9.1f %9.1f %7.1f %6.2f %12s | %s%s\n",
                   name.c_str(), mode_name, best.faces, counts(best.flips_before, best.degenerate_before).c_str(),
                   counts(alone.flips_after_repair, alone.degenerate_after_repair).c_str(),
                   counts(best.flips_after_untangling, best.degenerate_after_untangling).c_str(),
                   counts(best.flips_after_repair, best.degenerate_after_repair).c_str(), best.folds_forced,
                   best.winding_defects.size(), at_pairs, best.untangle_rings, best.untangle_moved_sectors, change.c_str(),
                   alone.snap_max_change * alone.grid_scale, alone.total_ms, best.total_ms, best.untangle_polish_ms,
-                  alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., exact ? "yes" : "NO",
+                  alone.total_ms > 0 ? best.total_ms / alone.total_ms : 0., work.c_str(), exact ? "yes" : "NO",
                   best.separation_trials > 0 ? (", " + std::to_string(best.separation_trials) + " trials in " +
                                                 std::to_string(long(best.separation_ms + 0.5)) + " ms").c_str() : "");
     }
@@ -375,7 +378,10 @@ static int untangle_study(const std::vector<fs::path>& files, int repeat, unsign
               "integer rounding collapsed onto one point; rings = largest k of the regions; max/RMS cells = the change beyond\n"
               "the snap (grid cells: UV units at grid scale 1); snap max = the snap alone's max change; times in ms (min over\n"
               "--repeat runs); polish = the untangling's minimal-change polish, part of unt.+snap; ratio = (untangling +\n"
-              "snap) / snap alone; IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
+              "snap) / snap alone; opt/Newt/pol = the untangling's optimizations (one per ring size tried), their Newton\n"
+              "iterations and the polish's (Snap_report::untangle_attempts, untangle_newton_steps, untangle_polish_steps: each\n"
+              "iteration factors the regions' sparse Hessians or reuses the last factorization, where the time goes);\n"
+              "IGM+m: integer-grid mode with merge_cone_pairs(true)\n"
               "(the collapsed cone pairs made regular points of the field), where it merged pairs; IGM+s: with\n"
               "separate_cone_pairs(true) (the collapsed pairs moved apart, the field kept), where it separated pairs, with the\n"
               "extra snaps that chose the shifts (trials, with their time: Snap_report::separation_ms, a part of unt.+snap); IGM+ms: both.\n");

@@ -400,11 +400,13 @@ static int snap_file(const Options& options, const std::string& in, const std::s
     }
     if(report.untangled)
       std::printf("  untangling: negative / zero-area %zu / %zu -> %zu / %zu (floating point, %d ring(s), %zu sectors moved, "
-                  "max %.3g / RMS %.3g grid cells beyond the snap's %.3g) -> %zu / %zu after its exact snap (%.1f ms)\n",
+                  "max %.3g / RMS %.3g grid cells beyond the snap's %.3g) -> %zu / %zu after its exact snap (%.1f ms: %zu "
+                  "optimization(s) with %zu Newton iterations, polish %zu)\n",
                   report.flips_before_untangling, report.degenerate_before_untangling, report.flips_after_untangling,
                   report.degenerate_after_untangling, report.untangle_rings, report.untangle_moved_sectors,
                   report.untangle_max_change * report.grid_scale, report.untangle_rms_change * report.grid_scale,
-                  report.snap_max_change * report.grid_scale, report.flips_after, report.degenerate_after, report.untangle_ms);
+                  report.snap_max_change * report.grid_scale, report.flips_after, report.degenerate_after, report.untangle_ms,
+                  report.untangle_attempts, report.untangle_newton_steps, report.untangle_polish_steps);
     if(!report.folds.empty())
       std::printf("  %zu UV triangles not positive at the end, %zu of them proven forced by the constraints "
                   "(first: face %zu: %s)\n", report.folds.size(), report.folds_forced, report.folds.front().face,

@@ -191,6 +191,8 @@ def test_untangle_integer_grid_map():
     assert dragged in moved
     assert all(max(abs(v % 17 - 3), abs(v // 17 - 3)) <= 5 for v in moved), sorted(moved)
     assert report["untangle_rings"] <= 2 and 0 < report["untangle_max_change"] < 2.0
+    assert report["untangle_attempts"] >= 1 and report["untangle_newton_steps"] >= report["untangle_attempts"] > 0
+    assert 0 <= report["untangle_polish_steps"] <= 50
     # a bound on the change refuses the untangled map: the fold-overs stay, and the report says so
     _, _, refused = ss.snap(V, F, UV, FUV, integer_grid_map=True, max_untangle_change=1e-3)
     assert refused["untangle_refused"] and refused["flips_after_repair"] > 0

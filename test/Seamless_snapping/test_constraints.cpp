@@ -74,6 +74,7 @@
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
+#include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
 
 #include <CGAL/Gmpq.h>
@@ -1003,6 +1004,10 @@ static void check_untangled(const Mesh& m, UV_map uv, const SS::Snap_report& r, 
   }
   assert(forced == r.folds_forced);
   assert(r.untangle_polish_ms >= 0 && r.untangle_polish_ms <= r.untangle_ms);   // a part of the untangling's time
+  // the work counts: none where the untangling did not run; where it moved the map, some optimization took a step
+  if(!r.untangled) assert(r.untangle_attempts == 0 && r.untangle_newton_steps == 0 && r.untangle_polish_steps == 0);
+  if(r.untangle_moved_sectors > 0) assert(r.untangle_attempts > 0 && r.untangle_newton_steps > 0);
+  assert(r.untangle_polish_steps <= std::size_t(SS::internal::Untangle_options().polish_iterations));
   // a defect is forced iff its vertex is a corner of a forced face, and then its message names such a face
   for(const SS::Winding_defect& w : r.winding_defects) {
     assert(w.forced == bool(forced_corner[w.vertex]));

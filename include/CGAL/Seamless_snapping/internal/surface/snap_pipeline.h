@@ -741,6 +741,9 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   if(s != SUCCESS) return s;
   report.untangle_rings = stats.rings;
   report.untangle_polish_ms = stats.polish_ms;
+  report.untangle_attempts = stats.attempts;
+  report.untangle_newton_steps = stats.newton_steps;
+  report.untangle_polish_steps = stats.polish_steps;
   report.untangle_budget_spent = stats.budget_spent;
   report.untangle_region_vertices = stats.region_vertices;
   const Orientation_counts untangled = count_orientations(face_orientations(S.cm, S.st, y));

@@ -123,7 +123,7 @@ struct Untangle_options
 struct Untangle_statistics
 {
   int rings = 0;                         // largest k tried
-  std::size_t attempts = 0;              // optimizations (all k)
+  std::size_t attempts = 0;              // optimizations of step 1 (one per k and sweep)
   std::size_t region_vertices = 0;       // of the largest region
   std::size_t dimension = 0;             // of the largest null space
   std::size_t outer_iterations = 0, newton_steps = 0, polish_steps = 0;
@@ -252,6 +252,7 @@ private:
     Region_problem problem;
     Status s = build(problem, regions, x, nullptr, stats, message);
     if(s != SUCCESS) return s;
+    ++stats.attempts;
     std::vector<double> w(problem.dimension(), 0.);
     std::vector<std::size_t> bad_before, unused;
     std::vector<double> det_before, det_after;
@@ -300,7 +301,6 @@ private:
   {
     Status s = problem.build(cm_, st_, rows_, incidence_, fc_, refs_, excluded_, regions, x, target, message);
     if(s != SUCCESS) { message = "untangling: null space of the region's constraint rows: " + message; return s; }
-    ++stats.attempts;
     stats.dimension = (std::max)(stats.dimension, problem.dimension());
     for(const std::vector<int>& r : regions) stats.region_vertices = (std::max)(stats.region_vertices, r.size());
     return SUCCESS;
