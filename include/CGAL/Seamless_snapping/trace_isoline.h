@@ -48,8 +48,9 @@ struct Trace_point
   Location location = FACE;                        ///< where the point is on the surface
   typename GT::face_descriptor face;               ///< the face of the segment the point belongs to
   typename GT::halfedge_descriptor halfedge;       ///< `VERTEX`: the halfedge of `face` whose target is the vertex; `EDGE`: the halfedge of `face` on the edge
-  CGAL::Gmpq u, v;                                 ///< exact UV in the chart of `face` (the corner UVs of `face`, as rationals)
-  std::array<CGAL::Gmpq, 3> barycentric;           ///< exact, w.r.t. the targets of `halfedge(face)`, its next, and its next's next
+  CGAL::Gmpq u = internal::tracing::zero_rational(), v = internal::tracing::zero_rational();   ///< exact UV in the chart of `face` (the corner UVs of `face`, as rationals)
+  std::array<CGAL::Gmpq, 3> barycentric = {{internal::tracing::zero_rational(), internal::tracing::zero_rational(),
+                                             internal::tracing::zero_rational()}};   ///< exact, w.r.t. the targets of `halfedge(face)`, its next, and its next's next
   std::array<double, 3> position = {{0, 0, 0}};    ///< the 3D point, barycentric coordinates rounded to double
 };
 
@@ -259,7 +260,7 @@ private:
     if(p.kind == IN_FACE || (p.h != c[0] && p.h != c[1] && p.h != c[2])) return false;
     if(p.kind == AT_VERTEX) {
       if(corner_uv(map_, p.h) != p.uv) return false;
-      for(int i = 0; i < 3; ++i) b[i] = FT(c[i] == p.h ? 1 : 0);
+      for(int i = 0; i < 3; ++i) b[i] = c[i] == p.h ? one_rational() : zero_rational();
       return true;
     }
     const Exact_uv& A = corner_uv(map_, cm.prev[p.h]);   // the side from corner prev(h) to h
@@ -267,8 +268,8 @@ private:
     // t is taken along the coordinate in which A and B differ (lerp_parameter()), so that coordinate of A + t (B - A)
     // is the point's: the point lies on the side iff the other one is too
     const FT t = lerp_parameter(A, B, p.uv);
-    if(A.u != B.u ? p.uv.v - A.v != t * (B.v - A.v) : p.uv.u != A.u) return false;
-    for(int i = 0; i < 3; ++i) b[i] = c[i] == p.h ? t : c[i] == cm.prev[p.h] ? FT(1) - t : FT(0);
+    if(A.u != B.u ? !lerp_scalar_equals(A.v, B.v, t, p.uv.v) : p.uv.u != A.u) return false;
+    for(int i = 0; i < 3; ++i) b[i] = c[i] == p.h ? t : c[i] == cm.prev[p.h] ? one_minus(t) : zero_rational();
     return true;
   }
 
@@ -289,7 +290,7 @@ private:
       internal::tracing::FT b[3];
       if(!place_weights(p, c, b)) {
         Exact_uv cuv[3];
-        for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_.cm, c[i]);
+        for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_, c[i]);
         internal::tracing::barycentric(cuv, p.uv, b);
       }
       for(int i = 0; i < 3; ++i) {

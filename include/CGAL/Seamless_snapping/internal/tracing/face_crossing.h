@@ -41,8 +41,8 @@ struct Face_exit
   Exit_kind kind = NO_PROGRESS;
   int h = -1;          // EXIT_EDGE: halfedge of the face whose edge (source(h) -> target(h)) is crossed;
                        // EXIT_VERTEX: the corner halfedge of the face whose target is the vertex
-  FT lambda;           // EXIT_EDGE: parameter of the exit point from source(h) to target(h)
-  FT along;            // a1 > 0: parametric length of the crossing
+  FT lambda = zero_rational();   // EXIT_EDGE: parameter of the exit point from source(h) to target(h)
+  FT along = zero_rational();    // a1 > 0: parametric length of the crossing
   Exact_uv point;      // P + a1 d_m, in the chart of the face
 };
 
@@ -52,11 +52,11 @@ inline Face_exit cross_face(const Tracing_map& map, int h0, const Exact_uv& p, i
   const Corner_mesh& cm = map.cm;
   const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
   const Exact_uv* uv[3];
-  FT a[3], s[3];
+  FT a[3] = {zero_rational(), zero_rational(), zero_rational()}, s[3] = {zero_rational(), zero_rational(), zero_rational()};   // (copies of one 0: no number made)
   int ss[3];
   for(int i = 0; i < 3; ++i) {
     uv[i] = &corner_uv(map, c[i]);
-    frame_coordinates(m, uv[i]->u - p.u, uv[i]->v - p.v, a[i], s[i]);
+    frame_difference(m, *uv[i], p, a[i], s[i]);
     ss[i] = CGAL::sign(s[i]);
   }
   Face_exit best;
@@ -66,8 +66,8 @@ inline Face_exit cross_face(const Tracing_map& map, int h0, const Exact_uv& p, i
     }
     const int i = (j + 2) % 3;                 // the edge of c[j] runs from corner c[i] to corner c[j]
     if(ss[i] * ss[j] < 0) {
-      const FT lambda = s[i] / (s[i] - s[j]);
-      const FT along = a[i] + lambda * (a[j] - a[i]);
+      const FT lambda = crossing_parameter(s[i], s[j]);
+      const FT along = lerp_scalar(a[i], a[j], lambda);
       if(CGAL::is_positive(along) && (best.kind == NO_PROGRESS || along > best.along)) {
         best.kind = EXIT_EDGE; best.h = c[j]; best.along = along; best.lambda = lambda;
       }
@@ -80,8 +80,15 @@ inline Face_exit cross_face(const Tracing_map& map, int h0, const Exact_uv& p, i
 
 inline Exact_uv rotate(int k, const Exact_uv& x)
 {
+  const Quarter_turn R(k);                                  // (R^k x)_c = +- x_col: a number made only for a sign
+  Gmp_rational* t = scratch_rationals();
   Exact_uv r;
-  rotate_quarter_turns(k, x.u, x.v, r.u, r.v);
+  for(int c = 0; c < 2; ++c) {
+    const FT& xc = R.col[c] == 0 ? x.u : x.v;
+    FT& rc = c == 0 ? r.u : r.v;
+    if(R.sign[c] > 0) rc = xc;
+    else { mpq_neg(t[0].q, xc.mpq()); rc = FT(t[0].q); }
+  }
   return r;
 }
 
@@ -94,11 +101,36 @@ struct Edge_transition
   // R^0 x + 0 (no rational arithmetic: most transitions of a patch layout are the identity)
   bool is_identity() const { return k == 0 && CGAL::is_zero(t.u) && CGAL::is_zero(t.v); }
   bool operator==(const Edge_transition& o) const { return k == o.k && t == o.t; }
+  // out = coordinate c (0: u, 1: v) of R^k x + t, in place: t_c +- x_col (chart_geometry.h)
+  void apply_coordinate(int c, const Exact_uv& x, mpq_t out) const
+  {
+    const Quarter_turn R(k);
+    const FT& xc = R.col[c] == 0 ? x.u : x.v;
+    const FT& tc = c == 0 ? t.u : t.v;
+    if(R.sign[c] > 0) mpq_add(out, tc.mpq(), xc.mpq());
+    else mpq_sub(out, tc.mpq(), xc.mpq());
+  }
   Exact_uv apply(const Exact_uv& x) const
   {
     if(is_identity()) return x;
-    Exact_uv r = rotate(k, x);
-    return Exact_uv{r.u + t.u, r.v + t.v};
+    Gmp_rational* s = scratch_rationals();
+    Exact_uv r;
+    for(int c = 0; c < 2; ++c) {
+      apply_coordinate(c, x, s[0].q);
+      (c == 0 ? r.u : r.v) = FT(s[0].q);
+    }
+    return r;
+  }
+  // apply(x) == B.apply(y), with no number made
+  bool agrees(const Exact_uv& x, const Edge_transition& B, const Exact_uv& y) const
+  {
+    Gmp_rational* s = scratch_rationals();
+    for(int c = 0; c < 2; ++c) {
+      if(is_identity()) mpq_set(s[0].q, (c == 0 ? x.u : x.v).mpq()); else apply_coordinate(c, x, s[0].q);
+      if(B.is_identity()) mpq_set(s[1].q, (c == 0 ? y.u : y.v).mpq()); else B.apply_coordinate(c, y, s[1].q);
+      if(!mpq_equal(s[0].q, s[1].q)) return false;
+    }
+    return true;
   }
 };
 
@@ -143,13 +175,13 @@ inline Edge_transfer transfer_through_edge(const Tracing_map& map, int h, const 
   // the edge in face(o), from source(h) (corner o) to target(h) (corner prev(o))
   const Exact_uv& A = corner_uv(map, o);
   const Exact_uv& B = corner_uv(map, cm.prev[o]);
-  FT aA, sA, aB, sB;
-  frame_coordinates(out.m, A.u - q.u, A.v - q.v, aA, sA);
-  frame_coordinates(out.m, B.u - q.u, B.v - q.v, aB, sB);
+  FT aA = zero_rational(), sA = zero_rational(), aB = zero_rational(), sB = zero_rational();
+  frame_difference(out.m, A, q, aA, sA);
+  frame_difference(out.m, B, q, aB, sB);
   const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
   if(gA * gB < 0) {
     out.kind = TRANSFER_EDGE;
-    out.point = lerp(A, B, sA / (sA - sB));
+    out.point = lerp(A, B, crossing_parameter(sA, sB));
     out.exact = out.point == q;
   } else if(gA == 0 && gB != 0) {
     out.kind = TRANSFER_VERTEX; out.corner = o; out.point = A; out.exact = A == q;

@@ -41,7 +41,7 @@ struct Layout_vertex
 {
   Location_kind kind = AT_VERTEX;
   int vertex = -1, halfedge = -1, face = -1;
-  FT t;
+  FT t = zero_rational();
   Exact_uv uv;
 };
 
@@ -137,14 +137,14 @@ private:
   FT edge_parameter(int h, const Exact_uv& p) const
   {
     const FT t = lerp_parameter(corner_uv(map_, cm_.prev[h]), corner_uv(map_, h), p);
-    return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : FT(1) - t;
+    return cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h ? t : one_minus(t);
   }
 
   // where the point p (box `box`) of the closed UV triangle of face f lies
   Place place(int f, const Exact_uv& p, const Uv_box& box) const
   {
     const Raw_point r = locate_in_face(cm_, map_.face_halfedge[std::size_t(f)], p, box);
-    return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : FT(0), box};
+    return Place{r.kind, r.h, r.kind == ON_EDGE ? edge_parameter(r.h, p) : zero_rational(), box};
   }
 
   // the Layout_vertex of the point of edge(q.h) at parameter q.t, or -1; k: the index of q.t in the edge's parameters,
@@ -194,7 +194,7 @@ private:
       for(std::size_t k = 0; k < ts.size(); ++k) {           // strictly inside the side: its place is known
         const std::size_t i = along ? k : ts.size() - 1 - k;
         const FT& t_edge = ts[i];
-        const Exact_uv p = lerp(A, B, along ? t_edge : FT(1) - t_edge);
+        const Exact_uv p = lerp(A, B, along ? t_edge : one_minus(t_edge));
         const Uv_box p_box(p);
         P.vertex.push_back(vertex_id(f, p, Place{ON_EDGE, h, t_edge, p_box}, std::ptrdiff_t(i)));
         P.uv.push_back(p);
@@ -323,6 +323,10 @@ private:
     }
     Layout_polygon A, B;
     A.face = B.face = f;
+    for(Layout_polygon* X : {&A, &B}) {                        // corners i..j and j..i
+      const std::size_t m = (X == &A ? j + n - i : i + n - j) % n + 1;
+      X->vertex.reserve(m); X->uv.reserve(m); X->box.reserve(m); X->arc.reserve(m);
+    }
     for(std::size_t k = i; ; k = (k + 1) % n) {
       A.vertex.push_back(P.vertex[k]); A.uv.push_back(P.uv[k]); A.box.push_back(P.box[k]); A.arc.push_back(k == j ? 1 : P.arc[k]);
       if(k == j) break;

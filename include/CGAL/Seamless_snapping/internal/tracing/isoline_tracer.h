@@ -49,7 +49,8 @@ inline Raw_point locate_in_face(const Corner_mesh& cm, int h, const Exact_uv& x,
 {
   const int c[3] = {h, cm.next[h], cm.next[cm.next[h]]};   // the rationals only where x's box X cannot decide
   for(int i = 0; i < 3; ++i)
-    if(X.may_be(cm.u[c[i]], cm.v[c[i]]) && corner_uv(cm, c[i]) == x) return Raw_point{AT_VERTEX, c[i], x};
+    if(X.may_be(cm.u[c[i]], cm.v[c[i]]) && equals_double(x.u, cm.u[c[i]]) && equals_double(x.v, cm.v[c[i]]))
+      return Raw_point{AT_VERTEX, c[i], x};
   for(int j = 0; j < 3; ++j)
     if(corner_side_sign(cm, cm.prev[c[j]], c[j], x, X) == 0) return Raw_point{ON_EDGE, c[j], x};
   return Raw_point{IN_FACE, -1, x};
@@ -122,7 +123,7 @@ struct Trace_run
   Exact_uv start_p;
   std::size_t steps = 0;
   double length = 0;          // parametric length, rounded (for reports only)
-  FT time;                    // parametric length at p, exact (the clock of the motorcycle graph)
+  FT time = zero_rational();  // parametric length at p, exact (the clock of the motorcycle graph)
   // the next event, planned in the current face (Isoline_stepper::plan()): the exit `ex`, or a stop at `stop_at`
   // along the direction (reason stop_end; EARLIER_TRACE: on the trail of `hit`, which passes there at `hit_time`)
   Face_exit ex;
@@ -130,7 +131,7 @@ struct Trace_run
   bool meet = false;          // the stop is a meeting inside the face or on an edge: stop or go on is decided there
   bool vertex_meeting = false;// arrived at the vertex target(face_h) with direction m: stop or go on is decided there
   int event_phase = 0;        // 1: a meeting, decided after the other events at its time (all arrivals known)
-  FT stop_at, hit_time, event_time;
+  FT stop_at = zero_rational(), hit_time = zero_rational(), event_time = zero_rational();
   FT passed_until = FT(-1);   // meetings up to this time are decided (it went on)
   Trace_end stop_end = Trace_end::LENGTH_LIMIT;
   int hit = -1;
@@ -269,11 +270,12 @@ public:
       r.stops = true; r.stop_at = a; r.stop_end = e; r.hit = trace; r.hit_time = trace_time; r.meet = meet;
     };
     auto on_line = [&](const Exact_uv& x, FT& a) {
-      FT s;
-      frame_coordinates(r.m, x.u - r.p.u, x.v - r.p.v, a, s);
-      return CGAL::is_zero(s);
+      if(side_sign(r.m, x, r.p) != 0) return false;
+      FT s = zero_rational();
+      frame_difference(r.m, x, r.p, a, s);
+      return true;
     };
-    FT a;
+    FT a = zero_rational();
     if(target && target->face == f && on_line(target->uv, a)) consider(a, Trace_end::TARGET, -1, FT(0), false, false);
     if(r.start_face == f && r.start_m == r.m && on_line(r.start_p, a) && !r.at_start)
       consider(a, Trace_end::CLOSED_LOOP, -1, FT(0), false, false);
@@ -449,11 +451,11 @@ private:
     std::vector<std::pair<int, int> > others;                  // (heading relative to r's, trace)
     auto scan = [&](int f, const Exact_uv& x, int k) {          // k: the rotation from r's chart to f's
       for(const Trail_registry::Stored& t : trails->per_face[std::size_t(f)]) {
-        if(t.trace == r.id) continue;
-        FT a, side, len, side_b;
-        frame_coordinates(t.m, x.u - t.a.u, x.v - t.a.v, a, side);
-        if(!CGAL::is_zero(side) || CGAL::is_negative(a)) continue;
-        frame_coordinates(t.m, t.b.u - t.a.u, t.b.v - t.a.v, len, side_b);
+        if(t.trace == r.id || side_sign(t.m, x, t.a) != 0) continue;
+        FT a = zero_rational(), side = zero_rational(), len = zero_rational(), side_b = zero_rational();
+        frame_difference(t.m, x, t.a, a, side);
+        if(CGAL::is_negative(a)) continue;
+        frame_difference(t.m, t.b, t.a, len, side_b);
         if(len < a || !trails->reached(t.trace, t.time + a)) continue;
         if(t.time + a < T) { r.hit = t.trace; r.hit_time = t.time + a; return false; }
         const std::pair<int, int> o(direction_mod4(t.m - k - r.m), t.trace);
@@ -500,10 +502,11 @@ private:
     const bool self = t.trace == r.id;
     if(self && !(t.time < r.time)) return;                     // its path now
     const bool t_ended = trails->ended[std::size_t(t.trace)] != 0;
-    FT aA, sA, aB, sB;
-    frame_coordinates(r.m, t.a.u - r.p.u, t.a.v - r.p.v, aA, sA);
-    frame_coordinates(r.m, t.b.u - r.p.u, t.b.v - r.p.v, aB, sB);
-    const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
+    const int gA = side_sign(r.m, t.a, r.p), gB = side_sign(r.m, t.b, r.p);
+    if(gA * gB > 0) return;                                    // t's path on one side of r's line
+    FT aA = zero_rational(), sA = zero_rational(), aB = zero_rational(), sB = zero_rational();
+    frame_difference(r.m, t.a, r.p, aA, sA);
+    frame_difference(r.m, t.b, r.p, aB, sB);
     // decides at r's parameter x, where t's trace passes at time tt (r at time tr): see plan()
     auto meet = [&](const FT& x, const FT& tt, bool at_once) {   // at_once: along t from x = 0 on
       if(t_ended && trails->end_time[std::size_t(t.trace)] < tt) return;      // t's trace stopped before
@@ -534,12 +537,11 @@ private:
       meet(x, t.time + (aA - x), CGAL::is_positive(x1));
       return;
     }
-    if(gA * gB > 0) return;
-    const FT x = aA + (sA / (sA - sB)) * (aB - aA);
+    const FT x = lerp_scalar(aA, aB, crossing_parameter(sA, sB));
     if(CGAL::is_negative(x) || along < x) return;
     const Exact_uv X = advance(r.p, r.m, x);
-    FT b, side;
-    frame_coordinates(t.m, X.u - t.a.u, X.v - t.a.v, b, side);
+    FT b = zero_rational(), side = zero_rational();
+    frame_difference(t.m, X, t.a, b, side);
     meet(x, t.time + b, false);
   }
 

@@ -65,14 +65,7 @@ inline Edge_transition compose(const Edge_transition& A, const Edge_transition& 
 // 240,796 polygons of the input faces that traces split took 1217 ms so.
 inline FT polygon_area(const std::vector<Exact_uv>& p)
 {
-  struct Rational
-  {
-    mpq_t q;
-    Rational() { mpq_init(q); }
-    ~Rational() { mpq_clear(q); }
-    Rational(const Rational&) = delete;
-    Rational& operator=(const Rational&) = delete;
-  } twice, term, other;
+  Gmp_rational twice, term, other;
   for(std::size_t i = 0; i < p.size(); ++i) {
     const Exact_uv& a = p[i];
     const Exact_uv& b = p[(i + 1) % p.size()];
@@ -223,15 +216,14 @@ private:
     const Layout_polygon& P = polygon(mesh_.face(h));
     return P.box[corner_of(P, int(mesh_.target(h)))];
   }
-  Exact_uv in_patch(Layout_halfedge_index h) const { return to_patch_[std::size_t(mesh_.face(h))].apply(corner(h)); }
-  // in_patch(g) == in_patch(h); where both faces have the same transition into the patch, the corners themselves are
-  // compared (a transition is one-to-one), without applying it
+  // the corners of g and h are one point in the chart of their patch; where both faces have the same transition into the
+  // patch, the corners themselves are compared (a transition is one-to-one), without applying it
   bool agree(Layout_halfedge_index g, Layout_halfedge_index h) const
   {
     const Edge_transition& A = to_patch_[std::size_t(mesh_.face(g))];
     const Edge_transition& B = to_patch_[std::size_t(mesh_.face(h))];
     if(A == B) return corner(g) == corner(h);
-    return in_patch(g) == in_patch(h);
+    return A.agrees(corner(g), B, corner(h));
   }
 
   void open_euler_characteristics()
@@ -275,8 +267,13 @@ private:
       return equal(x.u, X.u, b[0], B[0]) || equal(x.u, X.u, b[1], B[1]) || equal(x.v, X.v, b[2], B[2]) ||
              equal(x.v, X.v, b[3], B[3]);
     }
-    const Exact_uv x = in_patch(h);
-    return x.u == b[0] || x.u == b[1] || x.v == b[2] || x.v == b[3];
+    const Edge_transition& T = to_patch_[std::size_t(mesh_.face(h))];   // x = T(corner(h)), coordinate by coordinate
+    Gmp_rational* s = scratch_rationals();
+    for(int c = 0; c < 2; ++c) {
+      T.apply_coordinate(c, corner(h), s[0].q);
+      if(mpq_equal(s[0].q, b[std::size_t(2 * c)].mpq()) || mpq_equal(s[0].q, b[std::size_t(2 * c + 1)].mpq())) return true;
+    }
+    return false;
   }
 
   // the transition from the chart of input face(g) into the chart of input face(opposite(g)), g a
@@ -358,7 +355,7 @@ private:
         a = T.apply(Exact_uv{*x[0], *x[2]});
         z = T.apply(Exact_uv{*x[1], *x[3]});
         x = {{&(std::min)(a.u, z.u), &(std::max)(a.u, z.u), &(std::min)(a.v, z.v), &(std::max)(a.v, z.v)}};
-        for(int k = 0; k < 4; ++k) X[std::size_t(k)] = CGAL::to_interval(*x[std::size_t(k)]);
+        for(int k = 0; k < 4; ++k) X[std::size_t(k)] = interval_of(*x[std::size_t(k)]);
       }
       const std::size_t p = std::size_t(get(patch_, f));
       std::array<FT, 4>& b = box_[p];
