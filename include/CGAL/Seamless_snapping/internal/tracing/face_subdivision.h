@@ -314,6 +314,14 @@ private:
     const std::size_t n = P.uv.size();
     const std::size_t i = std::size_t(std::find(P.vertex.begin(), P.vertex.end(), ip) - P.vertex.begin());
     const std::size_t j = std::size_t(std::find(P.vertex.begin(), P.vertex.end(), iq) - P.vertex.begin());
+    // an end that add_corner() did not make a corner of the piece: exact signs never leave one so, but a floating-point
+    // environment that breaks interval arithmetic can (valgrind, which ignores the rounding mode CGAL sets, did, and
+    // then read past the piece's corners); the segment is counted as not placed, nothing is read out of range
+    if(i == n || j == n) {
+      if(out_.unplaced++ == 0)
+        out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + " whose end is no corner of its piece";
+      return true;
+    }
     if(!inside) {              // along the boundary: mark the straight way from i to j (forward or backward)
       bool straight = true;
       for(std::size_t k = (i + 1) % n; k != j && straight; k = (k + 1) % n)
