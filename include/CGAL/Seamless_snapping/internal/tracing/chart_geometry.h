@@ -109,16 +109,25 @@ inline Gmp_rational* scratch_rationals()
   return t;
 }
 
+// t[0] = (b - a) x (c - a) (cross) or (b - a) . (c - a), exactly, from the coordinates' rationals; t[0..2] are written
+// (t: scratch_rationals(); the coordinates may be others of its slots)
+inline void cross_or_dot_in(mpq_srcptr au, mpq_srcptr av, mpq_srcptr bu, mpq_srcptr bv, mpq_srcptr cu, mpq_srcptr cv,
+                            bool cross, Gmp_rational* t)
+{
+  mpq_sub(t[0].q, bu, au);                                 // cross: (bu - au)(cv - av) - (bv - av)(cu - au)
+  mpq_sub(t[1].q, cross ? cv : cu, cross ? av : au);       // dot:   (bu - au)(cu - au) + (bv - av)(cv - av)
+  mpq_mul(t[0].q, t[0].q, t[1].q);
+  mpq_sub(t[1].q, bv, av);
+  mpq_sub(t[2].q, cross ? cu : cv, cross ? au : av);
+  mpq_mul(t[1].q, t[1].q, t[2].q);
+  if(cross) mpq_sub(t[0].q, t[0].q, t[1].q);
+  else mpq_add(t[0].q, t[0].q, t[1].q);
+}
+
 // t[0] = (b - a) x (c - a), exactly (t: scratch_rationals())
 inline void orientation_determinant_in(const Exact_uv& a, const Exact_uv& b, const Exact_uv& c, Gmp_rational* t)
 {
-  mpq_sub(t[0].q, b.u.mpq(), a.u.mpq());
-  mpq_sub(t[1].q, c.v.mpq(), a.v.mpq());
-  mpq_mul(t[0].q, t[0].q, t[1].q);
-  mpq_sub(t[1].q, b.v.mpq(), a.v.mpq());
-  mpq_sub(t[2].q, c.u.mpq(), a.u.mpq());
-  mpq_mul(t[1].q, t[1].q, t[2].q);
-  mpq_sub(t[0].q, t[0].q, t[1].q);
+  cross_or_dot_in(a.u.mpq(), a.v.mpq(), b.u.mpq(), b.v.mpq(), c.u.mpq(), c.v.mpq(), true, t);
 }
 
 // twice the signed area of the UV triangle (a, b, c)
@@ -277,14 +286,8 @@ inline int direction_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b,
     if(d.inf() > 0) return 1;
     if(d.sup() < 0) return -1;
   }
-  Gmp_rational* t = scratch_rationals();                // (b.u - a.u) (c.u - a.u) + (b.v - a.v) (c.v - a.v), in place
-  mpq_sub(t[0].q, b.u.mpq(), a.u.mpq());
-  mpq_sub(t[1].q, c.u.mpq(), a.u.mpq());
-  mpq_mul(t[0].q, t[0].q, t[1].q);
-  mpq_sub(t[1].q, b.v.mpq(), a.v.mpq());
-  mpq_sub(t[2].q, c.v.mpq(), a.v.mpq());
-  mpq_mul(t[1].q, t[1].q, t[2].q);
-  mpq_add(t[0].q, t[0].q, t[1].q);
+  Gmp_rational* t = scratch_rationals();
+  cross_or_dot_in(a.u.mpq(), a.v.mpq(), b.u.mpq(), b.v.mpq(), c.u.mpq(), c.v.mpq(), false, t);
   return mpq_sgn(t[0].q);
 }
 
@@ -294,17 +297,11 @@ inline int corner_side_sign(const Corner_mesh& cm, int a, int b, const Exact_uv&
   const Uv_box A(cm.u[a], cm.v[a]), B(cm.u[b], cm.v[b]);
   const int s = filtered_orientation_sign(A.u, A.v, B.u, B.v, C.u, C.v);
   if(s != 0) return s;
-  Gmp_rational* t = scratch_rationals();                // (B - A) x (c - A), A and B the corners' doubles, in place
+  Gmp_rational* t = scratch_rationals();                // the corners' doubles as rationals in t[3..6]
   mpq_set_d(t[3].q, cm.u[a]); mpq_set_d(t[4].q, cm.v[a]);
   mpq_set_d(t[5].q, cm.u[b]); mpq_set_d(t[6].q, cm.v[b]);
-  mpq_sub(t[0].q, t[5].q, t[3].q);
-  mpq_sub(t[1].q, c.v.mpq(), t[4].q);
-  mpq_mul(t[0].q, t[0].q, t[1].q);
-  mpq_sub(t[1].q, t[6].q, t[4].q);
-  mpq_sub(t[2].q, c.u.mpq(), t[3].q);
-  mpq_mul(t[1].q, t[1].q, t[2].q);
-  const int d = mpq_cmp(t[0].q, t[1].q);
-  return (d > 0) - (d < 0);
+  cross_or_dot_in(t[3].q, t[4].q, t[5].q, t[6].q, c.u.mpq(), c.v.mpq(), true, t);
+  return mpq_sgn(t[0].q);
 }
 
 // sign of the UV orientation of face(h) (corners prev(h), h, next(h)): +1 counter-clockwise
