@@ -287,7 +287,8 @@ private:
     const halfedge_descriptor hf = halfedge(out.face, tm_);
     const int c[3] = {index(hf), index(next(hf, tm_)), index(next(next(hf, tm_), tm_))};
     if(internal::tracing::face_orientation(map_.cm, c[0]) != 0) {
-      internal::tracing::FT b[3];
+      internal::tracing::FT b[3] = {internal::tracing::zero_rational(), internal::tracing::zero_rational(),
+                                    internal::tracing::zero_rational()};
       if(!place_weights(p, c, b)) {
         Exact_uv cuv[3];
         for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_, c[i]);

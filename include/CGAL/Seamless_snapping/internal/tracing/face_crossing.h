@@ -171,17 +171,14 @@ inline Edge_transfer transfer_through_edge(const Tracing_map& map, int h, const 
   const int o = cm.opp[h];
   Edge_transfer out;
   out.m = direction_mod4(m + map.rot.k[h]);
-  const Exact_uv q = edge_transition(map, h, lambda > FT(1, 2)).apply(x);
+  const Exact_uv q = edge_transition(map, h, mpq_cmp_ui(lambda.mpq(), 1, 2) > 0).apply(x);   // lambda > 1/2
   // the edge in face(o), from source(h) (corner o) to target(h) (corner prev(o))
   const Exact_uv& A = corner_uv(map, o);
   const Exact_uv& B = corner_uv(map, cm.prev[o]);
-  FT aA = zero_rational(), sA = zero_rational(), aB = zero_rational(), sB = zero_rational();
-  frame_difference(out.m, A, q, aA, sA);
-  frame_difference(out.m, B, q, aB, sB);
-  const int gA = CGAL::sign(sA), gB = CGAL::sign(sB);
+  const int gA = side_sign(out.m, A, q), gB = side_sign(out.m, B, q);   // A and B relative to the line of q
   if(gA * gB < 0) {
     out.kind = TRANSFER_EDGE;
-    out.point = lerp(A, B, crossing_parameter(sA, sB));
+    out.point = lerp(A, B, crossing_parameter(side_difference(out.m, A, q), side_difference(out.m, B, q)));
     out.exact = out.point == q;
   } else if(gA == 0 && gB != 0) {
     out.kind = TRANSFER_VERTEX; out.corner = o; out.point = A; out.exact = A == q;

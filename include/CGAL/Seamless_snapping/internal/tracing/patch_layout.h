@@ -97,6 +97,10 @@ inline bool refined_mesh(const Tracing_map& map, const Face_subdivision& S,
   typedef Layout_mesh::Point Point_3;
   const Corner_mesh& cm = map.cm;
   mesh.clear();
+  std::size_t corners = 0;                                 // every corner is a halfedge: the mesh's sizes known, its
+  for(const Layout_polygon& P : S.polygons) corners += P.vertex.size();   // arrays never grow (and copy) while built
+  mesh.reserve(Layout_mesh::size_type(S.vertices.size()), Layout_mesh::size_type(corners / 2 + 1),
+               Layout_mesh::size_type(S.polygons.size()));
   for(const Layout_vertex& lv : S.vertices) {
     std::array<double, 3> p = {{0, 0, 0}};
     if(lv.kind == AT_VERTEX) p = position[std::size_t(lv.vertex)];
