@@ -180,8 +180,11 @@ struct Snap_report
   int untangle_rings = 0;              ///< face rings around the fold-overs that the last attempt moved (1, 2, 4, 8 or 16)
   std::size_t untangle_region_vertices = 0;  ///< vertices of that region
   std::size_t untangle_moved_sectors = 0;    ///< sectors whose UV the untangling changed (with respect to the exact snap of the input)
-  std::size_t untangle_attempts = 0;   ///< optimizations of the untangling's first step: one per ring size tried (the regions of that size together)
-  std::size_t untangle_newton_steps = 0;     ///< Newton iterations of those optimizations (each: the gradient, a sparse LDL^T factorization or the last one again, a line search, in every region still stepping); where the untangling's time goes
+  /// optimizations of the untangling's first step: one per ring size tried (the regions of that size together)
+  std::size_t untangle_attempts = 0;
+  /// Newton iterations of those optimizations (each: the gradient, a sparse LDL^T factorization or the last one again,
+  /// a line search, in every region still stepping): where the untangling's time goes
+  std::size_t untangle_newton_steps = 0;
   std::size_t untangle_polish_steps = 0;     ///< Newton iterations of the minimal-change polish (at most 50)
   double grid_scale = 1;               ///< UV units to grid cells: a change of `c` UV units is `c * grid_scale` grid cells
   double untangle_max_change = 0;      ///< max |u_untangled - u_snap| over all UV coordinates, UV units (the move beyond the snap)
@@ -282,7 +285,8 @@ struct Snap_report
     o << "  \"untangle_budget_spent\": " << (untangle_budget_spent ? "true" : "false") << ",\n";
     num("untangle_rings", double(untangle_rings)); num("untangle_region_vertices", double(untangle_region_vertices));
     num("untangle_moved_sectors", double(untangle_moved_sectors)); num("untangle_attempts", double(untangle_attempts));
-    num("untangle_newton_steps", double(untangle_newton_steps)); num("untangle_polish_steps", double(untangle_polish_steps));
+    num("untangle_newton_steps", double(untangle_newton_steps));
+    num("untangle_polish_steps", double(untangle_polish_steps));
     num("grid_scale", grid_scale);
     num("untangle_max_change", untangle_max_change); num("untangle_rms_change", untangle_rms_change);
     num("untangle_max_change_cells", untangle_max_change * grid_scale);

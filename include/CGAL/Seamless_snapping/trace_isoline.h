@@ -48,9 +48,11 @@ struct Trace_point
   Location location = FACE;                        ///< where the point is on the surface
   typename GT::face_descriptor face;               ///< the face of the segment the point belongs to
   typename GT::halfedge_descriptor halfedge;       ///< `VERTEX`: the halfedge of `face` whose target is the vertex; `EDGE`: the halfedge of `face` on the edge
-  CGAL::Gmpq u = internal::tracing::zero_rational(), v = internal::tracing::zero_rational();   ///< exact UV in the chart of `face` (the corner UVs of `face`, as rationals)
+  /// exact UV in the chart of `face` (the corner UVs of `face`, as rationals)
+  CGAL::Gmpq u = internal::tracing::zero_rational(), v = internal::tracing::zero_rational();
+  /// exact, w.r.t. the targets of `halfedge(face)`, its next, and its next's next
   std::array<CGAL::Gmpq, 3> barycentric = {{internal::tracing::zero_rational(), internal::tracing::zero_rational(),
-                                             internal::tracing::zero_rational()}};   ///< exact, w.r.t. the targets of `halfedge(face)`, its next, and its next's next
+                                             internal::tracing::zero_rational()}};
   std::array<double, 3> position = {{0, 0, 0}};    ///< the 3D point, barycentric coordinates rounded to double
 };
 

@@ -83,7 +83,10 @@ inline int direction_code_of_signs(int m, int su, int sv)
 }
 
 // direction code (0..7) of the vector (xu, xv) relative to m; -1 for the zero vector
-inline int direction_code(int m, const FT& xu, const FT& xv) { return direction_code_of_signs(m, CGAL::sign(xu), CGAL::sign(xv)); }
+inline int direction_code(int m, const FT& xu, const FT& xv)
+{
+  return direction_code_of_signs(m, CGAL::sign(xu), CGAL::sign(xv));
+}
 
 // A GMP rational for intermediate values computed in place (mpq_sub(t, ...) into it): it allocates only when its limbs
 // grow, where a CGAL::Gmpq expression makes a new number per operation (three allocations each: the handle's
@@ -169,9 +172,8 @@ inline FT side_difference(int m, const Exact_uv& x, const Exact_uv& p)
   return FT(t[0].q);
 }
 
-// (along, side) of the vector x - p relative to direction m (header), each made once (in place: no number for the
-// difference, none for a negation); along: du, dv, -du, -dv for m = 0..3
-inline void frame_difference(int m, const Exact_uv& x, const Exact_uv& p, FT& along, FT& side)
+// the along coordinate of the vector x - p relative to direction m (header), made once: du, dv, -du, -dv for m = 0..3
+inline FT along_difference(int m, const Exact_uv& x, const Exact_uv& p)
 {
   const int q = direction_mod4(m);
   const FT& a = q % 2 == 0 ? x.u : x.v;
@@ -179,11 +181,18 @@ inline void frame_difference(int m, const Exact_uv& x, const Exact_uv& p, FT& al
   Gmp_rational* t = scratch_rationals();
   if(q >= 2) mpq_sub(t[0].q, b.mpq(), a.mpq());
   else mpq_sub(t[0].q, a.mpq(), b.mpq());
-  along = FT(t[0].q);
+  return FT(t[0].q);
+}
+
+// (along, side) of the vector x - p relative to direction m, each made once (in place: no number for the difference,
+// none for a negation)
+inline void frame_difference(int m, const Exact_uv& x, const Exact_uv& p, FT& along, FT& side)
+{
+  along = along_difference(m, x, p);
   side = side_difference(m, x, p);
 }
 
-// the sign of the side coordinate of x - p relative to direction m (frame_difference()'s `side`): one comparison
+// the sign of side_difference(m, x, p): one comparison, no number made
 inline int side_sign(int m, const Exact_uv& x, const Exact_uv& p)
 {
   const int q = direction_mod4(m);                         // side: dv, -du, -dv, du

@@ -52,7 +52,8 @@ inline Face_exit cross_face(const Tracing_map& map, int h0, const Exact_uv& p, i
   const Corner_mesh& cm = map.cm;
   const int c[3] = {h0, cm.next[h0], cm.next[cm.next[h0]]};
   const Exact_uv* uv[3];
-  FT a[3] = {zero_rational(), zero_rational(), zero_rational()}, s[3] = {zero_rational(), zero_rational(), zero_rational()};   // (copies of one 0: no number made)
+  const FT& z = zero_rational();                // copies of one 0, assigned below (no number made)
+  FT a[3] = {z, z, z}, s[3] = {z, z, z};
   int ss[3];
   for(int i = 0; i < 3; ++i) {
     uv[i] = &corner_uv(map, c[i]);

@@ -271,8 +271,7 @@ public:
     };
     auto on_line = [&](const Exact_uv& x, FT& a) {
       if(side_sign(r.m, x, r.p) != 0) return false;
-      FT s = zero_rational();
-      frame_difference(r.m, x, r.p, a, s);
+      a = along_difference(r.m, x, r.p);
       return true;
     };
     FT a = zero_rational();
@@ -452,11 +451,9 @@ private:
     auto scan = [&](int f, const Exact_uv& x, int k) {          // k: the rotation from r's chart to f's
       for(const Trail_registry::Stored& t : trails->per_face[std::size_t(f)]) {
         if(t.trace == r.id || side_sign(t.m, x, t.a) != 0) continue;
-        FT a = zero_rational(), side = zero_rational(), len = zero_rational(), side_b = zero_rational();
-        frame_difference(t.m, x, t.a, a, side);
+        const FT a = along_difference(t.m, x, t.a);
         if(CGAL::is_negative(a)) continue;
-        frame_difference(t.m, t.b, t.a, len, side_b);
-        if(len < a || !trails->reached(t.trace, t.time + a)) continue;
+        if(along_difference(t.m, t.b, t.a) < a || !trails->reached(t.trace, t.time + a)) continue;
         if(t.time + a < T) { r.hit = t.trace; r.hit_time = t.time + a; return false; }
         const std::pair<int, int> o(direction_mod4(t.m - k - r.m), t.trace);
         if(t.time + a == T && std::find(others.begin(), others.end(), o) == others.end()) others.push_back(o);
@@ -540,9 +537,7 @@ private:
     const FT x = lerp_scalar(aA, aB, crossing_parameter(sA, sB));
     if(CGAL::is_negative(x) || along < x) return;
     const Exact_uv X = advance(r.p, r.m, x);
-    FT b = zero_rational(), side = zero_rational();
-    frame_difference(t.m, X, t.a, b, side);
-    meet(x, t.time + b, false);
+    meet(x, t.time + along_difference(t.m, X, t.a), false);
   }
 
   void push_segment(Trace_run& r, int f, const Raw_point& to) const

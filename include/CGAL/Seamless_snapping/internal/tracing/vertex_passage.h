@@ -55,7 +55,8 @@ struct Vertex_fan
 inline int code_of_edge(const Corner_mesh& cm, int m, int corner, int other)
 {
   auto sign_of_difference = [](double a, double b) { return int(a > b) - int(a < b); };   // of a - b, exactly
-  return direction_code_of_signs(m, sign_of_difference(cm.u[other], cm.u[corner]), sign_of_difference(cm.v[other], cm.v[corner]));
+  return direction_code_of_signs(m, sign_of_difference(cm.u[other], cm.u[corner]),
+                                 sign_of_difference(cm.v[other], cm.v[corner]));
 }
 
 // The fan of target(h0) with the reference direction m0 in the chart of face(h0); lifted so that
