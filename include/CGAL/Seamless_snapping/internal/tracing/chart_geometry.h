@@ -60,9 +60,6 @@ struct Exact_uv
   bool operator!=(const Exact_uv& o) const { return !(*this == o); }
 };
 
-// UV of the corner (target(h), face(h)), exactly
-inline Exact_uv corner_uv(const Corner_mesh& cm, int h) { return Exact_uv{FT(cm.u[h]), FT(cm.v[h])}; }
-
 inline int direction_mod4(int m) { return ((m % 4) + 4) % 4; }
 
 // direction code (0..7) relative to m of a vector whose components have the signs su, sv; -1 for the zero vector
@@ -160,28 +157,27 @@ inline Exact_uv advance(const Exact_uv& p, int m, const FT& a)
   return q % 2 == 0 ? Exact_uv{FT(t[0].q), p.v} : Exact_uv{p.u, FT(t[0].q)};
 }
 
-// the side coordinate of the vector x - p relative to direction m (header), made once: dv, -du, -dv, du for m = 0..3
-inline FT side_difference(int m, const Exact_uv& x, const Exact_uv& p)
+// a - b, or b - a where `negated`, made once
+inline FT difference(const FT& a, const FT& b, bool negated)
 {
-  const int q = direction_mod4(m);
-  const FT& a = q % 2 == 0 ? x.v : x.u;
-  const FT& b = q % 2 == 0 ? p.v : p.u;
   Gmp_rational* t = scratch_rationals();
-  if(q == 1 || q == 2) mpq_sub(t[0].q, b.mpq(), a.mpq());
+  if(negated) mpq_sub(t[0].q, b.mpq(), a.mpq());
   else mpq_sub(t[0].q, a.mpq(), b.mpq());
   return FT(t[0].q);
 }
 
-// the along coordinate of the vector x - p relative to direction m (header), made once: du, dv, -du, -dv for m = 0..3
+// the side coordinate of the vector x - p relative to direction m (header): dv, -du, -dv, du for m = 0..3
+inline FT side_difference(int m, const Exact_uv& x, const Exact_uv& p)
+{
+  const int q = direction_mod4(m);
+  return q % 2 == 0 ? difference(x.v, p.v, q == 2) : difference(x.u, p.u, q == 1);
+}
+
+// the along coordinate of the vector x - p relative to direction m (header): du, dv, -du, -dv for m = 0..3
 inline FT along_difference(int m, const Exact_uv& x, const Exact_uv& p)
 {
   const int q = direction_mod4(m);
-  const FT& a = q % 2 == 0 ? x.u : x.v;
-  const FT& b = q % 2 == 0 ? p.u : p.v;
-  Gmp_rational* t = scratch_rationals();
-  if(q >= 2) mpq_sub(t[0].q, b.mpq(), a.mpq());
-  else mpq_sub(t[0].q, a.mpq(), b.mpq());
-  return FT(t[0].q);
+  return q % 2 == 0 ? difference(x.u, p.u, q >= 2) : difference(x.v, p.v, q >= 2);
 }
 
 // (along, side) of the vector x - p relative to direction m, each made once (in place: no number for the difference,
@@ -210,13 +206,19 @@ inline FT crossing_parameter(const FT& si, const FT& sj)
   return FT(t[0].q);
 }
 
+// t[0] = a + lambda (b - a) (t: scratch_rationals())
+inline void lerp_scalar_in(const FT& a, const FT& b, const FT& lambda, Gmp_rational* t)
+{
+  mpq_sub(t[0].q, b.mpq(), a.mpq());
+  mpq_mul(t[0].q, t[0].q, lambda.mpq());
+  mpq_add(t[0].q, t[0].q, a.mpq());
+}
+
 // a + lambda (b - a)
 inline FT lerp_scalar(const FT& a, const FT& b, const FT& lambda)
 {
   Gmp_rational* t = scratch_rationals();
-  mpq_sub(t[0].q, b.mpq(), a.mpq());
-  mpq_mul(t[0].q, t[0].q, lambda.mpq());
-  mpq_add(t[0].q, t[0].q, a.mpq());
+  lerp_scalar_in(a, b, lambda, t);
   return FT(t[0].q);
 }
 
@@ -224,9 +226,7 @@ inline FT lerp_scalar(const FT& a, const FT& b, const FT& lambda)
 inline bool lerp_scalar_equals(const FT& a, const FT& b, const FT& lambda, const FT& x)
 {
   Gmp_rational* t = scratch_rationals();
-  mpq_sub(t[0].q, b.mpq(), a.mpq());
-  mpq_mul(t[0].q, t[0].q, lambda.mpq());
-  mpq_add(t[0].q, t[0].q, a.mpq());
+  lerp_scalar_in(a, b, lambda, t);
   return mpq_equal(t[0].q, x.mpq()) != 0;
 }
 
@@ -260,7 +260,7 @@ inline FT one_minus(const FT& x)
   return FT(t[0].q);
 }
 
-// Double intervals enclosing the two coordinates of an Exact_uv (CGAL::to_interval), to decide signs and equalities
+// Double intervals enclosing the two coordinates of an Exact_uv (interval_of()), to decide signs and equalities
 // without the rationals where the doubles suffice.
 struct Uv_box
 {
@@ -310,7 +310,7 @@ inline int direction_sign(const Exact_uv& a, const Uv_box& A, const Exact_uv& b,
   return mpq_sgn(t[0].q);
 }
 
-// the same for orientation_determinant(corner_uv(cm, a), corner_uv(cm, b), c)
+// the same for the corners a and b (their doubles cm.u, cm.v) and the point c: the sign of (b - a) x (c - a)
 inline int corner_side_sign(const Corner_mesh& cm, int a, int b, const Exact_uv& c, const Uv_box& C)
 {
   const Uv_box A(cm.u[a], cm.v[a]), B(cm.u[b], cm.v[b]);
@@ -352,16 +352,7 @@ inline void barycentric(const Exact_uv c[3], const Exact_uv& p, FT b[3])
 // The point at parameter lambda from a to b.
 inline Exact_uv lerp(const Exact_uv& a, const Exact_uv& b, const FT& lambda)
 {
-  Gmp_rational* t = scratch_rationals();
-  Exact_uv r;
-  for(int i = 0; i < 2; ++i) {                            // a + lambda (b - a), in place
-    const FT& ai = i == 0 ? a.u : a.v;
-    mpq_sub(t[0].q, (i == 0 ? b.u : b.v).mpq(), ai.mpq());
-    mpq_mul(t[0].q, t[0].q, lambda.mpq());
-    mpq_add(t[0].q, t[0].q, ai.mpq());
-    (i == 0 ? r.u : r.v) = FT(t[0].q);
-  }
-  return r;
+  return Exact_uv{lerp_scalar(a.u, b.u, lambda), lerp_scalar(a.v, b.v, lambda)};
 }
 
 // The parameter lambda of a point p of the line through a != b: p = lerp(a, b, lambda).

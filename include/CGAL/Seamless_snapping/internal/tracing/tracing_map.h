@@ -43,7 +43,7 @@ struct Tracing_map
                                         // a rational per corner and use
 };
 
-// the exact UV of corner h (corner_uv(map.cm, h), shared)
+// the exact UV of corner (target(h), face(h)): its doubles as rationals, made once per sector and shared
 inline const Exact_uv& corner_uv(const Tracing_map& map, int h) { return map.sector_uv[std::size_t(map.st.sector_of[h])]; }
 
 inline Status build_tracing_map(Tracing_map& map, double rotation_tolerance_degrees, std::string& message)
