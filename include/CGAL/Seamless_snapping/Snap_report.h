@@ -177,7 +177,7 @@ struct Snap_report
   std::vector<Winding_defect> winding_defects; ///< every interior vertex at the end whose UV angle sum is not its valence (not locally injective there)
   bool untangle_refused = false;       ///< the untangled map moved more than `max_untangle_change`: it was not used
   bool untangle_budget_spent = false;  ///< the untangling stopped at its work budget (400 face evaluations per face of the mesh) with fold-overs left
-  int untangle_rings = 0;              ///< face rings around the fold-overs that the last attempt moved (1, 2, 4, 8 or 16)
+  int untangle_rings = 0;              ///< the largest number of face rings around the fold-overs that an attempt moved (1, 2, 4, 8 or 16)
   std::size_t untangle_region_vertices = 0;  ///< vertices of that region
   std::size_t untangle_moved_sectors = 0;    ///< sectors whose UV the untangling changed (with respect to the exact snap of the input)
   /// optimizations of the untangling's first step: one per ring size tried (the regions of that size together)

@@ -864,8 +864,10 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         if(closed[e.face] > 0) { e.message = closed_uncut_part_reason(closed[e.face]); continue; }
         if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
         else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
-        else if(report.untangle_budget_spent)
-          e.message = "not proven forced by the constraints; the untangling stopped at its work budget without making it positive";
+        else if(report.untangle_rings > 0)   // the regions grew up to untangle_rings around the faces still non-positive
+          e.message = "not proven forced by the constraints; the untangling did not make it positive (its regions grew to " +
+                      std::to_string(report.untangle_rings) + " face rings around the fold-overs" +
+                      (report.untangle_budget_spent ? ", then it stopped at its work budget)" : ")");
         name_collapsed_pairs(S.cm.target[fc.halfedge[e.face][0]], e.message);
       }
     }
