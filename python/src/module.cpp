@@ -190,7 +190,8 @@ std::string rational(const CGAL::Gmpq& q)
   return o.str();
 }
 
-py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows)
+// `exact_uv`: with "uv_exact", the polyline's points as exact "p/q" strings
+py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows, bool exact_uv = true)
 {
   py::dict d;
   d["end"] = SS::trace_end_name(t.end);
@@ -227,16 +228,16 @@ py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows)
     for(int e = 0; e < 2; ++e) {
       ua(i, e, 0) = CGAL::to_double(ends[e]->u);
       ua(i, e, 1) = CGAL::to_double(ends[e]->v);
-      seg.append(py::make_tuple(rational(ends[e]->u), rational(ends[e]->v)));
+      if(exact_uv) seg.append(py::make_tuple(rational(ends[e]->u), rational(ends[e]->v)));
     }
-    exact.append(seg);
+    if(exact_uv) exact.append(seg);
     if(i == 0) for(int c = 0; c < 3; ++c) pa(0, c) = s.source.position[std::size_t(c)];
     for(int c = 0; c < 3; ++c) pa(i + 1, c) = s.target.position[std::size_t(c)];
   }
   d["faces"] = faces;
   d["directions"] = dirs;
   d["uv"] = uv;
-  d["uv_exact"] = exact;
+  if(exact_uv) d["uv_exact"] = exact;
   d["points"] = points;
   return d;
 }
@@ -266,7 +267,7 @@ bool mesh_or_failure(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV
 }
 
 py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
-                          std::size_t max_faces, double rotation_tolerance)
+                          std::size_t max_faces, double rotation_tolerance, bool exact_uv)
 {
   SS::internal::Matrix_mesh_with_uv m;
   py::dict failure;
@@ -285,7 +286,7 @@ py::dict motorcycle_graph(const MatrixXdR& V, const MatrixXlR& F, const MatrixXd
   py::list seps;
   std::size_t inexact = 0;
   for(std::size_t i = 0; i < g.separatrices.size(); ++i) {
-    py::dict t = trace_dict(g.separatrices[i], m.mesh, rows);
+    py::dict t = trace_dict(g.separatrices[i], m.mesh, rows, exact_uv);
     const int k = i < g.source_kind.size() ? g.source_kind[i] : -1;
     t["source"] = (k >= 0 && k < 3) ? kinds[k] : "unknown";
     inexact += g.separatrices[i].inexact_transfers;
@@ -528,7 +529,7 @@ PYBIND11_MODULE(_core, m)
   m.def("project", &project, py::arg("n_rows"), py::arg("n_cols"), py::arg("rows"), py::arg("cols"), py::arg("vals"),
         py::arg("b"), py::arg("xbar"), py::arg("delta_margin_bits"), py::arg("force_multiprecision"));
   m.def("motorcycle_graph", &motorcycle_graph, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
-        py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
+        py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"), py::arg("exact_uv"));
   m.def("trace_isoline", &trace_isoline, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("face"),
         py::arg("corner"), py::arg("direction"), py::arg("weld"), py::arg("max_faces"), py::arg("rotation_tolerance"));
   m.def("quad_mesh_patches", &quad_mesh_patches, py::arg("QF"));

@@ -388,6 +388,11 @@ def test_motorcycle_graph_flat_torus():
     for s in g["separatrices"]:
         assert s["inexact_transfers"] == 0
         assert axis_parallel_exactly(s)
+    # without the exact points: the same graph, the same rounded points, no "uv_exact"
+    gf = ss.motorcycle_graph(V, F, UV, FUV, exact_uv=False)
+    assert gf["counts"] == g["counts"] and gf["layout"]["patches"] == lay["patches"]
+    for s, t in zip(g["separatrices"], gf["separatrices"]):
+        assert "uv_exact" not in t and np.array_equal(s["uv"], t["uv"]) and s["end"] == t["end"]
     # +u from a vertex of the torus closes after n edges, exactly at its start
     t = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u")
     assert t["end"] == "closed_loop" and len(t["faces"]) == 4 and np.array_equal(t["points"][0], t["points"][-1])
