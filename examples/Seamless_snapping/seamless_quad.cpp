@@ -1,7 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
-//                 [--layout FILE.(obj|off|ply)] [--report FILE.json] [--threads N] [--quiet]
+//                 [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -51,7 +52,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--layout FILE.(obj|off|ply)] [--report FILE.json] [--threads N] [--quiet]\n";
+  "                     [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
@@ -94,6 +95,9 @@ static const char* help_text =
   "                       that vertex twice\n"
   "  --report FILE.json   write {\"snap\": ..., \"quad_mesh\": ..., \"patches\": ..., \"layout\": ...} (the\n"
   "                       reports; \"layout\" null without --layout) as JSON, also on failure\n"
+  "  --max-grid-cells N   refuse (exit 1) a map whose faces' UV bounding boxes hold more than N unit cells\n"
+  "                       of the integer grid in all (default 16777216 = 2^24): the work and the memory\n"
+  "                       grow with them, about 320 bytes per quad\n"
   "  --threads N          threads for independent steps of the reading and the snap (its untangling\n"
   "                       included; the same quad mesh whatever N): 0, the default, takes the machine's\n"
   "                       cores; 1 runs on one thread\n"
@@ -142,6 +146,7 @@ int main(int argc, char** argv)
   std::string in, out, report_file, layout_file;
   bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
   double grid_scale = 1;
+  std::size_t max_grid_cells = SS::default_max_grid_cells;
   unsigned threads = 0;                 // 0: the machine's cores
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -156,6 +161,15 @@ int main(int argc, char** argv)
       if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
         std::cerr << "seamless_quad: --grid-scale needs a number\n" << usage_text; return 2;
       }
+      ++i;
+    }
+    else if(a == "--max-grid-cells") {
+      char* end = nullptr;
+      const unsigned long long n = i + 1 < argc ? std::strtoull(argv[i + 1], &end, 10) : 0;
+      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n == ULLONG_MAX) {
+        std::cerr << "seamless_quad: --max-grid-cells needs a number of cells\n" << usage_text; return 2;
+      }
+      max_grid_cells = std::size_t(n);
       ++i;
     }
     else if(a == "--threads") {
@@ -243,7 +257,7 @@ int main(int argc, char** argv)
   auto covered = quads.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
   SS::Quad_mesh_report q;
   if(snap.status == SS::SUCCESS && SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale)))
-    q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale),
+    q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale).max_grid_cells(max_grid_cells),
                               params::vertex_origin_map(origin).face_origin_map(covered));
   else if(snap.status == SS::SUCCESS)
     return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");

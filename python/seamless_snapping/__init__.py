@@ -292,7 +292,7 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_fac
     return d
 
 
-def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_failure=True):
+def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cells=None, raise_on_failure=True):
     """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
     snap(..., integer_grid_map=True)): its vertices are the integer points of the map (UV times `grid_scale`, a
     power of 2), its edges the unit segments of the integer isolines, its faces the unit cells, all decided exactly.
@@ -319,8 +319,14 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, raise_on_fai
     report["zero_area_faces"]; report["advice"] says to untangle first where that can remove them), "RANGE_EXCEEDED". A zero-area UV triangle with three distinct (collinear) corners is
     collapsed onto its long side (listed in report["zero_area_faces"] on success too).
     Cells cut by a border that is not on an integer isoline are left out: report["incomplete_cells"].
+    `max_grid_cells` bounds the unit cells of the integer grid in the faces' UV bounding boxes (in all; None: the C++
+    default_max_grid_cells, 2**24): more are refused with "RANGE_EXCEEDED" (the work and the memory are linear in it,
+    about 320 bytes per quad at the peak).
     """
-    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), bool(weld), float(grid_scale))
+    n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
+    if not 0 <= n < 2**64:
+        raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
+    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), bool(weld), float(grid_scale), n)
     report = json.loads(text)
     report.update(origins)
     if "patches" in report:

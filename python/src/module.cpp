@@ -381,7 +381,7 @@ void add_patches(Mesh& q, py::dict& out)
 }
 
 py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
-                            double grid_scale)
+                            double grid_scale, std::size_t max_grid_cells)
 {
   SS::internal::Matrix_mesh_with_uv m;
   SS::Quad_mesh_report r;
@@ -396,7 +396,7 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   auto covered = q.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
   {
     py::gil_scoped_release release;
-    r = SS::extract_quad_mesh(m.mesh, m.uv, q, SS::parameters::grid_scale(grid_scale),
+    r = SS::extract_quad_mesh(m.mesh, m.uv, q, SS::parameters::grid_scale(grid_scale).max_grid_cells(max_grid_cells),
                               SS::parameters::vertex_origin_map(origin).face_origin_map(covered));
   }
   if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json(), origins);
@@ -535,6 +535,7 @@ PYBIND11_MODULE(_core, m)
   m.def("quad_mesh_patches", &quad_mesh_patches, py::arg("QF"));
   m.def("quad_layout", &quad_layout, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
-        py::arg("grid_scale"));
+        py::arg("grid_scale"), py::arg("max_grid_cells"));
+  m.attr("default_max_grid_cells") = SS::default_max_grid_cells;
   m.attr("version") = "0.1.0";
 }

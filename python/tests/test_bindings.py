@@ -685,6 +685,14 @@ def test_extract_quad_mesh_refusals():
     assert QV is None and QF is None and r["status"] == "FOLD_OVERS" and len(r["fold_overs"]) > 0
     assert "fold-overs" in r["message"]
     assert r["advice"].startswith("untangle the map first") and r["message"].endswith("; " + r["advice"])
+    # max_grid_cells: the 32 triangles of the 4 x 4 torus have boxes of one cell each
+    V, F, UV, FUV = flat_torus(n=4)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV, max_grid_cells=31, raise_on_failure=False)
+    assert QV is None and r["status"] == "RANGE_EXCEEDED" and "max_grid_cells" in r["message"]
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV, max_grid_cells=32)
+    assert len(QF) == 16 and ss._core.default_max_grid_cells == 2 ** 24
+    with pytest.raises(ss.InputError):
+        ss.extract_quad_mesh(V, F, UV, FUV, max_grid_cells=-1)
 
 
 def test_quad_mesh_patches_standalone():

@@ -595,6 +595,21 @@ static void test_torus()
   Mesh odd; UV_map uvo;
   make_flat_torus(odd, uvo, 3, 3.5);
   check_refused(odd, uvo, 1, SS::INVALID_INPUT, "translation is not an integer vector", "torus of period 3.5");
+  // max_grid_cells: the 50 triangles of the 5 x 5 torus each have a box of 1 cell at grid scale 1, of 4 at grid scale 2
+  // (100 quads): one cell fewer than the boxes hold is refused, nothing written; as many give the mesh
+  Mesh t5; UV_map uv5;
+  make_flat_torus(t5, uv5, 5, 5);
+  for(const auto& c : {std::make_pair(1., std::size_t(50)), std::make_pair(2., std::size_t(200))}) {
+    Mesh q;
+    q.add_vertex(Point_3(1, 2, 3));
+    SS::Quad_mesh_report r = SS::extract_quad_mesh(t5, uv5, q, SS::parameters::grid_scale(c.first).max_grid_cells(c.second - 1));
+    assert(r.status == SS::RANGE_EXCEEDED && r.message.find("more than " + std::to_string(c.second - 1) + " unit cells") != std::string::npos &&
+           r.message.find("max_grid_cells") != std::string::npos);
+    assert(q.number_of_vertices() == 1 && q.number_of_faces() == 0);
+    r = SS::extract_quad_mesh(t5, uv5, q, SS::parameters::grid_scale(c.first).max_grid_cells(c.second));
+    assert(r.status == SS::SUCCESS && r.quads == std::size_t(25 * c.first * c.first) && q.number_of_faces() == r.quads);
+  }
+  static_assert(SS::default_max_grid_cells == std::size_t(1) << 24, "the documented default");
 }
 
 // The quad mesh is added to the caller's mesh: appended whole to a Surface_mesh of the extraction's own type

@@ -28,6 +28,16 @@ namespace Seamless_snapping {
 
 /*!
  * \ingroup PkgSeamlessSnappingRef
+ * The default of `extract_quad_mesh()`'s `max_grid_cells`: `2^24` unit cells of the integer grid in the UV bounding
+ * boxes of the faces, in all. The work is linear in them (every grid point of a face's box is tested against the
+ * face's sides) and so is the memory: about 320 bytes per quad at the peak, with the pieces, the cells, the quad mesh
+ * and its copy into the caller's mesh (measured: 7.0 GB for the 22.2M quads of a fuzzed map of 80 triangles with UVs
+ * up to 52,000 grid units); `2^24` keeps the peak near 5 GB.
+ */
+constexpr std::size_t default_max_grid_cells = std::size_t(1) << 24;
+
+/*!
+ * \ingroup PkgSeamlessSnappingRef
  * Where a vertex of the quad mesh of `extract_quad_mesh()` lies on the triangle mesh, and its integer UV.
  * `(u, v)` are grid units: the UV in the chart of `face` is `(u, v) / grid_scale`, exactly.
  */
@@ -70,8 +80,8 @@ struct Quad_vertex_origin
  *   has), else `INVALID_INPUT`;
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
  *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
- *   `grid_scale`; UVs beyond `2^30` grid units or more than `2^26` cells in the faces' UV bounding boxes give
- *   `RANGE_EXCEEDED`;
+ *   `grid_scale`; UVs beyond `2^30` grid units or more than `max_grid_cells` cells in the faces' UV bounding boxes
+ *   give `RANGE_EXCEEDED`;
  * - the map must hold at least one whole cell (a map of zero UV area, or one whose cells the border cuts all, has no
  *   quad mesh), else `INVALID_INPUT` with its UV area and advice to use a larger `grid_scale`.
  *
@@ -114,6 +124,15 @@ struct Quad_vertex_origin
  *     \cgalParamDefault{1}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::grid_scale()`; the result does not depend on
  *                     the scale of the map: a map scaled by `2^j` with `grid_scale(2^-j)` gives the same quad mesh}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_grid_cells}
+ *     \cgalParamDescription{the largest number of unit cells of the integer grid that the UV bounding boxes of the
+ *                           faces may hold in all (each face's box counted on its own); more give `RANGE_EXCEEDED`,
+ *                           nothing written. It bounds the work and the memory, which are linear in it: about 320
+ *                           bytes per quad at the peak (the pieces, the cells, the quad mesh and its copy into `qm`)}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{`default_max_grid_cells` (`2^24`: 16.8M cells, about 5 GB at most)}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_grid_cells()`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
@@ -159,11 +178,13 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef boost::graph_traits<QuadMesh> QT;
 
-  // input: vertex point map, grid scale
+  // input: vertex point map, grid scale, the bound on the grid cells
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters_in>::const_type VPM_in;
   const VPM_in vpm_in = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
                                          get_const_property_map(CGAL::vertex_point, tm));
   const double grid_scale = choose_parameter(get_parameter(np_in, snap_np::grid_scale), 1.);
+  const std::size_t max_grid_cells = choose_parameter(get_parameter(np_in, snap_np::max_grid_cells),
+                                                      default_max_grid_cells);
   // output: vertex point map, origins
   typedef typename CGAL::GetVertexPointMap<QuadMesh, NamedParameters_out>::type VPM_out;
   VPM_out vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
@@ -180,8 +201,8 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   Face_origin_map face_origin_map = choose_parameter<Face_origin_map>(get_parameter(np_out, snap_np::face_origin_map));
 
   const bool covered_faces = !CGAL::parameters::is_default_parameter<NamedParameters_out, snap_np::face_origin_map_t>::value;
-  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, qm, vpm_out, origin_map, face_origin_map,
-                                                covered_faces);
+  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, max_grid_cells, qm, vpm_out, origin_map,
+                                                face_origin_map, covered_faces);
 }
 
 } // namespace Seamless_snapping

@@ -106,7 +106,7 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
 template <class TriangleMesh, class HalfedgeUVMap, class VPM_in, class QuadMesh, class VPM_out, class Origin_map,
           class Face_origin_map>
 Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv, VPM_in vpm_in, double grid_scale,
-                                        QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
+                                        std::size_t max_grid_cells, QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
                                         Face_origin_map face_origin_map, bool covered_faces)
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -122,7 +122,7 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
   if(report.status == SUCCESS) {
     std::vector<typename boost::property_traits<VPM_in>::value_type> points;
     for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
-    report.status = extract_quads(scale_exponent, points, x, report);
+    report.status = extract_quads(scale_exponent, max_grid_cells, points, x, report);
   }
   if(report.status != SUCCESS) { report.total_ms = ms_since(t0); return report; }
 

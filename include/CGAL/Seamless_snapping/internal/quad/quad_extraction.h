@@ -52,8 +52,6 @@ namespace Seamless_snapping {
 namespace internal {
 namespace quad {
 
-// the largest number of cells in the UV bounding boxes of the faces (about 40 bytes each at most)
-constexpr std::size_t max_candidate_cells = std::size_t(1) << 26;
 // the largest |UV coordinate| in grid units
 constexpr double max_grid_coordinate = 0x1p30;
 
@@ -272,8 +270,8 @@ std::array<double, 3> integer_point_position(const Corner_mesh& cm, const Intege
 
 // Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm.
 template <class Point3>
-Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point, Quad_extraction& out,
-                     Quad_mesh_report& r)
+Status extract_quads(int scale_exponent, std::size_t max_grid_cells, const std::vector<Point3>& vertex_point,
+                     Quad_extraction& out, Quad_mesh_report& r)
 {
   auto t0 = std::chrono::steady_clock::now();
   Corner_mesh& cm = out.cm;
@@ -289,7 +287,7 @@ Status extract_quads(int scale_exponent, const std::vector<Point3>& vertex_point
   const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
   const Collapsed_faces collapsed(cm.n_faces, collinear);
   Cell_pieces pieces;
-  s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, max_candidate_cells, pieces, r.message);
+  s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, max_grid_cells, pieces, r.message);
   if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, out.cells, r.message);
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
