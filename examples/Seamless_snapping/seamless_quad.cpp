@@ -97,7 +97,7 @@ static const char* help_text =
   "                       reports; \"layout\" null without --layout) as JSON, also on failure\n"
   "  --max-grid-cells N   refuse (exit 1) a map whose faces' UV bounding boxes hold more than N unit cells\n"
   "                       of the integer grid in all (default 16777216 = 2^24): the work and the memory\n"
-  "                       grow with them, about 320 bytes per quad\n"
+  "                       grow with them, about 290 bytes per quad\n"
   "  --threads N          threads for independent steps of the reading and the snap (its untangling\n"
   "                       included; the same quad mesh whatever N): 0, the default, takes the machine's\n"
   "                       cores; 1 runs on one thread\n"

@@ -321,7 +321,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cel
     Cells cut by a border that is not on an integer isoline are left out: report["incomplete_cells"].
     `max_grid_cells` bounds the unit cells of the integer grid in the faces' UV bounding boxes (in all; None: the C++
     default_max_grid_cells, 2**24): more are refused with "RANGE_EXCEEDED" (the work and the memory are linear in it,
-    about 320 bytes per quad at the peak).
+    about 290 bytes per quad at the peak).
     """
     n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
     if not 0 <= n < 2**64:

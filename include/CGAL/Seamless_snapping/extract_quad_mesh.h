@@ -30,8 +30,8 @@ namespace Seamless_snapping {
  * \ingroup PkgSeamlessSnappingRef
  * The default of `extract_quad_mesh()`'s `max_grid_cells`: `2^24` unit cells of the integer grid in the UV bounding
  * boxes of the faces, in all. The work is linear in them (every grid point of a face's box is tested against the
- * face's sides) and so is the memory: about 320 bytes per quad at the peak, with the pieces, the cells, the quad mesh
- * and its copy into the caller's mesh (measured: 7.0 GB for the 22.2M quads of a fuzzed map of 80 triangles with UVs
+ * face's sides) and so is the memory: about 290 bytes per quad at the peak, with the cells, the quad mesh and its
+ * copy into the caller's mesh (measured: 6.3 GB for the 22.2M quads of a fuzzed map of 80 triangles with UVs
  * up to 52,000 grid units); `2^24` keeps the peak near 5 GB.
  */
 constexpr std::size_t default_max_grid_cells = std::size_t(1) << 24;
@@ -128,8 +128,8 @@ struct Quad_vertex_origin
  *   \cgalParamNBegin{max_grid_cells}
  *     \cgalParamDescription{the largest number of unit cells of the integer grid that the UV bounding boxes of the
  *                           faces may hold in all (each face's box counted on its own); more give `RANGE_EXCEEDED`,
- *                           nothing written. It bounds the work and the memory, which are linear in it: about 320
- *                           bytes per quad at the peak (the pieces, the cells, the quad mesh and its copy into `qm`)}
+ *                           nothing written. It bounds the work and the memory, which are linear in it: about 290
+ *                           bytes per quad at the peak (the cells, the quad mesh and its copy into `qm`)}
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{`default_max_grid_cells` (`2^24`: 16.8M cells, about 5 GB at most)}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_grid_cells()`}

@@ -222,7 +222,7 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
     if(candidates > max_candidates) {
       message = "the faces' UV bounding boxes hold more than " + std::to_string(max_candidates) + " unit cells of the " +
                 "integer grid (max_grid_cells; reached at face " + std::to_string(f) + "): the quad mesh would be too " +
-                "large; use a smaller grid_scale, or a larger max_grid_cells (about 320 bytes of memory per quad)";
+                "large; use a smaller grid_scale, or a larger max_grid_cells (about 290 bytes of memory per quad)";
       return RANGE_EXCEEDED;
     }
   }
