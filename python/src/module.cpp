@@ -224,13 +224,15 @@ py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows, bool
     fa(i) = rows.face_row[std::size_t(s.face)];
     da(i) = int(s.direction);
     const SS::Trace_point<Mesh>* ends[2] = {&s.source, &s.target};
-    py::list seg;
     for(int e = 0; e < 2; ++e) {
       ua(i, e, 0) = CGAL::to_double(ends[e]->u);
       ua(i, e, 1) = CGAL::to_double(ends[e]->v);
-      if(exact_uv) seg.append(py::make_tuple(rational(ends[e]->u), rational(ends[e]->v)));
     }
-    if(exact_uv) exact.append(seg);
+    if(exact_uv) {
+      py::list seg;
+      for(const SS::Trace_point<Mesh>* p : ends) seg.append(py::make_tuple(rational(p->u), rational(p->v)));
+      exact.append(seg);
+    }
     if(i == 0) for(int c = 0; c < 3; ++c) pa(0, c) = s.source.position[std::size_t(c)];
     for(int c = 0; c < 3; ++c) pa(i + 1, c) = s.target.position[std::size_t(c)];
   }
