@@ -140,6 +140,14 @@ static std::string extension_of(const std::string& file)
   return e;
 }
 
+// `text` as a whole decimal count in [0, largest] (no sign, nothing after it; an overflow reads as ULLONG_MAX)
+static bool parse_count(const char* text, unsigned long long largest, unsigned long long& n)
+{
+  char* end = nullptr;
+  n = std::strtoull(text, &end, 10);
+  return end != text && *end == '\0' && text[0] != '-' && n <= largest;
+}
+
 int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
@@ -164,18 +172,16 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--max-grid-cells") {
-      char* end = nullptr;
-      const unsigned long long n = i + 1 < argc ? std::strtoull(argv[i + 1], &end, 10) : 0;
-      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n == ULLONG_MAX) {
+      unsigned long long n = 0;
+      if(i + 1 >= argc || !parse_count(argv[i + 1], ULLONG_MAX - 1, n)) {
         std::cerr << "seamless_quad: --max-grid-cells needs a number of cells\n" << usage_text; return 2;
       }
       max_grid_cells = std::size_t(n);
       ++i;
     }
     else if(a == "--threads") {
-      char* end = nullptr;
-      const unsigned long n = i + 1 < argc ? std::strtoul(argv[i + 1], &end, 10) : 0;
-      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n > 1024) {
+      unsigned long long n = 0;
+      if(i + 1 >= argc || !parse_count(argv[i + 1], 1024, n)) {
         std::cerr << "seamless_quad: --threads needs a number of threads in [0, 1024]\n" << usage_text; return 2;
       }
       threads = unsigned(n);
