@@ -10,8 +10,9 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
     x, report = seamless_snapping.project(C, b, xbar)      # C: scipy.sparse or 2-D integer array
     graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
     QV, QF, report = seamless_snapping.extract_quad_mesh(V, F, UV3, FUV3)   # the quad mesh of an exact integer-grid map
+    valence, report = seamless_snapping.quad_valences(V, F, UV3, FUV3)     # per vertex, e.g. for libQEx: write_vval()
 
-snap, project and extract_quad_mesh return new arrays only when they succeed (report["status"] == "SUCCESS");
+snap, project, extract_quad_mesh and quad_valences return new arrays only when they succeed (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
 The tracing functions do not raise for a map they cannot read or trace: their dict has a "status" other than
 "SUCCESS". Arguments refused before anything is computed (a file that cannot be read or written, index arrays
@@ -29,7 +30,7 @@ from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
            "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
-           "quad_layout",
+           "quad_layout", "quad_valences", "write_vval",
            "DIRECTIONS", "SnapError", "InputError",
            "__version__"]
 __version__ = _core.version
@@ -334,6 +335,42 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cel
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return QV, QF, report
+
+
+def quad_valences(V, F, UV, FUV, *, weld=False, raise_on_failure=True):
+    """Per row of V, the number of integer-grid directions (the axis directions of the charts) that leave its vertex
+    into the surface, decided exactly (C++ quad_valences()): the valence of the vertex in the quad mesh of an
+    integer-grid map wherever it is an integer point (extract_quad_mesh()): at an interior vertex its UV angle sum in
+    quarter turns (4 at a regular vertex, 3 and 5 at cones of -90 and +90 degrees), at a border vertex the axis
+    directions of its fan (3 on a straight border along an isoline, 2 at a convex right-angle corner). A quad
+    extractor that guesses it from floating-point angle sums can be told it instead: libQEx reads it from a VVAL
+    file (write_vval()).
+
+    Returns (valence, report): valence #V int64 (0 for a row no face uses; with weld=True the rows at one position
+    are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
+    vertex is on the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
+    valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
+    be multiples of 90 degrees: snap() it first; or the arrays do not form a triangle mesh), "FOLD_OVERS" (a negatively
+    oriented UV triangle, or a zero-area one with two corners at one point, listed: there the angle sum is a signed
+    winding number that no quad mesh has; snap(..., untangle=True) removes fold-overs where the constraints allow). A
+    zero-area triangle with three distinct collinear corners counts as the limit of a thin positive one, as
+    extract_quad_mesh() collapses it.
+    """
+    report = _core.quad_valences(*_mesh_arrays(V, F, UV, FUV), bool(weld))
+    valence = report.pop("valence", None)
+    if report["status"] != "SUCCESS" and raise_on_failure:
+        raise SnapError(report)
+    return valence, report
+
+
+def write_vval(path, valence):
+    """Writes one valence per vertex (e.g. the first result of quad_valences()) in libQEx's VVAL format, the optional
+    third argument of its command-line tool, atomically (C++ IO::write_VVAL()): the line
+    {"file_format":"VVAL","version":1}, the number of vertices, then one integer per line, in the order of the
+    vertices of the mesh file that goes with it (write_obj(): the rows of V). Returns a line saying what was written;
+    InputError (nothing written) for a valence below 0 or beyond a C int, an array that is not 1-D, or a file that
+    cannot be written."""
+    return _core.write_vval(os.fspath(path), _integer_array(valence, "valence", "one per vertex"))
 
 
 def quad_mesh_patches(QF, *, raise_on_failure=True):

@@ -1,15 +1,18 @@
 // Python bindings (pybind11, NumPy, SciPy sparse) of the package's matrix entry points:
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
 // project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...),
-// read_obj(filename, weld, threads), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...).
+// read_obj(filename, weld, threads), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...),
+// quad_mesh_patches(QF), quad_layout(QF), quad_valences(V, F, UV, FUV, weld), write_vval(filename, valences) (IO/VVAL.h).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text. Arguments refused
 // before any computation raise InputError (a ValueError), registered here for the Python side too.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
+#include <CGAL/Seamless_snapping/IO/VVAL.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
+#include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/matrices.h>
 #include <CGAL/Seamless_snapping/trace_isoline.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
@@ -26,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -439,6 +443,68 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }
 
+// ---- quad valences (quad_valences()) per row of V, and their VVAL file ----
+
+// "status", "message", the rows of F of the fold-overs and zero-area triangles that prevent the valences, and on
+// success per row of V "valence" (that of its vertex; 0 for a row no face uses) and "border" (its vertex on the border)
+py::dict quad_valences(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld)
+{
+  SS::internal::Matrix_mesh_with_uv m;
+  SS::Quad_valences q;
+  {
+    py::gil_scoped_release release;
+    q.status = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, q.message);
+    if(q.status == SS::SUCCESS) q = SS::quad_valences(m.mesh, m.uv);
+  }
+  py::dict d = failed_dict(q.status, q.message);
+  const Row_maps rows(m, F);
+  auto face_rows = [&](const std::vector<std::size_t>& faces) {      // face ranks of the mesh -> rows of F
+    py::array_t<long long> a(py::ssize_t(faces.size()));
+    auto r = a.mutable_unchecked<1>();
+    for(std::size_t i = 0; i < faces.size(); ++i) r(py::ssize_t(i)) = rows.face_row[faces[i]];
+    return a;
+  };
+  d["fold_overs"] = face_rows(q.fold_overs);
+  d["zero_area_faces"] = face_rows(q.zero_area_faces);
+  if(q.status != SS::SUCCESS) return d;
+  std::vector<char> on_border(q.valence.size(), 0);
+  for(std::size_t v : q.border) on_border[v] = 1;
+  py::array_t<long long> valence(py::ssize_t(V.rows()));
+  py::array_t<bool> border(py::ssize_t(V.rows()));
+  auto va = valence.mutable_unchecked<1>();
+  auto bo = border.mutable_unchecked<1>();
+  for(py::ssize_t i = 0; i < py::ssize_t(V.rows()); ++i) { va(i) = 0; bo(i) = false; }
+  for(std::size_t f = 0; f < m.corner.size(); ++f)
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t v = std::size_t(m.mesh.target(m.corner[f][std::size_t(k)]));
+      const py::ssize_t row = py::ssize_t(F(Eigen::Index(f), k));
+      va(row) = q.valence[v];
+      bo(row) = on_border[v] != 0;
+    }
+  d["valence"] = valence;
+  d["border"] = border;
+  return d;
+}
+
+// writes one valence per entry (IO::write_VVAL(), atomically); InputError when nothing was written (a valence
+// below 0 or beyond an int, a file that cannot be written)
+std::string write_vval(const std::string& filename, const py::array_t<long long, py::array::c_style | py::array::forcecast>& valences)
+{
+  if(valences.ndim() != 1) throw Input_error("the valences must be a 1-D array, one per vertex; it has " +
+                                             std::to_string(valences.ndim()) + " dimensions");
+  const auto a = valences.unchecked<1>();
+  std::vector<int> v(std::size_t(a.shape(0)));
+  for(py::ssize_t i = 0; i < a.shape(0); ++i) {
+    if(a(i) < 0 || a(i) > std::numeric_limits<int>::max())
+      throw Input_error("vertex " + std::to_string(i) + " has the valence " + std::to_string(a(i)) + ": the VVAL format "
+                        "holds integers from 0 to " + std::to_string(std::numeric_limits<int>::max()) + "; nothing was written");
+    v[std::size_t(i)] = int(a(i));
+  }
+  std::string message;
+  if(SS::IO::write_VVAL(filename, v, message) != SS::SUCCESS) throw Input_error(message);
+  return message;
+}
+
 // The quad mesh of the rows of QF (#QF x 4 vertex indices, counter-clockwise), built face by face with Euler::add_face();
 // a row that cannot be added (a repeated vertex, an index out of range, an edge in two quads in one direction or in a
 // third quad) is named (InputError)
@@ -538,6 +604,8 @@ PYBIND11_MODULE(_core, m)
   m.def("quad_layout", &quad_layout, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("grid_scale"), py::arg("max_grid_cells"));
+  m.def("quad_valences", &quad_valences, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"));
+  m.def("write_vval", &write_vval, py::arg("filename"), py::arg("valences"));
   m.attr("default_max_grid_cells") = SS::default_max_grid_cells;
   m.attr("version") = "0.1.0";
 }

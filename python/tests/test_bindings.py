@@ -766,6 +766,86 @@ def test_quad_layout():
         ss.quad_layout(grid[:, :3])
 
 
+def unit_cube():
+    """The surface of the unit cube, each square side a chart of its own (the unit square at (2 s, 0) for side s),
+    two triangles per side: an exact integer-grid map whose 8 corners are cones of 3 quarter turns."""
+    sides = [((0, 0, 0), (0, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 0), (0, 1, 0)), ((0, 0, 0), (1, 0, 0), (0, 0, 1)),
+             ((0, 1, 0), (0, 0, 1), (1, 0, 0)), ((0, 0, 0), (0, 0, 1), (0, 1, 0)), ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
+    F, UV, FUV = [], [], []
+    for s, (o, a, b) in enumerate(sides):                   # a x b is the outward normal
+        square = [(0, 0), (1, 0), (1, 1), (0, 1)]
+        corner = [tuple(o[c] + i * a[c] + j * b[c] for c in range(3)) for i, j in square]
+        index = [x + 2 * y + 4 * z for x, y, z in corner]
+        for tri in ((0, 1, 2), (0, 2, 3)):
+            F.append([index[k] for k in tri])
+            FUV.append([len(UV) + k for k in range(3)])
+            UV.extend([2 * s + square[k][0], square[k][1]] for k in tri)
+    V = [[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    return np.array(V, dtype=float), np.array(F), np.array(UV, dtype=float), np.array(FUV)
+
+
+def quad_degrees(QF, n):
+    """The number of quad edges at each of the n quad vertices."""
+    edges = {(min(q[k], q[(k + 1) % 4]), max(q[k], q[(k + 1) % 4])) for q in QF for k in range(4)}
+    degree = np.zeros(n, dtype=np.int64)
+    for a, b in edges:
+        degree[a] += 1
+        degree[b] += 1
+    return degree
+
+
+def check_valences_against_quads(V, F, UV, FUV, QF, report, weld=False):
+    """quad_valences() of the map: at every quad vertex that is a vertex of the map, the valence it has in the quad
+    mesh extracted from it (the cross-check that makes a VVAL file trustworthy)."""
+    valence, r = ss.quad_valences(V, F, UV, FUV, weld=weld)
+    assert r["status"] == "SUCCESS" and valence.shape == (len(V),) and r["border"].shape == (len(V),)
+    degree = quad_degrees(QF, len(report["QV_vertex"]))
+    at_vertices = [i for i, row in enumerate(report["QV_vertex"]) if row >= 0]
+    assert len(at_vertices) > 0
+    assert all(valence[report["QV_vertex"][i]] == degree[i] for i in at_vertices)
+    return valence, r
+
+
+def test_quad_valences_and_vval(tmp_path):
+    V, F, UV, FUV = unit_cube()
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV)
+    for S in (1.0, 2.0):                                   # grid scale 2: a face's center is a regular quad vertex
+        QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV, grid_scale=S)
+        check_quad_mesh(V, F, UV, FUV, QV, QF, r, grid_scale=S)
+        valence, vr = check_valences_against_quads(V, F, UV, FUV, QF, r)
+        assert len(QF) == 6 * S * S and list(valence) == [3] * 8 and not vr["border"].any()
+    # rows no face uses: valence 0; a map with a border: the directions of each border vertex's fan
+    valence, _ = ss.quad_valences(np.vstack([V, [[5.0, 5.0, 5.0]]]), F, UV, FUV)
+    assert list(valence) == [3] * 8 + [0]
+    Vc, Fc, UVc, FUVc = cut_grid(n=8, noise=1e-9, size=8.0, t=(3.0, 1.0))
+    UV2, FUV2, _ = ss.snap(Vc, Fc, UVc, FUVc, integer_grid_map=True)
+    QV, QF, r = ss.extract_quad_mesh(Vc, Fc, UV2, FUV2)
+    valence, vr = check_valences_against_quads(Vc, Fc, UV2, FUV2, QF, r)
+    corners = [0, 8, 72, 80]                              # the grid's corners: 2; other border vertices 3, inside 4
+    assert sorted(np.flatnonzero(vr["border"])) == [i for i in range(81) if i % 9 in (0, 8) or i // 9 in (0, 8)]
+    assert all(valence[i] == (2 if i in corners else 3 if vr["border"][i] else 4) for i in range(81))
+    # the VVAL file: header, count, one line per vertex; refusals write nothing
+    path = tmp_path / "cube.vval"
+    assert "8 vertex valences" in ss.write_vval(path, [3] * 8)
+    assert path.read_text() == '{"file_format":"VVAL","version":1}\n8\n' + "3\n" * 8
+    for bad, match in [([3, -1], "valence -1"), ([2 ** 31], "valence 2147483648"), ([[3, 3]], "1-D"), ([3.5], "integers")]:
+        with pytest.raises(ss.InputError, match=match):
+            ss.write_vval(tmp_path / "bad.vval", bad)
+    assert not (tmp_path / "bad.vval").exists()
+    # refusals: a map that is not exactly seamless, a folded one (its faces listed, as rows of F)
+    Vt, Ft, UVt, FUVt = flat_torus(n=4, noise=1e-10)
+    with pytest.raises(ss.SnapError) as e:
+        ss.quad_valences(Vt, Ft, UVt, FUVt)
+    assert e.value.report["status"] == "INVALID_INPUT" and "not exactly seamless" in e.value.report["message"]
+    Vt, Ft, UVt, FUVt = flat_torus(n=4)
+    UVt = UVt.copy()
+    UVt[FUVt[Ft == 5]] = [3.0, 1.0]                        # vertex (1, 1) moved to (3, 1): fold-overs
+    valence, r = ss.quad_valences(Vt, Ft, UVt, FUVt, raise_on_failure=False)
+    assert valence is None and r["status"] == "FOLD_OVERS" and len(r["fold_overs"]) > 0
+    assert sorted(r["fold_overs"]) == [f for f in range(len(Ft)) if orientations(Ft, UVt, FUVt)[f] < 0]
+    assert ss.quad_valences(V, F[:, :2], UV, FUV, raise_on_failure=False)[1]["status"] == "INVALID_INPUT"
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
@@ -777,6 +857,8 @@ def test_extract_quad_mesh_shared_data(name, weld):
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
     # welded: the rows of V with one position are one vertex; compare positions, not rows
     check_quad_mesh(V, F, UV2, FUV2, QV, QF, r)
+    valence, _ = check_valences_against_quads(V, F, UV2, FUV2, QF, r, weld=weld)
+    assert sum(v != 4 for v in {tuple(V[i]): valence[i] for i in range(len(V))}.values()) == r["cones"]
     lay = ss.quad_layout(QF)
     check_quad_layout(QF, lay)
     assert r["euler_characteristic"] == 2 and r["cones"] == report["field_cones"]
