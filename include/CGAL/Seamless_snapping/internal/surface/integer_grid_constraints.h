@@ -306,12 +306,21 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
     set_opposite_translation(cm, rot, h, t);
   }
   if(far > 0) {
+    // where finer_grid_advice() searched the grid scales up to 2^30 times this one and none fits, the map is not an
+    // integer-grid map at any of them: its translations were never made integers (quantized)
+    const bool searched = grid_scale > 0 && al != nullptr;
     message = "the input is not near an integer-grid map: " + std::to_string(far) + " of " +
               std::to_string(st.cut_edges.size()) + " cut-edge translations are farther than " + format_double(tolerance) +
               " from integers (first: " + first_far + ")" +
-              finer_grid_advice(cm, st, rot, al, ubar, tolerance, grid_scale, "; scale the map so that its grid lines fall on "
-                                "integers (grid_scale / --grid-scale, a power of two)") +
-              ", or snap without integer_grid_map (--integer-grid)";
+              finer_grid_advice(cm, st, rot, al, ubar, tolerance, grid_scale,
+                                searched ? "; nor are they at any grid scale up to 2^30 times this one: the map is seamless "
+                                           "but not quantized (its translations are not integers at any power-of-two "
+                                           "scale, as in Directional's rot-seamless output or a map before MIQ's integer "
+                                           "rounding; if its grid lines lie at another spacing, scale its UVs by that "
+                                           "first), and this package does not quantize maps: quantize it first"
+                                         : "; scale the map so that its grid lines fall on integers (grid_scale / "
+                                           "--grid-scale, a power of two)") +
+              ", or snap without integer_grid_map (--integer-grid) for an exactly seamless map";
     return INVALID_INPUT;
   }
   return SUCCESS;
