@@ -6,6 +6,7 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
 
     V, F, UV, FUV = seamless_snapping.read_obj("in.obj")    # weld=True for cut meshes
     UV2, FUV2, report = seamless_snapping.snap(V, F, UV, FUV)
+    d = seamless_snapping.diagnose_seamlessness(V, F, UV, FUV)           # where the input is not seamless, exactly
     seamless_snapping.write_obj("out.obj", V, F, UV2, FUV2)
     x, report = seamless_snapping.project(C, b, xbar)      # C: scipy.sparse or 2-D integer array
     graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
@@ -29,6 +30,7 @@ import numpy as np
 from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
+           "diagnose_seamlessness",
            "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
            "quad_layout", "quad_valences", "write_vval",
            "DIRECTIONS", "SnapError", "InputError",
@@ -154,6 +156,29 @@ def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=False, grid_scale=1.0):
     sits on an integer point and aligned edges lie on integer isolines, all exactly (rational arithmetic),
     after multiplying the UVs by `grid_scale` (a power of 2)."""
     return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), weld, float(grid_scale)))
+
+
+def diagnose_seamlessness(V, F, UV, FUV, *, weld=False, align_boundary=True, rotation_tolerance=1.0,
+                          alignment_tolerance=1e-3, integer_grid_map=False, grid_scale=1.0):
+    """Checks the map, as it is, against exactly the constraint rows that snap() with the same keywords would enforce
+    (rotations k fitted to it, transitions (Eq. 4), boundary alignment (Eq. 5), with integer_grid_map the integer
+    translations, cone points and isolines), every row in rational arithmetic (C++ diagnose_seamlessness()), and
+    says where it fails worst. Nothing is changed; it does not raise for a map it cannot read.
+
+    Returns a dict: "status" ("SUCCESS" when the rows could be built; otherwise the snap's own refusal, e.g.
+    "NOT_QUARTER_TURN_SEAMLESS" or, with integer_grid_map, "INVALID_INPUT" for a map not near an integer-grid map,
+    with "message"), "exact" (every row holds exactly), "rows", "violated_rows", "violated_connections", and when a
+    row is violated the worst one (the largest exact |C_i u - b_i|): "row", "kind" ("transition", "alignment",
+    "transition or alignment", "connection"), "edge" (its two rows of V; None for a connection row), "corners"
+    ([row of F, corner 0-2] per sector of the row), "residual" (a fractions.Fraction, exact, in UV units) and
+    "residual_double". With weld=True the rows of V at one position are one vertex (cut meshes)."""
+    d = _core.diagnose_seamlessness(*_mesh_arrays(V, F, UV, FUV), bool(weld), bool(align_boundary),
+                                    float(rotation_tolerance), float(alignment_tolerance), bool(integer_grid_map),
+                                    float(grid_scale))
+    if "residual" in d:
+        d["residual"] = Fraction(d["residual"])
+        d["corners"] = [tuple(c) for c in d["corners"]]
+    return d
 
 
 def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, raise_on_failure=True):

@@ -2,13 +2,15 @@
 // snap(V, F, UV, FUV, ...), is_exactly_seamless(V, F, UV, FUV, ...), is_exact_integer_grid_map(V, F, UV, FUV, ...),
 // project(C, b, xbar, ...), motorcycle_graph(V, F, UV, FUV, ...), trace_isoline(V, F, UV, FUV, face, corner, direction, ...),
 // read_obj(filename, weld, threads), write_obj(filename, V, F, UV, FUV) (IO/OBJ_matrices.h), extract_quad_mesh(V, F, UV, FUV, ...),
-// quad_mesh_patches(QF), quad_layout(QF), quad_valences(V, F, UV, FUV, weld), write_vval(filename, valences) (IO/VVAL.h).
+// quad_mesh_patches(QF), quad_layout(QF), quad_valences(V, F, UV, FUV, weld), write_vval(filename, valences) (IO/VVAL.h),
+// diagnose_seamlessness(V, F, UV, FUV, ...).
 // Thin: every check and every computation is the C++ library's; reports cross as JSON text. Arguments refused
 // before any computation raise InputError (a ValueError), registered here for the Python side too.
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/IO/VVAL.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
+#include <CGAL/Seamless_snapping/diagnose_seamlessness.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
 #include <CGAL/Seamless_snapping/quad_layout.h>
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
@@ -443,6 +445,48 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }
 
+// ---- diagnose_seamlessness(): the rows the snap would enforce, checked exactly on the map as it is ----
+
+// "status", "message", "exact", "rows", "violated_rows", "violated_connections", and where a row is violated the
+// worst one: "row", "kind", "edge" (its two rows of V, or None for a connection row), "corners" ([row of F, corner
+// 0-2] per sector of the row), "residual" (exact, "p/q" in UV units) and "residual_double"
+py::dict diagnose_seamlessness(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
+                               bool align_boundary, double rotation_tolerance, double alignment_tolerance,
+                               bool integer_grid_map, double grid_scale)
+{
+  SS::internal::Matrix_mesh_with_uv m;
+  py::dict d;
+  if(!mesh_or_failure(V, F, UV, FUV, weld, m, d)) return d;
+  SS::Seamless_diagnosis<Mesh> r;
+  {
+    py::gil_scoped_release release;
+    r = SS::diagnose_seamlessness(m.mesh, m.uv, SS::parameters::align_boundary(align_boundary)
+                                                  .rotation_tolerance(rotation_tolerance).alignment_tolerance(alignment_tolerance)
+                                                  .integer_grid_map(integer_grid_map).grid_scale(grid_scale));
+  }
+  d = failed_dict(r.status, r.message);
+  d["exact"] = r.exact;
+  d["rows"] = r.rows;
+  d["violated_rows"] = r.violated_rows;
+  d["violated_connections"] = r.violated_connections;
+  if(r.status != SS::SUCCESS || r.exact) return d;
+  const Row_maps rows(m, F);
+  d["row"] = r.row;
+  d["kind"] = r.kind;
+  if(r.kind == "connection") d["edge"] = py::none();
+  else d["edge"] = py::make_tuple(rows.vertex_row[std::size_t(m.mesh.source(m.mesh.halfedge(r.edge)))],
+                                  rows.vertex_row[std::size_t(m.mesh.target(m.mesh.halfedge(r.edge)))]);
+  py::list corners;
+  for(Mesh::Halfedge_index h : r.corners)
+    for(std::size_t f = 0; f < m.corner.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+        if(m.corner[f][std::size_t(k)] == h) corners.append(py::make_tuple((long long)(f), k));
+  d["corners"] = corners;
+  d["residual"] = r.residual;
+  d["residual_double"] = r.residual_double;
+  return d;
+}
+
 // ---- quad valences (quad_valences()) per row of V, and their VVAL file ----
 
 // "status", "message", the rows of F of the fold-overs and zero-area triangles that prevent the valences, and on
@@ -604,6 +648,9 @@ PYBIND11_MODULE(_core, m)
   m.def("quad_layout", &quad_layout, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
         py::arg("grid_scale"), py::arg("max_grid_cells"));
+  m.def("diagnose_seamlessness", &diagnose_seamlessness, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
+        py::arg("weld"), py::arg("align_boundary"), py::arg("rotation_tolerance"), py::arg("alignment_tolerance"),
+        py::arg("integer_grid_map"), py::arg("grid_scale"));
   m.def("quad_valences", &quad_valences, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"));
   m.def("write_vval", &write_vval, py::arg("filename"), py::arg("valences"));
   m.attr("default_max_grid_cells") = SS::default_max_grid_cells;

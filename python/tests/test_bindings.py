@@ -152,6 +152,49 @@ def test_snap_integer_grid_map():
     assert e.value.report["status"] == "INVALID_INPUT"
 
 
+def test_diagnose_seamlessness():
+    V, F, UV, FUV = cut_grid(noise=1e-12)
+    d = ss.diagnose_seamlessness(V, F, UV, FUV)
+    assert d["status"] == "SUCCESS" and not d["exact"] and 0 < d["violated_rows"] <= d["rows"]
+    assert d["kind"] == "transition" and isinstance(d["residual"], Fraction)
+    assert 0 < abs(d["residual"]) <= 4e-12 and d["residual_double"] == float(d["residual"])
+    # recomputed here in Fractions: the worst residual is the largest mismatch of an edge's transition at its two ends,
+    # over the edges whose two faces give different UVs (the upper corners are perturbed one by one, so the upper
+    # half's edges are cut edges too), with the quarter turn that maps one side onto the other
+    uv = lambda f, v: next(tuple(Fraction(c) for c in UV[FUV[f][k]]) for k in range(3) if F[f][k] == v)
+    turn = lambda k, p: p if k == 0 else turn(k - 1, (-p[1], p[0]))
+    faces_of = {}
+    for f in range(len(F)):
+        for k in range(3):
+            faces_of.setdefault(tuple(sorted((F[f][k], F[f][(k + 1) % 3]))), []).append(f)
+    mismatch = {}
+    for (a, b), fs in faces_of.items():
+        if len(fs) != 2:
+            continue
+        f, g = fs
+        ef, eg = [tuple(uv(h, b)[c] - uv(h, a)[c] for c in range(2)) for h in (f, g)]
+        k = min(range(4), key=lambda k: sum(abs(x - y) for x, y in zip(turn(k, ef), eg)))
+        t = [tuple(uv(g, v)[c] - turn(k, uv(f, v))[c] for c in range(2)) for v in (a, b)]
+        mismatch[(a, b)] = max(abs(t[0][c] - t[1][c]) for c in range(2))
+    worst = max(mismatch.values())
+    assert abs(d["residual"]) == worst and mismatch[tuple(sorted(d["edge"]))] == worst
+    assert len(d["corners"]) >= 2 and all(0 <= f < len(F) and F[f][k] in d["edge"] for f, k in d["corners"])
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV)
+    d2 = ss.diagnose_seamlessness(V, F, UV2, FUV2)
+    assert d2["exact"] and d2["violated_rows"] == 0 and d2["rows"] == d["rows"] and "residual" not in d2
+    assert d2["exact"] == ss.is_exactly_seamless(V, F, UV2, FUV2)
+    # integer-grid rows: a map whose translation (3.25, 0.5) is not an integer is refused as the snap refuses it; one
+    # snapped to an integer-grid map holds them all
+    d3 = ss.diagnose_seamlessness(V, F, UV2, FUV2, integer_grid_map=True)
+    assert d3["status"] == "INVALID_INPUT" and "not near an integer-grid map" in d3["message"]
+    Vc, Fc, UVc, FUVc = cut_grid(n=8, noise=1e-9, size=8.0, t=(3.0, 1.0))
+    UV3, FUV3, _ = ss.snap(Vc, Fc, UVc, FUVc, integer_grid_map=True)
+    d4 = ss.diagnose_seamlessness(Vc, Fc, UV3, FUV3, integer_grid_map=True)
+    assert d4["status"] == "SUCCESS" and d4["exact"] and d4["rows"] > ss.diagnose_seamlessness(Vc, Fc, UV3, FUV3)["rows"]
+    assert not ss.diagnose_seamlessness(Vc, Fc, UVc, FUVc, integer_grid_map=True)["exact"]
+    assert ss.diagnose_seamlessness(V, F[:, :2], UV, FUV)["status"] == "INVALID_INPUT"
+
+
 def orientations(F, UV, FUV):
     """the sign of every UV triangle, exactly (Fractions of the doubles)"""
     out = []
