@@ -455,16 +455,16 @@ py::dict diagnose_seamlessness(const MatrixXdR& V, const MatrixXlR& F, const Mat
                                bool integer_grid_map, double grid_scale)
 {
   SS::internal::Matrix_mesh_with_uv m;
-  py::dict d;
-  if(!mesh_or_failure(V, F, UV, FUV, weld, m, d)) return d;
   SS::Seamless_diagnosis<Mesh> r;
   {
     py::gil_scoped_release release;
-    r = SS::diagnose_seamlessness(m.mesh, m.uv, SS::parameters::align_boundary(align_boundary)
-                                                  .rotation_tolerance(rotation_tolerance).alignment_tolerance(alignment_tolerance)
-                                                  .integer_grid_map(integer_grid_map).grid_scale(grid_scale));
+    r.status = SS::internal::mesh_from_matrices(V, F, UV, FUV, weld, m, r.message);
+    if(r.status == SS::SUCCESS)
+      r = SS::diagnose_seamlessness(m.mesh, m.uv, SS::parameters::align_boundary(align_boundary)
+                                                    .rotation_tolerance(rotation_tolerance).alignment_tolerance(alignment_tolerance)
+                                                    .integer_grid_map(integer_grid_map).grid_scale(grid_scale));
   }
-  d = failed_dict(r.status, r.message);
+  py::dict d = failed_dict(r.status, r.message);
   d["exact"] = r.exact;
   d["rows"] = r.rows;
   d["violated_rows"] = r.violated_rows;

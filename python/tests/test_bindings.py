@@ -192,7 +192,8 @@ def test_diagnose_seamlessness():
     d4 = ss.diagnose_seamlessness(Vc, Fc, UV3, FUV3, integer_grid_map=True)
     assert d4["status"] == "SUCCESS" and d4["exact"] and d4["rows"] > ss.diagnose_seamlessness(Vc, Fc, UV3, FUV3)["rows"]
     assert not ss.diagnose_seamlessness(Vc, Fc, UVc, FUVc, integer_grid_map=True)["exact"]
-    assert ss.diagnose_seamlessness(V, F[:, :2], UV, FUV)["status"] == "INVALID_INPUT"
+    bad = ss.diagnose_seamlessness(V, F[:, :2], UV, FUV)
+    assert bad["status"] == "INVALID_INPUT" and "3 columns" in bad["message"] and not bad["exact"] and bad["rows"] == 0
 
 
 def orientations(F, UV, FUV):
