@@ -194,10 +194,12 @@ rc, text = run(src, os.path.join(work, "flips.obj"), "--fail-on-new-flips")
 check(rc == 0, "--fail-on-new-flips on a map without introduced flips: %d %s" % (rc, text))
 rc, text = run("--help")
 for opt in ["--weld", "--no-weld", "--keep-layout", "--fail-on-new-flips", "--no-align-boundary", "--unreduced",
-            "--pin", "--vval", "--report", "--outdir", "--summary", "--merge-cone-pairs", "--quiet", "--help"]:
+            "--pin", "--vval", "--report", "--outdir", "--summary", "--merge-cone-pairs", "--quantize", "--quiet", "--help"]:
     check(opt in text, "--help lists " + opt)
 rc, text = run(src, os.path.join(work, "merge.obj"), "--merge-cone-pairs")
 check(rc == 2 and "--integer-grid" in text, "--merge-cone-pairs without --integer-grid: exit 2: %d %s" % (rc, text))
+rc, text = run(src, os.path.join(work, "quantize.obj"), "--quantize")
+check(rc == 2 and "--integer-grid" in text, "--quantize without --integer-grid: exit 2: %d %s" % (rc, text))
 
 # 6. --outdir: several inputs (the map and the cut mesh), each as a single run would write it, a report per input
 #    and the summary table; a missing input makes the exit status 1 without stopping the others

@@ -131,6 +131,24 @@ check(rc == 1 and "cut mesh" in text and not os.path.exists(out), "cut mesh with
 rc, text = run(cut, out, "--weld", "--no-weld")
 check(rc == 2, "--weld with --no-weld: a command-line error: %d" % rc)
 
+# 1c. the same map with its UVs times 1.3: its translations and cones are integers at no grid scale; refused (the map
+# was never quantized) without --quantize, nothing written; with it, quantized and extracted with every check
+scaled = os.path.join(work, "bear_scaled.obj")
+with open(parallelogram) as f, open(scaled, "w") as g:
+    for line in f:
+        p = line.split()
+        g.write("vt %r %r\n" % (float(p[1]) * 1.3, float(p[2]) * 1.3) if p and p[0] == "vt" else line)
+out = os.path.join(work, "bear_scaled_quads.obj")
+rc, text = run(scaled, out, "--grid-scale", "4")
+check(rc == 1 and "not quantized" in text and "--quantize" in text and not os.path.exists(out),
+      "scaled map without --quantize: refused, nothing written: %d %s" % (rc, text))
+scaled_report = os.path.join(work, "bear_scaled.json")
+rc, text = run(scaled, out, "--grid-scale", "4", "--quantize", "--report", scaled_report)
+rep = json.load(open(scaled_report)) if os.path.exists(scaled_report) else {}
+check(rc == 0 and "verified" in text and os.path.exists(out) and rep.get("snap", {}).get("quantized") is True and
+      rep.get("quad_mesh", {}).get("irregular_vertices") == rep["snap"]["field_cones"] == 4,
+      "scaled map with --quantize: quantized, a verified quad mesh with the 4 cones irregular: %d %s" % (rc, text))
+
 # 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
 folds = os.path.join(work, "folds.obj")
 write_fold_over_grid(folds)
@@ -198,7 +216,8 @@ check(rc == 2 and ".obj, .off or .ply" in text, "unknown output format: %d %s" %
 rc, text = run(parallelogram)
 check(rc == 2, "missing OUT: %d" % rc)
 rc, text = run("--help")
-for opt in ["--weld", "--no-weld", "--grid-scale", "--no-untangle", "--keep-cone-pairs", "--report", "--quiet", "--help"]:
+for opt in ["--weld", "--no-weld", "--grid-scale", "--quantize", "--no-untangle", "--keep-cone-pairs", "--report", "--quiet",
+            "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
 for f in failures:

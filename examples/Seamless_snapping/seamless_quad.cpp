@@ -1,6 +1,6 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
-//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]
+//   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]
 //                 [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
@@ -51,7 +51,7 @@ using SS::IO::internal::json_string;
 namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
-  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--no-untangle] [--keep-cone-pairs]\n"
+  "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]\n"
   "                     [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
 
 static const char* help_text =
@@ -66,7 +66,7 @@ static const char* help_text =
   "number of quads (= the exact UV area) those of the map, irregular vertices exactly the cones.\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
-  "(scale it with --grid-scale), a map left with fold-overs or zero-area UV triangles with two corners\n"
+  "(scale it with --grid-scale, or --quantize it), a map left with fold-overs or zero-area UV triangles with two corners\n"
   "at one point (listed, with the reason the constraints force them in the snap report's \"folds\"; a\n"
   "zero-area triangle with three distinct collinear corners is collapsed onto its long side), a cone of\n"
   "90 degrees (valence 1: no quad mesh has it), a grid too coarse for the surface (cells that wrap\n"
@@ -79,6 +79,13 @@ static const char* help_text =
   "  --no-weld            never weld; a cut mesh is then refused (exit 1: its seams would be borders)\n"
   "  --grid-scale S       the integer grid is at multiples of 1/S in UV (S a power of two); larger S,\n"
   "                       finer quads (S^2 times as many)\n"
+  "  --quantize           a map that is not near an integer-grid map at this grid scale (its translations\n"
+  "                       were never made integers, e.g. Directional's rot-seamless output) gets integer\n"
+  "                       translations chosen for it: each cone onto the integer point nearest to it, the\n"
+  "                       translations from those along the cut graph, rounded where it leaves a choice\n"
+  "                       (quantize(true)); the map then moves by up to a few grid cells, more where the\n"
+  "                       rounding adds up, and is untangled. Refused (exit 1) where the choice contradicts\n"
+  "                       itself around a vertex; a larger --grid-scale makes the cells, and the moves, smaller\n"
   "  --no-untangle        snap the map as it is, without removing its fold-overs (then refused if it\n"
   "                       has any)\n"
   "  --keep-cone-pairs    keep every cone of the map's field: a valence-3 and a valence-5 cone that the\n"
@@ -152,7 +159,7 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::string in, out, report_file, layout_file;
-  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true;
+  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false;
   double grid_scale = 1;
   std::size_t max_grid_cells = SS::default_max_grid_cells;
   unsigned threads = 0;                 // 0: the machine's cores
@@ -164,6 +171,7 @@ int main(int argc, char** argv)
     else if(a == "--quiet") quiet = true;
     else if(a == "--no-untangle") untangle = false;
     else if(a == "--keep-cone-pairs") merge = false;
+    else if(a == "--quantize") quantize = true;
     else if(a == "--grid-scale") {
       char* end = nullptr;
       if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
@@ -238,6 +246,7 @@ int main(int argc, char** argv)
   // 2. snap to an exact integer-grid map (the UVs are written only on success)
   const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle)
                                                                                .merge_cone_pairs(merge).grid_scale(grid_scale)
+                                                                               .quantize(quantize)
                                                                                .number_of_threads(threads));
   if(!quiet && snap.status == SS::SUCCESS)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones; UV triangles flipped / zero-area after "

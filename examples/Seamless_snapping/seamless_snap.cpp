@@ -4,7 +4,7 @@
 //                 [--fail-on-new-flips] [--integer-grid] [--grid-scale S] [--features FILE]
 //                 [--sharp-angle DEG] [--pin FILE] [--vt-per-corner] [--vval FILE] [--report FILE.json]
 //                 [--untangle | --no-untangle] [--max-untangle-change C] [--merge-cone-pairs]
-//                 [--separate-cone-pairs] [--quiet]
+//                 [--separate-cone-pairs] [--quantize] [--quiet]
 //   seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]
 //
 // Reads a triangle mesh with an approximately seamless per-corner UV map (OBJ, f v/vt), snaps the
@@ -60,7 +60,7 @@ static const char* usage_text =
   "                     [--features FILE] [--sharp-angle DEG] [--pin FILE] [--vt-per-corner]\n"
   "                     [--vval FILE] [--report FILE.json] [--untangle | --no-untangle]\n"
   "                     [--max-untangle-change C] [--merge-cone-pairs] [--separate-cone-pairs]\n"
-  "                     [--threads N] [--quiet]\n"
+  "                     [--quantize] [--threads N] [--quiet]\n"
   "       seamless_snap [options] --outdir DIR IN.obj... [--summary FILE.md]\n";
 
 static const char* help_text =
@@ -144,6 +144,13 @@ static const char* help_text =
   "                       'separation_trials') and the one with the fewest defects near it is kept. The report\n"
   "                       lists the pairs ('separated_cone_pairs'). A 90 and a -90 degree cone move as one\n"
   "                       (merge those)\n"
+  "  --quantize           with --integer-grid: a map that is not near an integer-grid map at this grid scale\n"
+  "                       (its translations were never made integers, e.g. Directional's rot-seamless output)\n"
+  "                       gets integer translations chosen for it instead of being refused: each cone onto\n"
+  "                       the integer point nearest to it, the translations from those along the cut graph,\n"
+  "                       rounded where it leaves a choice ('quantized' in the report). The map moves by up to\n"
+  "                       about a grid cell at the cones, more at one cone per part of the cut graph; choose\n"
+  "                       a --grid-scale whose cells are smaller than the distances between the cones\n"
   "  --report FILE.json   write the snap report as JSON to FILE.json (also when snapping fails)\n"
   "  --outdir DIR         several inputs: each IN.obj is snapped (with the same options) into DIR/IN.obj, its\n"
   "                       JSON report into DIR/IN.json (names by file stem: inputs must not share one), then a\n"
@@ -282,7 +289,7 @@ struct Options
 {
   bool weld = false, no_weld = false, keep_layout = false, fail_on_new_flips = false;
   bool align_boundary = true, reduced = true, quiet = false;
-  bool integer_grid = false, merge_cone_pairs = false, separate_cone_pairs = false;
+  bool integer_grid = false, merge_cone_pairs = false, separate_cone_pairs = false, quantize = false;
   int untangle = -1;                 // -1: the default (with --integer-grid)
   double grid_scale = 1, max_untangle_change = HUGE_VAL;
   bool vt_per_corner = false;
@@ -373,7 +380,7 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)
                      .untangle(untangle < 0 ? integer_grid : untangle == 1).max_untangle_change(max_untangle_change)
                      .merge_cone_pairs(o.merge_cone_pairs).separate_cone_pairs(o.separate_cone_pairs)
-                     .number_of_threads(o.threads);
+                     .quantize(o.quantize).number_of_threads(o.threads);
   t = Clock::now();
   const SS::Snap_report report = keep_layout ? SS::snap_seamless_parameterization(V, F, UV, FUV, UV_out, FUV_out, np)
                                              : SS::snap_seamless_parameterization(mesh, uv, np.edge_is_constrained_map(features)
@@ -559,6 +566,7 @@ int main(int argc, char** argv)
     else if(a == "--no-untangle") untangle = untangle == 1 ? 2 : 0;
     else if(a == "--merge-cone-pairs") o.merge_cone_pairs = true;
     else if(a == "--separate-cone-pairs") o.separate_cone_pairs = true;
+    else if(a == "--quantize") o.quantize = true;
     else if(a == "--max-untangle-change") {
       char* end = nullptr;
       if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
@@ -645,6 +653,10 @@ int main(int argc, char** argv)
   if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
   if(o.merge_cone_pairs && !integer_grid) {
     std::cerr << "seamless_snap: --merge-cone-pairs needs --integer-grid (cones are merged on integer points)\n" << usage_text;
+    return 2;
+  }
+  if(o.quantize && !integer_grid) {
+    std::cerr << "seamless_snap: --quantize needs --integer-grid (it chooses integer translations)\n" << usage_text;
     return 2;
   }
   if(o.separate_cone_pairs && !integer_grid) {

@@ -103,7 +103,7 @@ def write_obj(path, V, F, UV, FUV):
 def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
          rotation_tolerance=1.0, alignment_tolerance=1e-3, minimal_change=True, integer_grid_map=False,
          grid_scale=1.0, untangle=None, max_untangle_change=float("inf"), merge_cone_pairs=False,
-         separate_cone_pairs=False, threads=1, raise_on_failure=True):
+         separate_cone_pairs=False, quantize=False, threads=1, raise_on_failure=True):
     """Snap the per-corner UV map (UV, FUV) of the triangle mesh (V, F) to an exactly seamless one.
 
     Returns (UV_out, FUV_out, report): FUV_out equals FUV and UV_out equals UV except for the moved rows
@@ -129,7 +129,13 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     them: the integer translations along that cut change so that each cone lands on a neighbouring integer point
     (report["separated_cone_pairs"]); the field is kept. Where fold-overs are left near a pair, its other ways apart
     are tried, one more snap each (report["separation_trials"]), and the one with the fewest defects near it is kept.
-    A 90 and a -90 degree cone move as one: merge those. `threads=2` (or more; 0 = the machine's cores) runs the steps
+    A 90 and a -90 degree cone move as one: merge those. `quantize=True` (with `integer_grid_map`) gives a map that is
+    not near an integer-grid map at `grid_scale` (its translations were never made integers, e.g. Directional's
+    rot-seamless output or a map before MIQ's integer rounding) integer translations chosen for it instead of
+    refusing it: each cone onto the integer point nearest to it, the translations from those along the cut graph,
+    rounded where it leaves a choice (report["quantized"]); the map moves by up to about a grid cell at the cones (more
+    at one cone per part of the cut graph), so choose a grid_scale whose cells are smaller than the distances between
+    the cones. `threads=2` (or more; 0 = the machine's cores) runs the steps
     that do not depend on each other on two threads (the C++ number_of_threads): the same results, bit for bit.
     """
     if untangle is None:
@@ -138,7 +144,7 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
                                bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
                                float(max_untangle_change), bool(merge_cone_pairs), bool(separate_cone_pairs),
-                               _thread_count(threads))
+                               bool(quantize), _thread_count(threads))
     report = json.loads(text)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

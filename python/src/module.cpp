@@ -86,7 +86,7 @@ std::string write_obj(const std::string& filename, const MatrixXdR& V, const Mat
 py::tuple snap(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
                bool repair_flips, bool align_boundary, bool use_reduced_system, double rotation_tolerance,
                double alignment_tolerance, bool minimal_change, bool integer_grid_map, double grid_scale, bool untangle,
-               double max_untangle_change, bool merge_cone_pairs, bool separate_cone_pairs, unsigned threads)
+               double max_untangle_change, bool merge_cone_pairs, bool separate_cone_pairs, bool quantize, unsigned threads)
 {
   Eigen::MatrixXd UV_out;
   Eigen::MatrixXi FUV_out;
@@ -99,7 +99,7 @@ py::tuple snap(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, cons
                          .alignment_tolerance(alignment_tolerance).minimal_change(minimal_change)
                          .integer_grid_map(integer_grid_map).grid_scale(grid_scale).untangle(untangle)
                          .max_untangle_change(max_untangle_change).merge_cone_pairs(merge_cone_pairs)
-                         .separate_cone_pairs(separate_cone_pairs).number_of_threads(threads));
+                         .separate_cone_pairs(separate_cone_pairs).quantize(quantize).number_of_threads(threads));
   }
   if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json());
   return py::make_tuple(UV_out, FUV_out, r.to_json());
@@ -633,7 +633,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("repair_flips"), py::arg("align_boundary"), py::arg("use_reduced_system"),
         py::arg("rotation_tolerance"), py::arg("alignment_tolerance"), py::arg("minimal_change"),
         py::arg("integer_grid_map"), py::arg("grid_scale"), py::arg("untangle"), py::arg("max_untangle_change"),
-        py::arg("merge_cone_pairs"), py::arg("separate_cone_pairs"), py::arg("threads"));
+        py::arg("merge_cone_pairs"), py::arg("separate_cone_pairs"), py::arg("quantize"), py::arg("threads"));
   m.def("is_exactly_seamless", &is_exactly_seamless, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
         py::arg("weld"));
   m.def("is_exact_integer_grid_map", &is_exact_integer_grid_map, py::arg("V"), py::arg("F"), py::arg("UV"),

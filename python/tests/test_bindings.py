@@ -890,6 +890,28 @@ def test_quad_valences_and_vval(tmp_path):
     assert ss.quad_valences(V, F[:, :2], UV, FUV, raise_on_failure=False)[1]["status"] == "INVALID_INPUT"
 
 
+def test_quantize():
+    # the unit cube's map scaled by 1.3: its translations and cones are integers at no grid scale; quantize=True gives
+    # it integer translations (each cone onto the integer point nearest to it where the cut graph leaves the choice),
+    # and the integer-grid snap makes it exact and fold-free: a quad mesh with the 8 cones as its irregular vertices
+    V, F, UV, FUV = unit_cube()
+    with pytest.raises(ss.SnapError) as e:
+        ss.snap(V, F, UV * 1.3, FUV, integer_grid_map=True, grid_scale=2.0)
+    assert e.value.report["status"] == "INVALID_INPUT" and "not quantized" in e.value.report["message"]
+    assert not e.value.report["quantized"]
+    UV2, FUV2, r = ss.snap(V, F, UV * 1.3, FUV, integer_grid_map=True, grid_scale=2.0, quantize=True)
+    assert r["quantized"] and ss.is_exact_integer_grid_map(V, F, UV2, FUV2, grid_scale=2.0)
+    assert r["flips_after_repair"] == 0 and r["degenerate_after_repair"] == 0 and r["total_max_change_cells"] < 2
+    QV, QF, q = ss.extract_quad_mesh(V, F, UV2, FUV2, grid_scale=2.0)
+    check_quad_mesh(V, F, UV2, FUV2, QV, QF, q, grid_scale=2.0)
+    valence, _ = check_valences_against_quads(V, F, UV2, FUV2, QF, q)
+    assert list(valence) == [3] * 8 and q["irregular_vertices"] == 8
+    # a map near an integer-grid map is rounded as without it, bit for bit
+    UV3, _, r3 = ss.snap(V, F, UV, FUV, integer_grid_map=True, quantize=True)
+    UV4, _, _ = ss.snap(V, F, UV, FUV, integer_grid_map=True)
+    assert not r3["quantized"] and UV3.tobytes() == UV4.tobytes()
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):

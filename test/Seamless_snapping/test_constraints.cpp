@@ -557,7 +557,8 @@ static void test_integer_grid_analytic()
     const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
     assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
     assert(r.message.find("not near an integer-grid map") != std::string::npos);
-    assert(r.message.find("at any grid scale up to 2^30") != std::string::npos && r.message.find("not quantized") != std::string::npos);
+    assert(r.message.find("at any grid scale up to 2^30") != std::string::npos && r.message.find("not quantized") != std::string::npos &&
+           r.message.find("quantize(true)") != std::string::npos);
     std::cout << "integer grid: far from integers refused: " << r.message << "\n";
   }
   // torus of period 2.5: refused at grid scale 1, with the grid scale at which every translation is an integer (2)
@@ -689,6 +690,70 @@ static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report&
 
 // every near-IGM file of the shared data: SUCCESS, exact IGM (checked independently), small change, no new flips
 // (the snap alone: untangle(false))
+// quantize(true): maps that are not near an integer-grid map get integer translations chosen for them (each cone onto
+// the integer point nearest to it, the rest along the cut graph) and snap to exact integer-grid maps; maps that are
+// near one are rounded as without it, bit for bit
+static void test_quantization()
+{
+  const auto quantized = SS::parameters::integer_grid_map(true).quantize(true);
+  // a torus of period 3.4 (no cone: its cut graph is two cycles, each with one free translation, rounded to 3)
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 3.4);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, quantized);
+    if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
+    assert(r.status == SS::SUCCESS && r.quantized && !r.near_integer_grid_map);
+    assert(SS::is_exact_integer_grid_map(m, uv) && r.integer_translations_after == r.cut_edges);
+    assert((r.total_max_change * r.grid_scale) > 0 && (r.total_max_change * r.grid_scale) <= 0.4);
+    std::cout << "quantization: torus of period 3.4: exact integer-grid map, max change " << (r.total_max_change * r.grid_scale) << " cells\n";
+  }
+  // a half-turn cone at (0.25, 0), its translation (0.5, 0): neither on the integers; quantized, the cone moves onto the
+  // nearest integer point (0, 0) and the translation becomes 2 (0, 0) - its own half turn of it, an integer vector
+  {
+    Mesh m; UV_map uv;
+    make_half_turn_cone(m, uv, 0.25, 0);
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report refused = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(refused.status == SS::INVALID_INPUT && !refused.quantized && uv_bits(m, uv) == bits);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, quantized);
+    if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
+    assert(r.status == SS::SUCCESS && r.quantized && r.pinned_cones == 1 && SS::is_exact_integer_grid_map(m, uv));
+    const vertex_descriptor apex(0);
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(m.halfedge(apex), m))
+      if(!m.is_border(h)) assert(get(uv, h) == Point_2(0, 0));
+  }
+  // a map near an integer-grid map: quantize(true) rounds it, the same bits as without
+  {
+    Mesh a; UV_map uva;
+    make_flat_torus(a, uva, 3, 3.0000000001);
+    Mesh b = a; UV_map uvb = uv_of(b);
+    const SS::Snap_report ra = SS::snap_seamless_parameterization(a, uva, quantized);
+    const SS::Snap_report rb = SS::snap_seamless_parameterization(b, uvb, SS::parameters::integer_grid_map(true));
+    assert(ra.status == SS::SUCCESS && rb.status == SS::SUCCESS && !ra.quantized && uv_bits(a, uva) == uv_bits(b, uvb));
+  }
+  // without integer_grid_map it does nothing: the default snap
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 3.4);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::quantize(true));
+    assert(r.status == SS::SUCCESS && !r.quantized && SS::is_exactly_seamless(m, uv) && !SS::is_exact_integer_grid_map(m, uv));
+  }
+  // real maps before their integer rounding (../shared/data): an MIQ map of the retina, whose translations are integers
+  // at no grid scale; quantized at grid scale 8 it snaps to an exact, fold-free integer-grid map (its quad mesh: test_quad)
+  Mesh m;
+  if(!load_shared_or_skip("progressive_embedding/retinal_miq.obj", "quantization: retinal_miq", m)) return;
+  UV_map uv = uv_of(m);
+  const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+  const SS::Snap_report refused = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(8.));
+  assert(refused.status == SS::INVALID_INPUT && refused.message.find("not quantized") != std::string::npos && uv_bits(m, uv) == bits);
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, quantized.grid_scale(8.));
+  if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
+  assert(r.status == SS::SUCCESS && r.quantized && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(8.)));
+  assert(r.flips_after_repair == 0 && r.degenerate_after_repair == 0 && r.pinned_cones == r.field_cones);
+  std::cout << "quantization: retinal_miq at grid scale 8: exact integer-grid map, " << r.field_cones << " cones, max / RMS change "
+            << (r.total_max_change * r.grid_scale) << " / " << (r.total_rms_change * r.grid_scale) << " cells\n";
+}
+
 static void test_integer_grid_data()
 {
   const char* files[] = {"libqex/duck_miq_8_param.obj", "libqex/duck_qc_8_param.obj", "libqex/fandisk_param.obj",
@@ -1494,6 +1559,7 @@ int main(int argc, char** argv)
   test_pinned_corners_data();
   if(!sanitizer_subset()) test_integer_grid_orbifold();
   test_integer_grid_data();
+  test_quantization();
   test_untangling_energy();
   test_untangling_step_bound();
   test_untangling_parts();

@@ -14,10 +14,11 @@
 //  - a successful read gives a mesh with faces;
 //  - on SUCCESS of the snap, is_exactly_seamless() holds (exact rational check);
 //  - on any other status, every halfedge UV is bit-identical to what was read;
-//  - the map as read, snapped with integer_grid_map(true), merge_cone_pairs(true) (as seamless_quad does) and
-//    separate_cone_pairs(true): on SUCCESS, is_exact_integer_grid_map() holds and extract_quad_mesh() either gives
-//    a valid polygon mesh of quads (as many as the exact UV area when no cell was dropped) or refuses with the output
-//    mesh left empty.
+//  - the map as read, snapped with integer_grid_map(true), merge_cone_pairs(true) (as seamless_quad does),
+//    separate_cone_pairs(true) and quantize(true) (a map not near an integer-grid map gets integer translations chosen
+//    for it): on SUCCESS, is_exact_integer_grid_map() holds and extract_quad_mesh() either gives a valid polygon mesh
+//    of quads (as many as the exact UV area when no cell was dropped) or refuses with the output mesh left empty; on
+//    any other status the UVs are those read, bit for bit.
 // Any violation aborts (a finding). Build: -DSEAMLESS_SNAPPING_FUZZ=ON with clang (README.md, "Sanitizers and fuzzing").
 // The bit-for-bit check compares the UVs after a refused snap with those read in the same run: machine independent.
 
@@ -64,9 +65,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   UV_map guv = uv_of(grid);
   if(SS::snap_seamless_parameterization(grid, guv, SS::parameters::integer_grid_map(true).merge_cone_pairs(true)
-                                                              .separate_cone_pairs(true)).status !=
-     SS::SUCCESS)
+                                                              .separate_cone_pairs(true).quantize(true)).status !=
+     SS::SUCCESS) {
+    FUZZ_REQUIRE(uv_bits(grid, guv) == before, "the UV map is untouched on an integer-grid failure");
     return 0;
+  }
   FUZZ_REQUIRE(SS::is_exact_integer_grid_map(grid, guv), "an integer-grid SUCCESS is an exact integer-grid map");
   Mesh quads;
   // a fuzzed map may hold millions of cells (80 triangles with UVs up to 52,000: 22M quads, 7 GB): the bound keeps

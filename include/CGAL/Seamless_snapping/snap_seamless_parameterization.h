@@ -324,6 +324,30 @@ namespace Seamless_snapping {
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::separate_cone_pairs()`; implemented in
  *                     `internal/surface/cone_separation.h`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{quantize}
+ *     \cgalParamDescription{with `integer_grid_map`: a map that is not near an integer-grid map at `grid_scale` (its
+ *                           translations were never made integers: a seamless map such as Directional's rot-seamless output
+ *                           or a map before MIQ's integer rounding) gets integer translations chosen for it instead of
+ *                           `INVALID_INPUT` (beyond the paper: a quantization). The cut graph is peeled from its leaves: a
+ *                           vertex all of whose cut edges but one have integer translations determines that one, a vertex
+ *                           that is not a cone so that the transitions around it compose to the identity, a cone so that
+ *                           its fixed point is the integer point nearest to it; where the graph leaves a choice (its
+ *                           cycles around handles, paths between border vertices) a translation is rounded; in each part of
+ *                           the graph that does not reach the border one cone (of +-90 degrees where there is one) is left
+ *                           to the end and takes the point that the others' rounding gives it. Then the integer-grid snap
+ *                           runs as for any other integer translations, with the untangling (default) and its exact checks:
+ *                           a choice that contradicts itself around a vertex is refused (`INFEASIBLE`), fold-overs left
+ *                           are reported. The map moves by up to about a grid cell at the cones, more at the last cone of
+ *                           each part, and a coarse grid puts cones onto one point: choose a `grid_scale` whose cells are
+ *                           smaller than the distances between the cones (`retinal_miq` of ../shared/data, an MIQ map
+ *                           before its integer rounding: a verified quad mesh from grid scale 8 on, moving the map by at
+ *                           most 1.03 grid cells). Without effect on a map that is near an integer-grid map (its
+ *                           translations are rounded); `Snap_report::quantized` says whether it ran.}
+ *     \cgalParamType{Boolean}
+ *     \cgalParamDefault{`false`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::quantize()`; implemented in
+ *                     `internal/surface/integer_grid_quantization.h`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_point_map}
  *     \cgalParamDescription{the 3D positions of the vertices, for the reference shapes of the untangling (triangles flipped
  *                           or thin in the input and those around wrongly wound vertices take their 3D shape, scaled to the

@@ -36,6 +36,7 @@ enum pinned_corner_map_t { pinned_corner_map }; // halfedge -> bool: the UV of t
 enum untangle_t          { untangle };          // bool: remove fold-overs inside the constraint space (default: integer_grid_map)
 enum merge_cone_pairs_t  { merge_cone_pairs };  // bool: integer-grid mode, merge +-90 degree cone pairs rounded onto one point (default false)
 enum separate_cone_pairs_t { separate_cone_pairs };  // bool: integer-grid mode, move cone pairs rounded onto one point apart (default false)
+enum quantize_t          { quantize };          // bool: integer-grid mode, choose integer translations for a map not near an integer grid (default false)
 enum max_untangle_change_t{ max_untangle_change };// double, grid cells: largest UV move the untangling may make (default: any)
 enum vertex_origin_map_t { vertex_origin_map }; // quad mesh vertex -> Quad_vertex_origin: where it lies on the map (extract_quad_mesh)
 enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector of the map's faces it covers (extract_quad_mesh)
@@ -65,6 +66,7 @@ enum number_of_threads_t { number_of_threads }; // unsigned: threads for indepen
   SS_NP(max_untangle_change_t,     max_untangle_change)      \
   SS_NP(merge_cone_pairs_t,        merge_cone_pairs)         \
   SS_NP(separate_cone_pairs_t,     separate_cone_pairs)      \
+  SS_NP(quantize_t,                quantize)                 \
   SS_NP(vertex_origin_map_t,       vertex_origin_map)        \
   SS_NP(face_origin_map_t,         face_origin_map)          \
   SS_NP(max_grid_cells_t,          max_grid_cells)           \

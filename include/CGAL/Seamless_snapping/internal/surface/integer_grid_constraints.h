@@ -317,7 +317,8 @@ inline Status round_translations(const Corner_mesh& cm, const Seam_topology& st,
                                            "but not quantized (its translations are not integers at any power-of-two "
                                            "scale, as in Directional's rot-seamless output or a map before MIQ's integer "
                                            "rounding; if its grid lines lie at another spacing, scale its UVs by that "
-                                           "first), and this package does not quantize maps: quantize it first"
+                                           "first): quantize it (quantize(true) / --quantize, at a grid scale that "
+                                           "separates its cones)"
                                          : "; scale the map so that its grid lines fall on integers (grid_scale / "
                                            "--grid-scale, a power of two)") +
               ", or snap without integer_grid_map (--integer-grid) for an exactly seamless map";

@@ -100,6 +100,7 @@ struct Snap_inputs
     options.max_untangle_change = choose_parameter(get_parameter(np, snap_np::max_untangle_change), defaults.max_untangle_change);
     options.merge_cone_pairs = choose_parameter(get_parameter(np, snap_np::merge_cone_pairs), defaults.merge_cone_pairs);
     options.separate_cone_pairs = choose_parameter(get_parameter(np, snap_np::separate_cone_pairs), defaults.separate_cone_pairs);
+    options.quantize = choose_parameter(get_parameter(np, snap_np::quantize), defaults.quantize);
     options.threads = number_of_threads_parameter(np, defaults.threads);
     // connection and cycle constraints, in the halfedge numbering of the pipeline
     connection_paths_from_parameter(tm, CGAL::parameters::get_parameter_reference(np, snap_np::connection_constraints),

@@ -48,6 +48,7 @@
 #include <CGAL/Seamless_snapping/internal/projection/least_squares_projection.h>
 #include <CGAL/Seamless_snapping/internal/surface/flip_repair.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/integer_grid_quantization.h>
 #include <CGAL/Seamless_snapping/internal/surface/pinned_corners.h>
 #include <CGAL/Seamless_snapping/internal/surface/propagation.h>
 #include <CGAL/Seamless_snapping/internal/surface/reduced_system.h>
@@ -102,6 +103,8 @@ struct Snap_options
   double max_untangle_change = HUGE_VAL;   // grid cells: an untangled map that moves a UV further is not used
   bool merge_cone_pairs = false;       // integer-grid mode: merge +-90 degree cone pairs rounded onto one point (cone_merging.h)
   bool separate_cone_pairs = false;    // integer-grid mode: move cone pairs rounded onto one point apart (cone_separation.h)
+  bool quantize = false;               // integer-grid mode: a map not near an integer grid gets integer translations
+                                       // chosen for it (integer_grid_quantization.h) instead of being refused
   bool untangle_polish = true;         // step 4b's minimal-change polish (untangler.h); off in the separation trials
   double untangle_budget = 1;          // step 4b's work budget, a fraction of Untangle_options::work_per_face; 1/2 in the trials
   unsigned threads = 1;                // >= 2: independent steps on two threads (internal/threads.h); the same results
@@ -359,8 +362,12 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
                 "(grid_scale / --grid-scale 2^k)";
       return INVALID_INPUT;
     }
-    const Status rounded = round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance, translations, message,
-                                              opt.grid_scale, &S.al);
+    // quantize(true) and a map not near an integer-grid map (a translation, a cone or an align edge off the integers):
+    // integer translations chosen for it instead of rounded
+    report.quantized = opt.quantize && !near_integer_structure(S.cm, S.st, S.rot, S.al, ubar_grid, opt.integer_grid_tolerance);
+    const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, ubar_grid, translations, message)
+                                            : round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance,
+                                                                 translations, message, opt.grid_scale, &S.al);
     if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
       for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
@@ -390,8 +397,10 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
   mark_pinned_nodes(S.cm, S.st, S.pins, S.path_endpoints);
   if(opt.integer_grid_map) {
     Integer_grid_rows_result igm;
+    // a quantized map's cones move to the points its translations give them, its align edges to the nearest isolines
     s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, translations, -(S.cm.uv_exponent + S.grid_exponent),
-                              opt.integer_grid_tolerance, S.full, igm, message, moved, opt.grid_scale);
+                              report.quantized ? HUGE_VAL : opt.integer_grid_tolerance, S.full, igm, message, moved,
+                              opt.grid_scale);
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
       message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
