@@ -338,8 +338,10 @@ inline std::vector<int> first_corners(const Corner_mesh& cm)
 
 // The transitions (rotations k, integer translations t) composed once around the target of corner g0, starting
 // in the chart of face(g0): p -> R^K p + T, K in 0..3
-inline void compose_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                           const std::vector<long>& t, int g0, int& K, long T[2])
+// (the same for translations of any number type: integer_grid_quantization.h composes the input's real ones too)
+template <class Number>
+void compose_translations_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                 const std::vector<Number>& t, int g0, int& K, Number T[2])
 {
   K = 0; T[0] = 0; T[1] = 0;
   int g = g0;
@@ -347,13 +349,19 @@ inline void compose_around(const Corner_mesh& cm, const Seam_topology& st, const
     const int crossed = cm.next[g];          // source(crossed) = target(g0)
     if(st.is_cut[cm.edge[crossed]]) {
       const Quarter_turn R(rot.k[crossed]);
-      const long T0 = R.sign[0] * T[R.col[0]] + t[2 * crossed], T1 = R.sign[1] * T[R.col[1]] + t[2 * crossed + 1];
+      const Number T0 = R.sign[0] * T[R.col[0]] + t[2 * crossed], T1 = R.sign[1] * T[R.col[1]] + t[2 * crossed + 1];
       T[0] = T0; T[1] = T1;
       K += rot.k[crossed];
     }
     g = cm.opp[crossed];
   } while(g != g0);
   K = ((K % 4) + 4) % 4;
+}
+
+inline void compose_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                           const std::vector<long>& t, int g0, int& K, long T[2])
+{
+  compose_translations_around(cm, st, rot, t, g0, K, T);
 }
 
 // 2p for the fixed point p of q -> R^K q + T, K = 1, 2, 3: (I - R^K) p = T gives p = T/2 (K = 2),

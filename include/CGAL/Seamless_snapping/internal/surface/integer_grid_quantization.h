@@ -13,17 +13,20 @@
 // Quantization (quantize(true), beyond the paper): integer translations for the cut edges of a seamless map that is
 // not near an integer-grid map (a map whose translations were never made integers, e.g. Directional's rot-seamless
 // output), chosen so that around every interior vertex the transitions compose to the identity where it is not a cone,
-// and to a rotation about an integer point where it is one, that point the one nearest to the cone in the map.
+// and to a rotation about an integer point next to the cone (within a grid cell of it in each coordinate) where it is one.
 //
 // The cut graph is peeled from its leaves: an interior vertex all of whose cut edges but one have their translations
 // determines that one from its own condition (the composition around it is linear in that translation, through a
-// rotation, so it is solved exactly in integers): a vertex that is not a cone composes to the identity; a cone's fixed
-// point is the integer point nearest to its position. Where no such vertex is left (cycles of the cut graph, around the
-// handles of the surface; cut paths that end on the border, whose border vertices have no condition), one cut edge
-// that has none takes its translation rounded. A vertex whose cut edges were all determined from elsewhere (the last
-// one of each tree of the cut graph, where the others' rounding adds up) is not solved for: add_integer_grid_rows()
-// checks every vertex exactly afterwards and refuses (INFEASIBLE, nothing written) where its condition fails, as for
-// any other choice of integer translations.
+// rotation, so it is solved exactly in integers): a vertex that is not a cone composes to the identity; a cone takes,
+// of the four integer points around its position, the one that brings that translation nearest to the input's (error
+// diffusion: the rounding of the parts already peeled reaches it through the known translations, and each cone takes
+// up what it can, so that it does not add up along the graph: on the rot-seamless dragon of ../shared/data, 870 cones,
+// the largest change of the map at grid scale 16 drops from 26 to 3.7 grid cells, RMS 1.08 -> 0.22, against each cone
+// at its nearest point). Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
+// paths between border vertices, which have no condition) one cut edge that has none takes its translation rounded. In
+// each part of the graph that does not reach the border, one cone is left to the end (quantization_roots()) and takes
+// the point that the others' choices give it. add_integer_grid_rows() checks every vertex exactly afterwards and
+// refuses (INFEASIBLE, nothing written) where a condition fails, as for any other choice of integer translations.
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
@@ -76,21 +79,81 @@ inline std::vector<char> quantization_roots(const Corner_mesh& cm, const Seam_to
   return root;
 }
 
-// `ubar`: the sector values in grid units. `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
-// (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
-inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const std::vector<double>& ubar, std::vector<long>& t, std::string& message)
+// The integer point nearest to the cone at v (its first corner's sector, grid units); false (with `message`) if it
+// lies 2^52 grid units or more from the origin
+inline bool nearest_cone_point(const Seam_topology& st, const std::vector<double>& ubar, const std::vector<int>& corner_of,
+                               int v, long p[2], std::string& message)
 {
-  t.assign(2 * std::size_t(cm.n_halfedges), 0);
+  const int s = st.sector_of[std::size_t(corner_of[std::size_t(v)])];
+  for(int c = 0; c < 2; ++c) {
+    const double x = std::nearbyint(ubar[2 * std::size_t(s) + std::size_t(c)]);
+    if(!(std::fabs(x) < 0x1p52)) {
+      message = "cone at vertex " + std::to_string(v) + " lies 2^52 grid units or more from the origin, beyond the "
+                "integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+      return false;
+    }
+    p[c] = long(x);
+  }
+  return true;
+}
+
+// The integer point p of a cone at target(g0) whose last open cut edge is `crossed`, given the composition T0 of the
+// integer translations around it (that of `crossed` 0): of the integer points next to its input position x (floor or
+// ceiling in each coordinate), the one whose translation of `crossed` is nearest the input's: the translations of the
+// known edges differ from the input's (their rounding, from the parts of the cut graph already peeled) by E = T0 - T0bar
+// (T0bar: the same composition of the input's translations), and the translation of `crossed` then differs from the
+// input's by M^T ((I - R^K)(p - x) - E), M a rotation: p minimizes |(I - R^K)(p - x) - E| (error diffusion: each cone
+// takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). `p` holds the
+// nearest point on input.
+inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
+                             std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long p[2])
+{
+  const double saved[2] = {tbar[2 * std::size_t(crossed)], tbar[2 * std::size_t(crossed) + 1]};
+  tbar[2 * std::size_t(crossed)] = 0; tbar[2 * std::size_t(crossed) + 1] = 0;
+  int Kb;
+  double Tb[2];
+  compose_translations_around(cm, st, rot, tbar, g0, Kb, Tb);
+  tbar[2 * std::size_t(crossed)] = saved[0]; tbar[2 * std::size_t(crossed) + 1] = saved[1];
+  const int s = st.sector_of[std::size_t(g0)];
+  const double x[2] = {ubar[2 * std::size_t(s)], ubar[2 * std::size_t(s) + 1]};
+  const double E[2] = {double(T0[0]) - Tb[0], double(T0[1]) - Tb[1]};
+  const Quarter_turn R(K);
+  double best = HUGE_VAL;
+  long chosen[2] = {p[0], p[1]};
+  for(int a = 0; a < 2; ++a)
+    for(int b = 0; b < 2; ++b) {
+      const long q[2] = {long(a == 0 ? std::floor(x[0]) : std::ceil(x[0])), long(b == 0 ? std::floor(x[1]) : std::ceil(x[1]))};
+      const double d[2] = {double(q[0]) - x[0], double(q[1]) - x[1]};
+      double err = 0;
+      for(int c = 0; c < 2; ++c) {
+        const double r = d[c] - R.sign[c] * d[R.col[c]] - E[c];
+        err += r * r;
+      }
+      err += 1e-9 * (d[0] * d[0] + d[1] * d[1]);                 // ties: the point nearest to the input
+      if(err < best) { best = err; chosen[0] = q[0]; chosen[1] = q[1]; }
+    }
+  p[0] = chosen[0]; p[1] = chosen[1];
+}
+
+// The peeling of the cut graph (see the header) into t (its cut halfedges' entries; the others stay 0), each cone that
+// determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end.
+inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                             const std::vector<double>& ubar, const std::vector<int>& corner_of, const std::vector<char>& root,
+                             std::vector<long>& t, std::string& message)
+{
+  std::vector<double> tbar(t.size(), 0.);                       // the input's real translations, at their sources
+  for(int e : st.cut_edges) {
+    const int h = cm.edge_halfedge[std::size_t(e)];
+    for(int g : {h, cm.opp[h]}) translation(cm, st, rot, g, true, ubar, &tbar[2 * std::size_t(g)]);
+  }
   std::vector<char> known(std::size_t(cm.n_edges), 0);
   std::vector<int> open(std::size_t(cm.n_vertices), 0);        // per vertex: its cut edges without a translation yet
   for(int e : st.cut_edges) {
     const int h = cm.edge_halfedge[std::size_t(e)];
+    for(int g : {h, cm.opp[h]}) { t[2 * std::size_t(g)] = 0; t[2 * std::size_t(g) + 1] = 0; }
     ++open[std::size_t(cm.target[h])];
     ++open[std::size_t(cm.target[cm.opp[h]])];
   }
-  const std::vector<int> corner_of = first_corners(cm);
-  const std::vector<char> root = quantization_roots(cm, st, rot, corner_of);
   std::deque<int> ready;                                        // interior vertices with one cut edge open
   auto is_ready = [&](int v) {
     return open[std::size_t(v)] == 1 && !cm.vertex_on_border[v] && corner_of[std::size_t(v)] >= 0 && !root[std::size_t(v)];
@@ -101,12 +164,6 @@ inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& 
     known[std::size_t(cm.edge[h])] = 1;
     for(int v : {cm.target[h], cm.target[cm.opp[h]]})
       if(--open[std::size_t(v)] == 1 && is_ready(v)) ready.push_back(v);
-  };
-  auto too_far = [&](double x, const std::string& what) {
-    if(std::fabs(x) < 0x1p52) return false;
-    message = what + " lies 2^52 grid units or more from the origin, beyond the integers an integer-grid map holds "
-              "exactly; scale the map down (grid_scale / --grid-scale)";
-    return true;
   };
   std::size_t next_free = 0;                                    // st.cut_edges before it all have translations
   for(;;) {
@@ -133,12 +190,10 @@ inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& 
         M[0][c] = Tc[0] - T0[0]; M[1][c] = Tc[1] - T0[1];
       }
       long need[2] = {0, 0};
-      if(K % 4 != 0) {                                          // a cone: its fixed point, the integer point nearest to it
-        const int s = st.sector_of[g0];
-        const double pu = std::nearbyint(ubar[2 * std::size_t(s)]), pv = std::nearbyint(ubar[2 * std::size_t(s) + 1]);
-        if(too_far(pu, "cone at vertex " + std::to_string(v)) || too_far(pv, "cone at vertex " + std::to_string(v)))
-          return RANGE_EXCEEDED;
-        const long p[2] = {long(pu), long(pv)};
+      if(K % 4 != 0) {                                          // a cone: its fixed point, an integer point next to it
+        long p[2];
+        if(!nearest_cone_point(st, ubar, corner_of, v, p, message)) return RANGE_EXCEEDED;
+        diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
         const Quarter_turn R(K);
         for(int c = 0; c < 2; ++c) need[c] = p[c] - R.sign[c] * p[R.col[c]];
       }
@@ -158,11 +213,25 @@ inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& 
     double ta[2];
     translation(cm, st, rot, h, true, ubar, ta);
     for(int c = 0; c < 2; ++c) {
-      if(too_far(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h))) return RANGE_EXCEEDED;
+      if(!(std::fabs(ta[c]) < 0x1p52)) {
+        message = "the translation of cut edge " + vertex_pair_name(cm, h) + " lies 2^52 grid units or more from the origin, "
+                  "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+        return RANGE_EXCEEDED;
+      }
       t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
     }
     settle(h);
   }
+}
+
+// `ubar`: the sector values in grid units. `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
+// (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
+inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                    const std::vector<double>& ubar, std::vector<long>& t, std::string& message)
+{
+  t.assign(2 * std::size_t(cm.n_halfedges), 0);
+  const std::vector<int> corner_of = first_corners(cm);
+  return peel_cut_graph(cm, st, rot, ubar, corner_of, quantization_roots(cm, st, rot, corner_of), t, message);
 }
 
 } // namespace internal
