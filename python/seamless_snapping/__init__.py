@@ -132,10 +132,10 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     A 90 and a -90 degree cone move as one: merge those. `quantize=True` (with `integer_grid_map`) gives a map that is
     not near an integer-grid map at `grid_scale` (its translations were never made integers, e.g. Directional's
     rot-seamless output or a map before MIQ's integer rounding) integer translations chosen for it instead of
-    refusing it: each cone onto the integer point nearest to it, the translations from those along the cut graph,
-    rounded where it leaves a choice (report["quantized"]); the map moves by up to about a grid cell at the cones (more
-    at one cone per part of the cut graph), so choose a grid_scale whose cells are smaller than the distances between
-    the cones. `threads=2` (or more; 0 = the machine's cores) runs the steps
+    refusing it: each cone onto an integer point next to it (of the four around it, the one that keeps the translations
+    nearest the map's), the translations from those along the cut graph, rounded where it leaves a choice
+    (report["quantized"]); the map moves by up to a few grid cells, so choose a grid_scale whose cells are smaller than
+    the distances between the cones. `threads=2` (or more; 0 = the machine's cores) runs the steps
     that do not depend on each other on two threads (the C++ number_of_threads): the same results, bit for bit.
     """
     if untangle is None:

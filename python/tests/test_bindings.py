@@ -892,7 +892,7 @@ def test_quad_valences_and_vval(tmp_path):
 
 def test_quantize():
     # the unit cube's map scaled by 1.3: its translations and cones are integers at no grid scale; quantize=True gives
-    # it integer translations (each cone onto the integer point nearest to it where the cut graph leaves the choice),
+    # it integer translations (each cone onto one of the four integer points around it),
     # and the integer-grid snap makes it exact and fold-free: a quad mesh with the 8 cones as its irregular vertices
     V, F, UV, FUV = unit_cube()
     with pytest.raises(ss.SnapError) as e:

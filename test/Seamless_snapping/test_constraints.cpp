@@ -691,7 +691,7 @@ static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report&
 // every near-IGM file of the shared data: SUCCESS, exact IGM (checked independently), small change, no new flips
 // (the snap alone: untangle(false))
 // quantize(true): maps that are not near an integer-grid map get integer translations chosen for them (each cone onto
-// the integer point nearest to it, the rest along the cut graph) and snap to exact integer-grid maps; maps that are
+// one of the four integer points around it, the rest along the cut graph) and snap to exact integer-grid maps; maps that are
 // near one are rounded as without it, bit for bit
 static void test_quantization()
 {
