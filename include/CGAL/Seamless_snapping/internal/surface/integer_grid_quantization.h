@@ -198,7 +198,15 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         for(int c = 0; c < 2; ++c) need[c] = p[c] - R.sign[c] * p[R.col[c]];
       }
       const long b[2] = {need[0] - T0[0], need[1] - T0[1]};
-      for(int c = 0; c < 2; ++c) t[2 * std::size_t(crossed) + std::size_t(c)] = M[0][c] * b[0] + M[1][c] * b[1];   // M^T b
+      for(int c = 0; c < 2; ++c) {
+        const long x = M[0][c] * b[0] + M[1][c] * b[1];                                      // M^T b
+        if(!(std::labs(x) < (1L << 52))) {     // (the known translations and the points are below 2^52: no overflow)
+          message = "the translation chosen for cut edge " + vertex_pair_name(cm, crossed) + " is 2^52 grid units or more, "
+                    "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+          return RANGE_EXCEEDED;
+        }
+        t[2 * std::size_t(crossed) + std::size_t(c)] = x;
+      }
       settle(crossed);
     }
     while(next_free < st.cut_edges.size() && known[std::size_t(st.cut_edges[next_free])]) ++next_free;
