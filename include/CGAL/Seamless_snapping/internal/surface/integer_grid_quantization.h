@@ -47,16 +47,16 @@ namespace internal {
 // in each part without a border vertex (a border vertex has no condition: the part is peeled towards it), a cone,
 // one of +-90 degrees if there is one (a rotation by a quarter turn has an integer fixed point wherever the
 // translation's coordinates add up to an even number, which the quarter-turn cones' contributions do; a half turn
-// asks for both even), the one of least index. Without a cone the part has no root.
+// asks for both even), the one of least index. Without a cone the part has no root. `zero_t`: translations that are all
+// 0 (only the rotations of the compositions around the vertices are read).
 inline std::vector<char> quantization_roots(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                            const std::vector<int>& corner_of)
+                                            const std::vector<int>& corner_of, const std::vector<long>& zero_t)
 {
   Union_find part(cm.n_vertices);                               // the parts of the cut graph
   for(int e : st.cut_edges) {
     const int h = cm.edge_halfedge[std::size_t(e)];
     part.unite(cm.target[h], cm.target[cm.opp[h]]);
   }
-  const std::vector<long> zero(2 * std::size_t(cm.n_halfedges), 0);
   std::vector<char> bordered(std::size_t(cm.n_vertices), 0);
   std::vector<int> best(std::size_t(cm.n_vertices), -1), best_k(std::size_t(cm.n_vertices), 0);
   for(int v = 0; v < cm.n_vertices; ++v) {
@@ -66,7 +66,7 @@ inline std::vector<char> quantization_roots(const Corner_mesh& cm, const Seam_to
     if(corner_of[std::size_t(v)] < 0) continue;
     int K;
     long T[2];
-    compose_around(cm, st, rot, zero, corner_of[std::size_t(v)], K, T);
+    compose_around(cm, st, rot, zero_t, corner_of[std::size_t(v)], K, T);
     const bool quarter = K % 2 != 0;
     if(K % 4 != 0 && (best[std::size_t(p)] < 0 || (quarter && best_k[std::size_t(p)] % 2 == 0))) {
       best[std::size_t(p)] = v;
@@ -239,7 +239,8 @@ inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& 
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   const std::vector<int> corner_of = first_corners(cm);
-  return peel_cut_graph(cm, st, rot, ubar, corner_of, quantization_roots(cm, st, rot, corner_of), t, message);
+  const std::vector<char> root = quantization_roots(cm, st, rot, corner_of, t);   // t: all 0 yet
+  return peel_cut_graph(cm, st, rot, ubar, corner_of, root, t, message);
 }
 
 } // namespace internal
