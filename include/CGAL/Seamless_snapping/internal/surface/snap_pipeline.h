@@ -746,7 +746,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   untangle_options.polish = opt.untangle_polish;
   untangle_options.work_per_face *= opt.untangle_budget;
   untangle_options.threads = opt.threads;
-  Status s = untangler.run(y, untangle_options, stats, message);
+  Status s = untangler.run(y, untangle_options, stats, message, &turns);
   if(s != SUCCESS) return s;
   report.untangle_rings = stats.rings;
   report.untangle_polish_ms = stats.polish_ms;

@@ -154,12 +154,14 @@ public:
   // orientation after the snap follows moves far below a grid cell; the
   // change and the sectors moved the same or smaller, e.g. the dragon's 11430 -> 10366 sectors
   // and max / RMS 1.39 / 0.050 -> 1.39 / 0.046 cells, its IGM with pairs merged 1.28 / 0.051 -> 1.16 / 0.048)
-  Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message)
+  // `turns`: the angle sums of x per vertex (vertex_quarter_turns()), where the caller has them
+  Status run(std::vector<double>& x, const Untangle_options& opt, Untangle_statistics& stats, std::string& message,
+             const std::vector<int>* turns = nullptr)
   {
     stats = Untangle_statistics();
     budget_ = opt.work_per_face * double(fc_.halfedge.size());
     const std::vector<double> target = x;
-    Map_state state = map_state(x);
+    Map_state state = map_state(x, turns);
     for(int sweep = 0; sweep < 2; ++sweep) {
       for(int k : sweep == 0 ? opt.rings : opt.wound_rings) {
         if(stats.work > budget_) { stats.budget_spent = true; break; }
@@ -181,7 +183,7 @@ public:
       if(s != SUCCESS) return s;
     }
     stats.not_positive = 0;
-    for(signed char c : map_state(x).face) stats.not_positive += c == NON_POSITIVE ? 1 : 0;
+    for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) stats.not_positive += !excluded_[f] && !(face_det(int(f), x) > 0) ? 1 : 0;
     return SUCCESS;
   }
 
@@ -208,10 +210,10 @@ private:
     return GOOD;
   }
 
-  Map_state map_state(const std::vector<double>& x) const
+  Map_state map_state(const std::vector<double>& x, const std::vector<int>* turns) const
   {
     Map_state m;
-    m.turns = vertex_quarter_turns(cm_, st_, x, face_orientations(cm_, st_, x));
+    m.turns = turns != nullptr ? *turns : vertex_quarter_turns(cm_, st_, x, face_orientations(cm_, st_, x));
     m.face.resize(fc_.halfedge.size());
     for(std::size_t f = 0; f < fc_.halfedge.size(); ++f) m.face[f] = face_state(f, x, m.turns);
     return m;
@@ -223,12 +225,15 @@ private:
   Map_state updated_state(const Map_state& base, const std::vector<double>& y, const std::vector<int>& moved) const
   {
     Map_state m = base;
-    std::vector<char> seen(std::size_t(cm_.n_vertices), 0), done(fc_.halfedge.size(), 0);
+    std::vector<char> seen(std::size_t(cm_.n_vertices), 0), done(fc_.halfedge.size(), 0), was_moved = seen;
     std::vector<int> changed, corners;
-    for(int v : moved)
+    for(int v : moved) {
+      if(was_moved[std::size_t(v)]) continue;                  // `moved` repeats a vertex per variable of its sectors
+      was_moved[std::size_t(v)] = 1;
       for(int f : fc_.vertex_faces[v])
         for(int h : fc_.halfedge[std::size_t(f)])
           if(!seen[std::size_t(cm_.target[h])]) { seen[std::size_t(cm_.target[h])] = 1; changed.push_back(cm_.target[h]); }
+    }
     for(int w : changed) {
       corners.clear();
       for(int f : fc_.vertex_faces[w])
