@@ -38,22 +38,70 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace internal {
 
+// A symmetric matrix stored as the upper triangle of P M P^T, P its fill-reducing order (AMD), and its LDL^T: the
+// order is applied once to the pattern instead of to the values at every factorization (Eigen's SimplicialLDLT with
+// AMDOrdering permutes M each time: about 3 % of the untangling of the 302K-face bunny of ../shared/large). The same
+// order, the same matrix handed to the same factorization, the same solves: the same bits.
+struct Permuted_ldlt
+{
+  Region_problem::Matrix M;                           // upper triangle of P M P^T
+  std::vector<int> diagonal;                          // per row of the unpermuted M: where its diagonal entry is in M
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P, Pinv;
+  Eigen::SimplicialLDLT<Region_problem::Matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt;
+
+  // from the lower triangle `lower` of M (pattern; every diagonal entry stored); `moved`: per value of M, the index of
+  // the value of `lower` it holds
+  void analyze(const Region_problem::Matrix& lower, std::vector<int>& moved)
+  {
+    const Eigen::Index m = lower.rows();
+    {
+      Region_problem::Matrix full;
+      full = lower.selfadjointView<Eigen::Lower>();     // as Eigen's ordering step does
+      Eigen::AMDOrdering<int> amd;
+      amd(full, Pinv);
+    }
+    P = Pinv.inverse();
+    Region_problem::Matrix tagged = lower;              // values: their own indices (exact in double)
+    for(Eigen::Index k = 0; k < tagged.nonZeros(); ++k) tagged.valuePtr()[k] = double(k);
+    M.resize(m, m);
+    M.selfadjointView<Eigen::Upper>() = tagged.selfadjointView<Eigen::Lower>().twistedBy(P);
+    std::vector<int> position(std::size_t(lower.nonZeros()), -1);
+    moved.resize(std::size_t(M.nonZeros()));
+    for(Eigen::Index q = 0; q < M.nonZeros(); ++q) {
+      moved[std::size_t(q)] = int(M.valuePtr()[q]);
+      position[std::size_t(moved[std::size_t(q)])] = int(q);
+      M.valuePtr()[q] = 0;
+    }
+    diagonal.resize(std::size_t(m));
+    for(Eigen::Index j = 0; j < m; ++j)
+      for(int k = lower.outerIndexPtr()[j]; k < lower.outerIndexPtr()[j + 1]; ++k)
+        if(lower.innerIndexPtr()[k] == j) diagonal[std::size_t(j)] = position[std::size_t(k)];
+    ldlt.analyzePattern(M);
+  }
+
+  // x = M^-1 b (unpermuted), from the last factorization
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  {
+    Eigen::VectorXd x = P * b;
+    x = ldlt.solve(x);
+    return Pinv * x;
+  }
+};
+
 // d = -(M + mu I)^-1 g for the smallest mu = s, 100 s, ..., 1e10 s (s = 1e-10 times the mean diagonal) for
 // which the LDL^T of M + mu I succeeds (a small shift makes a PSD matrix definite); M holds the PSD Hessian
-// (lower triangle, its diagonal entries at `diagonal`) and keeps the shift. Steepest descent if none factors.
-// True if d is a descent direction.
-inline bool shifted_newton_solve(Eigen::SimplicialLDLT<Region_problem::Matrix>& ldlt, Region_problem::Matrix& M,
-                                 const std::vector<int>& diagonal, const Eigen::VectorXd& g, Eigen::VectorXd& d)
+// and keeps the shift. Steepest descent if none factors. True if d is a descent direction.
+inline bool shifted_newton_solve(Permuted_ldlt& F, const Eigen::VectorXd& g, Eigen::VectorXd& d)
 {
   double trace = 0;
-  for(int k : diagonal) trace += M.valuePtr()[k];
+  for(int k : F.diagonal) trace += F.M.valuePtr()[k];
   const double shift = 1e-10 * (trace > 0 ? trace / double(g.size()) : 1.);
   double added = 0;
   for(double mu = shift; mu <= 1e10 * shift; mu *= 100) {
-    for(int k : diagonal) M.valuePtr()[k] += mu - added;
+    for(int k : F.diagonal) F.M.valuePtr()[k] += mu - added;
     added = mu;
-    ldlt.factorize(M);
-    if(ldlt.info() == Eigen::Success) { d = ldlt.solve(-g); if(d.allFinite()) return g.dot(d) < 0; }
+    F.ldlt.factorize(F.M);
+    if(F.ldlt.info() == Eigen::Success) { d = F.solve(-g); if(d.allFinite()) return g.dot(d) < 0; }
   }
   d = -g;
   return g.dot(d) < 0;
@@ -98,7 +146,6 @@ public:
       Block& b = *blocks_[c];
       for(int k = H.outerIndexPtr()[col]; k < H.outerIndexPtr()[col + 1]; ++k) {
         const int row = H.innerIndexPtr()[k];
-        if(row == col) b.diagonal.push_back(int(inner[c].size()));
         inner[c].push_back(local[std::size_t(row)]);
         b.source.push_back(k);
       }
@@ -108,8 +155,13 @@ public:
       Block& b = *blocks_[c];
       const std::vector<double> zeros(inner[c].size(), 0.);
       const Eigen::Index m = Eigen::Index(b.w.size());
-      b.M = Eigen::Map<const Region_problem::Matrix>(m, m, Eigen::Index(zeros.size()), outer[c].data(), inner[c].data(), zeros.data());
-      b.ldlt.analyzePattern(b.M);
+      const Region_problem::Matrix lower =
+        Eigen::Map<const Region_problem::Matrix>(m, m, Eigen::Index(zeros.size()), outer[c].data(), inner[c].data(), zeros.data());
+      std::vector<int> moved;
+      b.F.analyze(lower, moved);
+      std::vector<int> source(moved.size());
+      for(std::size_t q = 0; q < moved.size(); ++q) source[q] = b.source[std::size_t(moved[q])];
+      b.source.swap(source);
     }
   }
 
@@ -256,7 +308,7 @@ private:
       if(!which[std::size_t(c)]) continue;
       Block& b = *blocks_[std::size_t(c)];
       if(!refactor && b.factored) {
-        const Eigen::VectorXd gc = gather(b, g), dc = b.ldlt.solve(-gc);
+        const Eigen::VectorXd gc = gather(b, g), dc = b.F.solve(-gc);
         if(dc.allFinite() && gc.dot(dc) < 0) { scatter(b, dc, d); continue; }
       }
       todo.push_back(c);
@@ -267,9 +319,9 @@ private:
     }
     for(int c : todo) {
       Block& b = *blocks_[std::size_t(c)];
-      for(std::size_t k = 0; k < b.source.size(); ++k) b.M.valuePtr()[k] = p.H.valuePtr()[b.source[k]];
+      for(std::size_t k = 0; k < b.source.size(); ++k) b.F.M.valuePtr()[k] = p.H.valuePtr()[b.source[k]];
       Eigen::VectorXd dc;
-      b.factored = shifted_newton_solve(b.ldlt, b.M, b.diagonal, gather(b, g), dc) && b.ldlt.info() == Eigen::Success;
+      b.factored = shifted_newton_solve(b.F, gather(b, g), dc) && b.F.ldlt.info() == Eigen::Success;
       scatter(b, dc, d);
     }
     for(std::size_t i = 0; i < of_w.size(); ++i) slope[std::size_t(of_w[i])] += g[Eigen::Index(i)] * d[Eigen::Index(i)];
@@ -313,10 +365,8 @@ private:
   struct Block
   {
     std::vector<int> w;                 // the part's w, increasing
-    std::vector<int> source;            // per value of M: its index in the values of Region_problem::H
-    std::vector<int> diagonal;          // per w: index of (w, w) in M's values
-    Region_problem::Matrix M;           // the part's block of H
-    Eigen::SimplicialLDLT<Region_problem::Matrix> ldlt;
+    std::vector<int> source;            // per value of F.M: its index in the values of Region_problem::H
+    Permuted_ldlt F;                    // the part's block of H and its factorization
     bool factored = false;
   };
 
