@@ -218,7 +218,7 @@ public:
     std::vector<double> E1 = E, D1 = D;               // each half writes only its parts' entries of w
     double evaluations[2] = {0, 0};
     if(in_halves(which, [&](std::vector<char>& part, int h) {
-         evaluations[h] = search_of(p, w, d, slope, t, eps, weight, tolerance, part, h ? E1 : E, h ? D1 : D);
+         evaluations[h] = search_of(p, w, d, slope, t, eps, weight, tolerance, part, h ? E1 : E, h ? D1 : D, trial_[h]);
        })) {
       take_second_half(E1, E);
       take_second_half(D1, D);
@@ -324,23 +324,26 @@ private:
       b.factored = shifted_newton_solve(b.F, gather(b, g), dc) && b.F.ldlt.info() == Eigen::Success;
       scatter(b, dc, d);
     }
-    for(std::size_t i = 0; i < of_w.size(); ++i) slope[std::size_t(of_w[i])] += g[Eigen::Index(i)] * d[Eigen::Index(i)];
-    for(int c = 0; c < n; ++c) if(!(slope[std::size_t(c)] < 0)) which[std::size_t(c)] = 0;
+    for(std::size_t c = 0; c < std::size_t(n); ++c) {
+      if(!which[c]) continue;
+      for(int i : blocks_[c]->w) slope[c] += g[i] * d[i];
+      if(!(slope[c] < 0)) which[c] = 0;
+    }
   }
 
-  // line_search() of the parts with `which` set; reads and writes the entries of w of those parts only
+  // line_search() of the parts with `which` set; reads and writes the entries of w of those parts only (and of
+  // `trial`, the half's buffer of the size of w)
   double search_of(const Region_problem& p, std::vector<double>& w, const Eigen::VectorXd& d, const std::vector<double>& slope,
                    std::vector<double> t, const std::vector<double>& eps, double weight, double tolerance,
-                   std::vector<char>& which, std::vector<double>& E, std::vector<double>& D) const
+                   std::vector<char>& which, std::vector<double>& E, std::vector<double>& D, std::vector<double>& trial) const
   {
     std::vector<char> pending = which, accepted;
-    std::vector<double> trial(w.size()), E_new, D_new;   // the energy of the pending parts reads only their entries
+    std::vector<double> E_new, D_new;                  // the energy of the pending parts reads only their entries of trial
+    trial.resize(w.size());
     double evaluations = 0;
     for(int ls = 0; ls < 40 && any(pending); ++ls) {
-      for(std::size_t i = 0; i < w.size(); ++i) {
-        const std::size_t c = std::size_t(of_w[i]);
-        if(pending[c]) trial[i] = w[i] + t[c] * d[Eigen::Index(i)];
-      }
+      for(std::size_t c = 0; c < std::size_t(n); ++c)
+        if(pending[c]) for(int i : blocks_[c]->w) trial[std::size_t(i)] = w[std::size_t(i)] + t[c] * d[i];
       evaluations += work(pending);
       values_of(p, trial, eps, weight, pending, E_new, D_new, nullptr);
       accepted.assign(std::size_t(n), 0);
@@ -356,7 +359,8 @@ private:
           t[c] *= 0.5;
         }
       }
-      for(std::size_t i = 0; i < w.size(); ++i) if(accepted[std::size_t(of_w[i])]) w[i] = trial[i];
+      for(std::size_t c = 0; c < std::size_t(n); ++c)
+        if(accepted[c]) for(int i : blocks_[c]->w) w[std::size_t(i)] = trial[std::size_t(i)];
     }
     for(std::size_t c = 0; c < std::size_t(n); ++c) if(pending[c]) which[c] = 0;   // no decrease found
     return evaluations;
@@ -384,6 +388,7 @@ private:
   std::vector<std::unique_ptr<Block> > blocks_;
   unsigned threads_ = 1;
   std::vector<char> half_;              // per part: the half it belongs to (0 or 1)
+  mutable std::vector<double> trial_[2];// per half: the trial w of its line searches (search_of())
 };
 
 } // namespace internal
