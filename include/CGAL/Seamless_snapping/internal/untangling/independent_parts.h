@@ -45,12 +45,12 @@ namespace internal {
 struct Permuted_ldlt
 {
   Region_problem::Matrix M;                           // upper triangle of P M P^T
-  std::vector<int> diagonal;                          // per row of the unpermuted M: where its diagonal entry is in M
+  std::vector<int> diagonal;                          // per stored diagonal entry, in the order of the unpermuted M's
+                                                      // columns: its place in M's values
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P, Pinv;
   Eigen::SimplicialLDLT<Region_problem::Matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt;
 
-  // from the lower triangle `lower` of M (pattern; every diagonal entry stored); `moved`: per value of M, the index of
-  // the value of `lower` it holds
+  // from the lower triangle `lower` of M (pattern); `moved`: per value of M, the index of the value of `lower` it holds
   void analyze(const Region_problem::Matrix& lower, std::vector<int>& moved)
   {
     const Eigen::Index m = lower.rows();
@@ -72,10 +72,10 @@ struct Permuted_ldlt
       position[std::size_t(moved[std::size_t(q)])] = int(q);
       M.valuePtr()[q] = 0;
     }
-    diagonal.resize(std::size_t(m));
+    diagonal.clear();
     for(Eigen::Index j = 0; j < m; ++j)
       for(int k = lower.outerIndexPtr()[j]; k < lower.outerIndexPtr()[j + 1]; ++k)
-        if(lower.innerIndexPtr()[k] == j) diagonal[std::size_t(j)] = position[std::size_t(k)];
+        if(lower.innerIndexPtr()[k] == j) diagonal.push_back(position[std::size_t(k)]);
     ldlt.analyzePattern(M);
   }
 
