@@ -29,14 +29,18 @@
 // refuses (INFEASIBLE, nothing written) where a condition fails, as for any other choice of integer translations.
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -106,7 +110,7 @@ inline bool nearest_cone_point(const Seam_topology& st, const std::vector<double
 // takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). `p` holds the
 // nearest point on input.
 inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
-                             std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long p[2])
+                             std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long p[4][2])
 {
   const double saved[2] = {tbar[2 * std::size_t(crossed)], tbar[2 * std::size_t(crossed) + 1]};
   tbar[2 * std::size_t(crossed)] = 0; tbar[2 * std::size_t(crossed) + 1] = 0;
@@ -118,21 +122,24 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
   const double x[2] = {ubar[2 * std::size_t(s)], ubar[2 * std::size_t(s) + 1]};
   const double E[2] = {double(T0[0]) - Tb[0], double(T0[1]) - Tb[1]};
   const Quarter_turn R(K);
-  double best = HUGE_VAL;
-  long chosen[2] = {p[0], p[1]};
+  std::pair<double, int> order[4];
+  long q[4][2];
   for(int a = 0; a < 2; ++a)
     for(int b = 0; b < 2; ++b) {
-      const long q[2] = {long(a == 0 ? std::floor(x[0]) : std::ceil(x[0])), long(b == 0 ? std::floor(x[1]) : std::ceil(x[1]))};
-      const double d[2] = {double(q[0]) - x[0], double(q[1]) - x[1]};
+      const int i = 2 * a + b;
+      q[i][0] = long(a == 0 ? std::floor(x[0]) : std::ceil(x[0]));
+      q[i][1] = long(b == 0 ? std::floor(x[1]) : std::ceil(x[1]));
+      const double d[2] = {double(q[i][0]) - x[0], double(q[i][1]) - x[1]};
       double err = 0;
       for(int c = 0; c < 2; ++c) {
         const double r = d[c] - R.sign[c] * d[R.col[c]] - E[c];
         err += r * r;
       }
       err += 1e-9 * (d[0] * d[0] + d[1] * d[1]);                 // ties: the point nearest to the input
-      if(err < best) { best = err; chosen[0] = q[0]; chosen[1] = q[1]; }
+      order[i] = {err, i};
     }
-  p[0] = chosen[0]; p[1] = chosen[1];
+  std::stable_sort(order, order + 4, [](const std::pair<double, int>& u, const std::pair<double, int>& w) { return u.first < w.first; });
+  for(int i = 0; i < 4; ++i) { p[i][0] = q[order[i].second][0]; p[i][1] = q[order[i].second][1]; }
 }
 
 // The peeling of the cut graph (see the header) into t (its cut halfedges' entries; the others stay 0), each cone that
@@ -166,6 +173,25 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
       if(--open[std::size_t(v)] == 1 && is_ready(v)) ready.push_back(v);
   };
   std::size_t next_free = 0;                                    // st.cut_edges before it all have translations
+  std::vector<char> placed(std::size_t(cm.n_vertices), 0);      // cones whose point the peeling chose
+  std::vector<std::array<long, 2> > point(std::size_t(cm.n_vertices));   // ... in the chart of face(corner_of[v])
+  // whether the cone v at the point p (chart of face(g0)) would lie on the point of a placed cone that shares a face with
+  // it, both carried into that face's chart (t: the translations so far, with that of v's last open cut edge)
+  auto collides = [&](int v, int g0, const long p[2]) {
+    int g = g0;
+    do {
+      for(int h : {cm.next[g], cm.prev[g]}) {                   // the other corners of face(g)
+        const int w = cm.target[h];
+        if(!placed[std::size_t(w)]) continue;
+        long a[2] = {p[0], p[1]}, b[2] = {point[std::size_t(w)][0], point[std::size_t(w)][1]};
+        carry_around(cm, st, rot, t, g0, cm.next[g], a);                         // cone_merging.h
+        carry_around(cm, st, rot, t, corner_of[std::size_t(w)], cm.next[h], b);
+        if(a[0] == b[0] && a[1] == b[1]) return true;
+      }
+      g = cm.opp[cm.next[g]];
+    } while(g != g0);
+    return false;
+  };
   for(;;) {
     while(!ready.empty()) {
       const int v = ready.front();
@@ -189,23 +215,43 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         compose_around(cm, st, rot, t, g0, K, Tc);
         M[0][c] = Tc[0] - T0[0]; M[1][c] = Tc[1] - T0[1];
       }
-      long need[2] = {0, 0};
-      if(K % 4 != 0) {                                          // a cone: its fixed point, an integer point next to it
-        long p[2];
-        if(!nearest_cone_point(st, ubar, corner_of, v, p, message)) return RANGE_EXCEEDED;
-        diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
-        const Quarter_turn R(K);
-        for(int c = 0; c < 2; ++c) need[c] = p[c] - R.sign[c] * p[R.col[c]];
-      }
-      const long b[2] = {need[0] - T0[0], need[1] - T0[1]};
-      for(int c = 0; c < 2; ++c) {
-        const long x = M[0][c] * b[0] + M[1][c] * b[1];                                      // M^T b
-        if(!(std::labs(x) < (1L << 52))) {     // (the known translations and the points are below 2^52: no overflow)
-          message = "the translation chosen for cut edge " + vertex_pair_name(cm, crossed) + " is 2^52 grid units or more, "
-                    "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
-          return RANGE_EXCEEDED;
+      // the translation of `crossed` that makes the composition T = p - R^K p (p = 0 where v is not a cone)
+      auto solve = [&](const long p[2]) {
+        long need[2] = {0, 0};
+        if(K % 4 != 0) {
+          const Quarter_turn R(K);
+          for(int c = 0; c < 2; ++c) need[c] = p[c] - R.sign[c] * p[R.col[c]];
         }
-        t[2 * std::size_t(crossed) + std::size_t(c)] = x;
+        const long b[2] = {need[0] - T0[0], need[1] - T0[1]};
+        for(int c = 0; c < 2; ++c) {
+          const long x = M[0][c] * b[0] + M[1][c] * b[1];                                    // M^T b
+          if(!(std::labs(x) < (1L << 52))) {   // (the known translations and the points are below 2^52: no overflow)
+            message = "the translation chosen for cut edge " + vertex_pair_name(cm, crossed) + " is 2^52 grid units or more, "
+                      "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+            return false;
+          }
+          t[2 * std::size_t(crossed) + std::size_t(c)] = x;
+        }
+        return true;
+      };
+      if(K % 4 != 0) {                                          // a cone: its fixed point, an integer point next to it
+        long p[4][2];
+        if(!nearest_cone_point(st, ubar, corner_of, v, p[0], message)) return RANGE_EXCEEDED;
+        diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
+        // of the four in diffuse_rounding()'s order, the first that does not put v onto the point of a cone placed next
+        // to it (two cones on one point force zero-area triangles: COINCIDENT_CORNERS); the first if all do
+        int chosen = -1;
+        for(int i = 0; i < 4 && chosen < 0; ++i) {
+          if(!solve(p[i])) return RANGE_EXCEEDED;
+          if(!collides(v, g0, p[i])) chosen = i;
+        }
+        if(chosen < 0) chosen = 0;
+        if(!solve(p[chosen])) return RANGE_EXCEEDED;
+        placed[std::size_t(v)] = 1;
+        point[std::size_t(v)] = {{p[chosen][0], p[chosen][1]}};
+      } else {
+        const long p[2] = {0, 0};
+        if(!solve(p)) return RANGE_EXCEEDED;
       }
       settle(crossed);
     }
