@@ -22,7 +22,9 @@
 // diffusion: the rounding of the parts already peeled reaches it through the known translations, and each cone takes
 // up what it can, so that it does not add up along the graph: on the rot-seamless dragon of ../shared/data, 870 cones,
 // the largest change of the map at grid scale 16 drops from 26 to 3.7 grid cells, RMS 1.08 -> 0.22, against each cone
-// at its nearest point). Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
+// at its nearest point), unless a cone sharing a face with it, placed before, holds that point already (two cones on
+// one point force zero-area triangles): then the next of the four (the 302K bunny of ../shared/large at grid scale 16:
+// 12 -> 0 zero-area triangles). Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
 // paths between border vertices, which have no condition) one cut edge that has none takes its translation rounded. In
 // each part of the graph that does not reach the border, one cone is left to the end (quantization_roots()) and takes
 // the point that the others' choices give it. add_integer_grid_rows() checks every vertex exactly afterwards and
@@ -107,8 +109,9 @@ inline bool nearest_cone_point(const Seam_topology& st, const std::vector<double
 // known edges differ from the input's (their rounding, from the parts of the cut graph already peeled) by E = T0 - T0bar
 // (T0bar: the same composition of the input's translations), and the translation of `crossed` then differs from the
 // input's by M^T ((I - R^K)(p - x) - E), M a rotation: p minimizes |(I - R^K)(p - x) - E| (error diffusion: each cone
-// takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). `p` holds the
-// nearest point on input.
+// takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). On output
+// p[0..3] are the four points in that order (ties: nearest to x first, then the order floor/ceil of u, of v);
+// peel_cut_graph() takes the first that no neighbouring cone holds.
 inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
                              std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long p[4][2])
 {
