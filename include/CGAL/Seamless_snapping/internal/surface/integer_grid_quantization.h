@@ -85,22 +85,14 @@ inline std::vector<char> quantization_roots(const Corner_mesh& cm, const Seam_to
   return root;
 }
 
-// The integer point nearest to the cone at v (its first corner's sector, grid units); false (with `message`) if it
-// lies 2^52 grid units or more from the origin
-inline bool nearest_cone_point(const Seam_topology& st, const std::vector<double>& ubar, const std::vector<int>& corner_of,
-                               int v, long p[2], std::string& message)
+// false (with `message`: `what` lies too far) unless |x| < 2^52 grid units, where the integers an integer-grid map holds
+// are exact
+inline bool within_exact_integers(double x, const std::string& what, std::string& message)
 {
-  const int s = st.sector_of[std::size_t(corner_of[std::size_t(v)])];
-  for(int c = 0; c < 2; ++c) {
-    const double x = std::nearbyint(ubar[2 * std::size_t(s) + std::size_t(c)]);
-    if(!(std::fabs(x) < 0x1p52)) {
-      message = "cone at vertex " + std::to_string(v) + " lies 2^52 grid units or more from the origin, beyond the "
-                "integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
-      return false;
-    }
-    p[c] = long(x);
-  }
-  return true;
+  if(std::fabs(x) < 0x1p52) return true;
+  message = what + " 2^52 grid units or more from the origin, beyond the integers an integer-grid map holds exactly; "
+            "scale the map down (grid_scale / --grid-scale)";
+  return false;
 }
 
 // The integer point p of a cone at target(g0) whose last open cut edge is `crossed`, given the composition T0 of the
@@ -228,18 +220,21 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         const long b[2] = {need[0] - T0[0], need[1] - T0[1]};
         for(int c = 0; c < 2; ++c) {
           const long x = M[0][c] * b[0] + M[1][c] * b[1];                                    // M^T b
-          if(!(std::labs(x) < (1L << 52))) {   // (the known translations and the points are below 2^52: no overflow)
-            message = "the translation chosen for cut edge " + vertex_pair_name(cm, crossed) + " is 2^52 grid units or more, "
-                      "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+          // (the known translations and the points are below 2^52: no overflow)
+          if(!within_exact_integers(double(x), "the translation chosen for cut edge " + vertex_pair_name(cm, crossed) + " is",
+                                    message))
             return false;
-          }
           t[2 * std::size_t(crossed) + std::size_t(c)] = x;
         }
         return true;
       };
       if(K % 4 != 0) {                                          // a cone: its fixed point, an integer point next to it
+        const int s = st.sector_of[std::size_t(g0)];
+        for(int c = 0; c < 2; ++c)
+          if(!within_exact_integers(std::nearbyint(ubar[2 * std::size_t(s) + std::size_t(c)]),
+                                    "cone at vertex " + std::to_string(v) + " lies", message))
+            return RANGE_EXCEEDED;
         long p[4][2];
-        if(!nearest_cone_point(st, ubar, corner_of, v, p[0], message)) return RANGE_EXCEEDED;
         diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
         // of the four in diffuse_rounding()'s order, the first that does not put v onto the point of a cone placed next
         // to it (two cones on one point force zero-area triangles: COINCIDENT_CORNERS); the first if all do
@@ -248,8 +243,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
           if(!solve(p[i])) return RANGE_EXCEEDED;
           if(!collides(v, g0, p[i])) chosen = i;
         }
-        if(chosen < 0) chosen = 0;
-        if(!solve(p[chosen])) return RANGE_EXCEEDED;
+        if(chosen < 0 && !solve(p[chosen = 0])) return RANGE_EXCEEDED;   // t holds the chosen one's translation
         placed[std::size_t(v)] = 1;
         point[std::size_t(v)] = {{p[chosen][0], p[chosen][1]}};
       } else {
@@ -270,11 +264,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     double ta[2];
     translation(cm, st, rot, h, true, ubar, ta);
     for(int c = 0; c < 2; ++c) {
-      if(!(std::fabs(ta[c]) < 0x1p52)) {
-        message = "the translation of cut edge " + vertex_pair_name(cm, h) + " lies 2^52 grid units or more from the origin, "
-                  "beyond the integers an integer-grid map holds exactly; scale the map down (grid_scale / --grid-scale)";
+      if(!within_exact_integers(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h) + " lies", message))
         return RANGE_EXCEEDED;
-      }
       t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
     }
     settle(h);
