@@ -155,12 +155,13 @@ struct Projection_cache
   }
 };
 
-// the projection of xbar (the values of x at vars) by the initialized `projection`, written to x at vars
+// the projection of the values of x at vars by the initialized `projection`, written to x at vars
 inline Status project_initialized(const Exact_constraint_projection& projection, const Fixed_point_grid& grid,
-                                  const std::vector<int>& vars, const std::vector<double>& xbar, std::vector<double>& x,
-                                  Snap_report& report, std::string& message)
+                                  const std::vector<int>& vars, std::vector<double>& x, Snap_report& report,
+                                  std::string& message)
 {
-  std::vector<double> xs;
+  std::vector<double> xbar(vars.size()), xs;
+  for(std::size_t j = 0; j < vars.size(); ++j) xbar[j] = x[vars[j]];
   Projection_report pr = projection.project(xbar, xs);
   report.evaluate_ms = pr.project_ms;
   if(pr.status != SUCCESS) { message = "exact projection of the constraint system: " + pr.message; return pr.status; }
@@ -182,11 +183,8 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
 {
   report.system_rows = rows.size();
   if(cache != nullptr && cache->holds(rows, grid.K, minimal_change)) {
-    const std::vector<int>& vars = cache->vars;
-    report.system_columns = vars.size();
-    std::vector<double> xbar(vars.size());
-    for(std::size_t j = 0; j < vars.size(); ++j) xbar[j] = x[vars[j]];
-    return project_initialized(*cache->projection, grid, vars, xbar, x, report, message);
+    report.system_columns = cache->vars.size();
+    return project_initialized(*cache->projection, grid, cache->vars, x, report, message);
   }
   std::vector<int> vars, column_of;
   used_variables(rows, x.size(), vars, column_of);
@@ -195,8 +193,6 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
   for(std::size_t i = 0; i < rows.size(); ++i)
     for(std::size_t k = rows.start[i]; k < rows.start[i + 1]; ++k)
       triplets.emplace_back(int(i), column_of[rows.col[k]], long(rows.coef[k]));
-  std::vector<double> xbar(vars.size());
-  for(std::size_t j = 0; j < vars.size(); ++j) xbar[j] = x[vars[j]];
   report.system_columns = vars.size();
 
   Projection_options options;
@@ -223,7 +219,7 @@ inline Status project_rows(const Constraint_rows& rows, const Fixed_point_grid& 
     cache->vars = vars;
     cache->projection = projection;
   }
-  return project_initialized(*projection, grid, vars, xbar, x, report, message);
+  return project_initialized(*projection, grid, vars, x, report, message);
 }
 
 
