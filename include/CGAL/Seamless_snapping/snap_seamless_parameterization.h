@@ -332,7 +332,9 @@ namespace Seamless_snapping {
  *                           vertex all of whose cut edges but one have integer translations determines that one, a vertex
  *                           that is not a cone so that the transitions around it compose to the identity, a cone so that
  *                           its fixed point is the one of the four integer points around it that brings that translation
- *                           nearest to the input's (error diffusion); where the graph leaves a choice (its
+ *                           nearest to the input's (error diffusion), or the next of them where a cone sharing a face with
+ *                           it already holds that point (two cones on one point force zero-area triangles); where the graph
+ *                           leaves a choice (its
  *                           cycles around handles, paths between border vertices) a translation is rounded; in each part of
  *                           the graph that does not reach the border one cone (of +-90 degrees where there is one) is left
  *                           to the end and takes the point that the others' rounding gives it. Then the integer-grid snap
