@@ -332,10 +332,10 @@ namespace Seamless_snapping {
  *                           vertex all of whose cut edges but one have integer translations determines that one, a vertex
  *                           that is not a cone so that the transitions around it compose to the identity, a cone so that
  *                           its fixed point is the one of the four integer points around it that brings that translation
- *                           nearest to the input's (error diffusion), or the next of them where a cone sharing a face with
- *                           it already holds that point (two cones on one point force zero-area triangles); where the graph
- *                           leaves a choice (its
- *                           cycles around handles, paths between border vertices) a translation is rounded; in each part of
+ *                           nearest to the input's (error diffusion), or the next of them where a cone near it (sharing a
+ *                           face, or reached by a path of edges within two grid cells of the point) already holds that
+ *                           point (two cones on one point force zero-area triangles), unless `merge_cone_pairs` will merge
+ *                           the two; where the graph leaves a choice (its cycles around handles, paths between border vertices) a translation is rounded; in each part of
  *                           the graph that does not reach the border one cone (of +-90 degrees where there is one) is left
  *                           to the end and takes the point that the others' rounding gives it. Then the integer-grid snap
  *                           runs as for any other integer translations, with the untangling (default) and its exact checks:
@@ -345,7 +345,7 @@ namespace Seamless_snapping {
  *                           `grid_scale` whose cells are smaller than the distances between the cones (`retinal_miq` of
  *                           ../shared/data, an MIQ map before its integer rounding: a verified quad mesh at every grid
  *                           scale from 1 to 32, the map moved by at most 1.08 grid cells; Directional's rot-seamless
- *                           dragon, 870 cones: from grid scale 16 on, at most 3.7 cells). Without effect on a map that is
+ *                           dragon, 870 cones: at grid scale 4 and from 16 on, at most 4.8 cells). Without effect on a map that is
  *                           near an integer-grid map (its translations are rounded); `Snap_report::quantized` says whether
  *                           it ran.}
  *     \cgalParamType{Boolean}

@@ -157,7 +157,19 @@ struct Cone_partner_search
     bool cancelling_only = true;
     const std::vector<char>* taken = nullptr;
     const Cone_valences* valences = nullptr;
+    const std::vector<char>* known = nullptr;       // per edge: the cut edges whose translation t holds (nullptr: all);
+                                                    // paths do not cross the others
   };
+
+  // whether carrying a point around target(g_in) from face(g_in) to face(out) (carry_around()) crosses only cut
+  // edges that `known` marks
+  bool crosses_known(int g_in, int out, const std::vector<char>* known) const
+  {
+    if(known != nullptr)
+      for(int g = g_in; cm.next[g] != out; g = cm.opp[cm.next[g]])
+        if(st.is_cut[cm.edge[cm.next[g]]] && !(*known)[std::size_t(cm.edge[cm.next[g]])]) return false;
+    return true;
+  }
 
   // The shortest path (of the kind q asks for) from field cone a to a partner b that the rounded transitions carry
   // onto a's integer point, every vertex of it within q.reach of that point; empty if none. Other cones on the
@@ -176,7 +188,7 @@ struct Cone_partner_search
       do {
         const int out = cm.next[g];
         if((!q.cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
-           !seen(cm.target[out])) {
+           !seen(cm.target[out]) && crosses_known(g_in, out, q.known)) {
           State s{out, {p[0], p[1]}, parent};
           carry_around(cm, st, rot, t, g_in, out, s.p);
           states.push_back(s);

@@ -22,9 +22,9 @@
 // diffusion: the rounding of the parts already peeled reaches it through the known translations, and each cone takes
 // up what it can, so that it does not add up along the graph: on the rot-seamless dragon of ../shared/data, 870 cones,
 // the largest change of the map at grid scale 16 drops from 26 to 3.7 grid cells, RMS 1.08 -> 0.22, against each cone
-// at its nearest point), unless a cone sharing a face with it, placed before, holds that point already (two cones on
-// one point force zero-area triangles): then the next of the four (the 302K bunny of ../shared/large at grid scale 16:
-// 12 -> 0 zero-area triangles). Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
+// at its nearest point), unless a cone placed before near it (sharing a face, or within 2 grid cells of the point)
+// holds that point already (two cones on one point force zero-area triangles) and is not one that the snap's
+// merge_cone_pairs(true) will merge with it: then the next of the four. Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
 // paths between border vertices, which have no condition) one cut edge that has none takes its translation rounded. In
 // each part of the graph that does not reach the border, one cone is left to the end (quantization_roots()) and takes
 // the point that the others' choices give it. add_integer_grid_rows() checks every vertex exactly afterwards and
@@ -137,11 +137,19 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
   for(int i = 0; i < 4; ++i) { p[i][0] = q[order[i].second][0]; p[i][1] = q[order[i].second][1]; }
 }
 
+// How far (grid cells, Euclidean, at the input's UVs) from a cone's candidate point peel_cut_graph() looks for placed
+// cones on that point: 2, since a cone lies up to sqrt(2) from the integer point it takes. Against 1, with the pairs that
+// merging joins allowed (the table in the manual's quantization section): the rot-seamless dragon of ../shared/data at grid
+// scale 1 with 17 negative / 10 zero-area triangles left instead of 21 / 8, 102 wound vertices instead of 99; the 302K bunny
+// of ../shared/large the same defects at grid scale 8 and 16
+constexpr double quantization_cone_reach = 2.0;
+
 // The peeling of the cut graph (see the header) into t (its cut halfedges' entries; the others stay 0), each cone that
-// determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end.
+// determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end; `merge_pairs` as
+// in quantize_translations().
 inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                              const std::vector<double>& ubar, const std::vector<int>& corner_of, const std::vector<char>& root,
-                             std::vector<long>& t, std::string& message)
+                             bool merge_pairs, std::vector<long>& t, std::string& message)
 {
   std::vector<double> tbar(t.size(), 0.);                       // the input's real translations, at their sources
   for(int e : st.cut_edges) {
@@ -170,9 +178,25 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   std::size_t next_free = 0;                                    // st.cut_edges before it all have translations
   std::vector<char> placed(std::size_t(cm.n_vertices), 0);      // cones whose point the peeling chose
   std::vector<std::array<long, 2> > point(std::size_t(cm.n_vertices));   // ... in the chart of face(corner_of[v])
-  // whether the cone v at the point p (chart of face(g0)) would lie on the point of a placed cone that shares a face with
-  // it, both carried into that face's chart (t: the translations so far, with that of v's last open cut edge)
-  auto collides = [&](int v, int g0, const long p[2]) {
+  std::vector<int> placed_K(std::size_t(cm.n_vertices), 0);   // the rotation sum (1..3) of each cone placed or being placed
+  Cone_partner_search near_cones(cm, st, rot, t, ubar, placed_K);   // cone_merging.h
+  int search_mark = 0;
+  // Whether the cone v at the point p (chart of face(g0); t holds the translation of its last open cut edge, `crossed`,
+  // that puts it there) would lie on the point of a placed cone (two cones on one point force zero-area triangles:
+  // COINCIDENT_CORNERS) that either shares a face with it (both carried into that face's chart) or that a path of
+  // edges reaches, its vertices (at the input's UVs) within quantization_cone_reach of p, crossing cut edges whose
+  // translations are known only (the search of collapsed_cone_pairs()). With `merge_pairs`, a cone that
+  // merge_collapsed_cone_pairs() will find (a path of cut edges within default_merge_cone_reach) is no collision: the
+  // pair becomes regular points or one cone of the quad mesh.
+  auto collides = [&](int v, int g0, int crossed, const long p[2]) {
+    known[std::size_t(cm.edge[crossed])] = 1;
+    const Cone_merge near = near_cones.find(v, search_mark++, Cone_partner_search::Query{quantization_cone_reach, false, false,
+                                                                                         nullptr, nullptr, &known});
+    const bool merged = !near.path.empty() && merge_pairs &&
+                        near_cones.find(v, search_mark++, Cone_partner_search::Query{default_merge_cone_reach, true, false,
+                                                                                     nullptr, nullptr, &known}).b == near.b;
+    known[std::size_t(cm.edge[crossed])] = 0;
+    if(!near.path.empty()) return !merged;
     int g = g0;
     do {
       for(int h : {cm.next[g], cm.prev[g]}) {                   // the other corners of face(g)
@@ -236,12 +260,13 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
             return RANGE_EXCEEDED;
         long p[4][2];
         diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
-        // of the four in diffuse_rounding()'s order, the first that does not put v onto the point of a cone placed next
-        // to it (two cones on one point force zero-area triangles: COINCIDENT_CORNERS); the first if all do
+        // of the four in diffuse_rounding()'s order, the first that does not put v onto the point of a cone placed near
+        // it; the first if all do
         int chosen = -1;
+        placed_K[std::size_t(v)] = (K % 4 + 4) % 4;
         for(int i = 0; i < 4 && chosen < 0; ++i) {
           if(!solve(p[i])) return RANGE_EXCEEDED;
-          if(!collides(v, g0, p[i])) chosen = i;
+          if(!collides(v, g0, crossed, p[i])) chosen = i;
         }
         if(chosen < 0 && !solve(p[chosen = 0])) return RANGE_EXCEEDED;   // t holds the chosen one's translation
         placed[std::size_t(v)] = 1;
@@ -272,15 +297,16 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   }
 }
 
-// `ubar`: the sector values in grid units. `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
+// `ubar`: the sector values in grid units. `merge_pairs`: the snap merges collapsed cone pairs afterwards
+// (Snap_options::merge_cone_pairs). `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
 // (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
 inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const std::vector<double>& ubar, std::vector<long>& t, std::string& message)
+                                    const std::vector<double>& ubar, bool merge_pairs, std::vector<long>& t, std::string& message)
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   const std::vector<int> corner_of = first_corners(cm);
   const std::vector<char> root = quantization_roots(cm, st, rot, corner_of, t);   // t: all 0 yet
-  return peel_cut_graph(cm, st, rot, ubar, corner_of, root, t, message);
+  return peel_cut_graph(cm, st, rot, ubar, corner_of, root, merge_pairs, t, message);
 }
 
 } // namespace internal
