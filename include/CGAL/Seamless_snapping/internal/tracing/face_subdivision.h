@@ -14,7 +14,10 @@
 // of every face, in its own chart, becomes a set of convex polygons. The segments are inserted in the
 // order they were laid (Raw_segment::order). A trace stops at every trail laid before it (T-junction),
 // so each segment lies in one polygon and ends on its boundary: it splits that polygon in two, or, when
-// it runs along the polygon's boundary, marks those sides. All points are exact (CGAL::Gmpq; the sign tests
+// it runs along the polygon's boundary, marks those sides. One exception: a segment along a side of its face
+// whose trace had the right of way where another trace reached the side at the same time and stopped there
+// (a meeting on an edge, motorcycle_graph.h): that trace's segment, laid first, cut the side, and the
+// segment is inserted in parts, between the side's points. All points are exact (CGAL::Gmpq; the sign tests
 // filtered by interval arithmetic on their double enclosures, orientation_sign()) and are
 // identified across faces: a vertex by its index, a point of an edge by its parameter along the edge
 // (the same from both sides of an exact cut), a point inside a face by its UV in that face's chart.
@@ -276,6 +279,46 @@ private:
     }
   }
 
+  // The segment s along a side of its face, with points of that side strictly between its ends (see the header), in
+  // parts from point to point (insert_segment() each); false (nothing done) if s runs along no side or no point of
+  // the side lies between its ends
+  bool insert_along_side(const Raw_segment& s, const std::array<Place, 2>& ends, bool last_try)
+  {
+    const int f = s.face;
+    for(int i = 0; i < 3; ++i) {
+      const int h = corner(f, i), a = cm_.prev[h];                // the side from corner a to corner h
+      if(corner_side_sign(cm_, a, h, s.from.uv, ends[0].box) != 0 || corner_side_sign(cm_, a, h, s.to.uv, ends[1].box) != 0)
+        continue;
+      const Exact_uv& A = corner_uv(map_, a);
+      const Exact_uv& B = corner_uv(map_, h);
+      const FT tp = lerp_parameter(A, B, s.from.uv), tq = lerp_parameter(A, B, s.to.uv);
+      const bool along = cm_.edge_halfedge[std::size_t(cm_.edge[h])] == h;
+      std::vector<FT> cuts;                                     // parameters from A to B, strictly between the ends
+      for(const FT& t_edge : edge_params_[std::size_t(cm_.edge[h])]) {
+        const FT t = along ? t_edge : one_minus(t_edge);
+        if((tp < t && t < tq) || (tq < t && t < tp)) cuts.push_back(t);
+      }
+      if(cuts.empty()) return false;
+      std::sort(cuts.begin(), cuts.end());
+      if(tq < tp) std::reverse(cuts.begin(), cuts.end());
+      Raw_segment part = s;
+      Place from = ends[0];
+      for(std::size_t k = 0; k <= cuts.size(); ++k) {
+        Place to = ends[1];
+        part.to = s.to;
+        if(k < cuts.size()) {
+          part.to = Raw_point{ON_EDGE, h, lerp(A, B, cuts[k])};
+          to = place(f, part.to.uv, Uv_box(part.to.uv));
+        }
+        insert_segment(part, {{from, to}}, last_try);
+        part.from = part.to;
+        from = to;
+      }
+      return true;
+    }
+    return false;
+  }
+
   // `ends`: the places of s.from and s.to. False (nothing done) if an end lies inside the piece that holds the segment
   // and not `last_try` (a segment inserted later may put it on a boundary); on the last try such a segment is unplaced
   bool insert_segment(const Raw_segment& s, const std::array<Place, 2>& ends, bool last_try)
@@ -302,6 +345,7 @@ private:
     const bool dangling = inside && (std::find(on_p_.begin(), on_p_.end(), 1) == on_p_.end() ||
                                      std::find(on_q_.begin(), on_q_.end(), 1) == on_q_.end());
     if(dangling && !last_try) return false;
+    if(pick < 0 && insert_along_side(s, ends, last_try)) return true;
     if(pick < 0 || dangling) {
       if(out_.unplaced++ == 0)
         out_.first_unplaced = "a segment of trace in face " + std::to_string(f) + (pick < 0 ? " fits no piece of the face" : " ends inside a piece");
