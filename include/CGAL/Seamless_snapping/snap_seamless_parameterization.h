@@ -335,7 +335,8 @@ namespace Seamless_snapping {
  *                           nearest to the input's (error diffusion), or the next of them where a cone near it (sharing a
  *                           face, or reached by a path of edges within two grid cells of the point) already holds that
  *                           point (two cones on one point force zero-area triangles), unless `merge_cone_pairs` will merge
- *                           the two; where the graph leaves a choice (its cycles around handles, paths between border vertices) a translation is rounded; in each part of
+ *                           the two, or where the point would make a triangle of three cones non-positive (its shape is
+ *                           then fixed); where the graph leaves a choice (its cycles around handles, paths between border vertices) a translation is rounded; in each part of
  *                           the graph that does not reach the border one cone (of +-90 degrees where there is one) is left
  *                           to the end and takes the point that the others' rounding gives it. Then the integer-grid snap
  *                           runs as for any other integer translations, with the untangling (default) and its exact checks:

@@ -24,13 +24,15 @@
 // the largest change of the map at grid scale 16 drops from 26 to 3.7 grid cells, RMS 1.08 -> 0.22, against each cone
 // at its nearest point), unless a cone placed before near it (sharing a face, or within 2 grid cells of the point)
 // holds that point already (two cones on one point force zero-area triangles) and is not one that the snap's
-// merge_cone_pairs(true) will merge with it: then the next of the four. Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
+// merge_cone_pairs(true) will merge with it, or the point makes a face whose three corners are placed cones (whose
+// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
 // paths between border vertices, which have no condition) one cut edge that has none takes its translation rounded. In
 // each part of the graph that does not reach the border, one cone is left to the end (quantization_roots()) and takes
 // the point that the others' choices give it. add_integer_grid_rows() checks every vertex exactly afterwards and
 // refuses (INFEASIBLE, nothing written) where a condition fails, as for any other choice of integer translations.
 
 #include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
@@ -182,8 +184,9 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   Cone_partner_search near_cones(cm, st, rot, t, ubar, placed_K);   // cone_merging.h
   int search_mark = 0;
   // Whether the cone v at the point p (chart of face(g0); t holds the translation of its last open cut edge, `crossed`,
-  // that puts it there) would lie on the point of a placed cone (two cones on one point force zero-area triangles:
-  // COINCIDENT_CORNERS) that either shares a face with it (both carried into that face's chart) or that a path of
+  // that puts it there) would make a face of three placed cones non-positive (RIGID_TRIANGLE) or lie on the point of a
+  // placed cone (two cones on one point force zero-area triangles: COINCIDENT_CORNERS) that either shares a face with
+  // it (both carried into that face's chart) or that a path of
   // edges reaches, its vertices (at the input's UVs) within quantization_cone_reach of p, crossing cut edges whose
   // translations are known only (the search of collapsed_cone_pairs()). With `merge_pairs`, a cone that
   // merge_collapsed_cone_pairs() will find (a path of cut edges within default_merge_cone_reach) is no collision: the
@@ -199,14 +202,22 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     if(!near.path.empty()) return !merged;
     int g = g0;
     do {
-      for(int h : {cm.next[g], cm.prev[g]}) {                   // the other corners of face(g)
-        const int w = cm.target[h];
-        if(!placed[std::size_t(w)]) continue;
-        long a[2] = {p[0], p[1]}, b[2] = {point[std::size_t(w)][0], point[std::size_t(w)][1]};
-        carry_around(cm, st, rot, t, g0, cm.next[g], a);                         // cone_merging.h
-        carry_around(cm, st, rot, t, corner_of[std::size_t(w)], cm.next[h], b);
-        if(a[0] == b[0] && a[1] == b[1]) return true;
+      long a[2] = {p[0], p[1]}, q[2][2];                         // in the chart of face(g): v's point, the others' points
+      carry_around(cm, st, rot, t, g0, cm.next[g], a);           // cone_merging.h
+      bool both = true;
+      for(int i = 0; i < 2; ++i) {                               // the other corners of face(g)
+        const int h = i == 0 ? cm.next[g] : cm.prev[g], w = cm.target[h];
+        if(!placed[std::size_t(w)]) { both = false; continue; }
+        q[i][0] = point[std::size_t(w)][0]; q[i][1] = point[std::size_t(w)][1];
+        carry_around(cm, st, rot, t, corner_of[std::size_t(w)], cm.next[h], q[i]);
+        if(a[0] == q[i][0] && a[1] == q[i][1]) return true;
       }
+      // a face of three cones keeps its shape in every map with these translations (RIGID_TRIANGLE): it must be
+      // positive (the points are below 2^52: exact as doubles)
+      typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 P;
+      if(both && CGAL::orientation(P(double(a[0]), double(a[1])), P(double(q[0][0]), double(q[0][1])),
+                                   P(double(q[1][0]), double(q[1][1]))) != CGAL::LEFT_TURN)
+        return true;
       g = cm.opp[cm.next[g]];
     } while(g != g0);
     return false;
