@@ -249,8 +249,29 @@ private:
     }
   }
 
+  // whether the common end X of the waiting segments w[k] and w[l] lies strictly inside another waiting segment: then
+  // their traces did not meet head-on there but stopped on that one's trail from both sides (two T-junctions at one
+  // point), and that segment, once its own end is on a boundary, puts X on one
+  bool inside_another(const std::vector<const Raw_segment*>& segments, const std::vector<std::array<Place, 2> >& ends,
+                      const std::vector<std::size_t>& w, std::size_t k, std::size_t l) const
+  {
+    const Exact_uv& x = segments[w[k]]->to.uv;
+    const Uv_box& X = ends[w[k]][1].box;
+    for(std::size_t i = 0; i < w.size(); ++i) {
+      if(i == k || i == l) continue;
+      const Raw_segment& c = *segments[w[i]];
+      const Uv_box& A = ends[w[i]][0].box;
+      const Uv_box& B = ends[w[i]][1].box;
+      if(orientation_sign(c.from.uv, A, c.to.uv, B, x, X) == 0 && direction_sign(c.from.uv, A, c.to.uv, B, x, X) > 0 &&
+         direction_sign(c.to.uv, B, c.from.uv, A, x, X) > 0)
+        return true;
+    }
+    return false;
+  }
+
   // inserts the waiting segments `w` of a face that fit now, until none does; then, with `stuck`, two that end at one
-  // point inside the face (traces that met head-on) as one chord, and again; the rest as unplaced
+  // point inside the face (traces that met head-on, not on another waiting segment: inside_another()) as one chord,
+  // and again; the rest as unplaced
   void insert_waiting(const std::vector<const Raw_segment*>& segments, const std::vector<std::array<Place, 2> >& ends,
                       std::vector<std::size_t>& w, bool stuck)
   {
@@ -264,7 +285,9 @@ private:
         for(std::size_t l = k + 1; l < w.size() && !progress; ++l) {
           const Raw_segment& a = *segments[w[k]];
           const Raw_segment& b = *segments[w[l]];
-          if(a.to.kind != IN_FACE || b.to.kind != IN_FACE || a.to.uv != b.to.uv || direction_mod4(a.m - b.m) != 2) continue;
+          if(a.to.kind != IN_FACE || b.to.kind != IN_FACE || a.to.uv != b.to.uv || direction_mod4(a.m - b.m) != 2 ||
+             inside_another(segments, ends, w, k, l))
+            continue;
           Raw_segment chord = a;
           chord.to = b.from;
           insert_segment(chord, {{ends[w[k]][0], ends[w[l]][0]}}, true);
