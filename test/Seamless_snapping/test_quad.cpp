@@ -1122,6 +1122,30 @@ static bool libqex_reference(const fs::path& map_file, std::size_t& V, std::size
   return true;
 }
 
+// Directional's rot-seamless dragon (../shared/data; 24,984 faces, 870 cones, never quantized) quantized at grid scale 4
+// with the cone pairs merged (seamless_quad's options): the cells are about as large as the distances between its cones,
+// and only the quantizer's rules (no cone onto the point of a cone near it unless the pair merges, no triangle of three
+// cones non-positive) leave the untangling a map it can make fold-free: an exact integer-grid map whose quad mesh has
+// every guarantee (before those rules: 1 negative and 3 zero-area triangles left, refused)
+static void test_quantized_dragon()
+{
+  Mesh m;
+  if(!load_shared_or_skip("directional/dragon-param-rot-seamless.obj", "quad: quantized dragon", m)) return;
+  UV_map uv = uv_of(m);
+  const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true)
+                                                                        .merge_cone_pairs(true).grid_scale(4.));
+  if(s.status != SS::SUCCESS) std::cerr << s.message << std::endl;
+  assert(s.status == SS::SUCCESS && s.quantized && SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(4.)));
+  std::printf("quad: dragon (rot-seamless), quantized at grid scale 4: %zu / %zu negative / zero-area triangles, %zu pairs "
+              "merged, max change %.2f cells\n", s.flips_after_repair, s.degenerate_after_repair, s.merged_cone_pairs.size(),
+              s.total_max_change * s.grid_scale);
+  assert(s.flips_after_repair == 0 && s.degenerate_after_repair == 0);
+  Quad_result r;
+  extract(m, uv, 4, r);
+  check_quad_mesh(m, uv, 4, r, "dragon (rot-seamless), quantized at 4");
+  assert(r.report.irregular_vertices == s.field_cones);
+}
+
 // libQEx's maps (over 1 MB, so not in test_shared_data()): their integer translations put cone pairs onto one
 // integer point, and the untangled IGM winds wrongly around them (fandisk, duck_miq_8: fold-free; duck_qc_8: 2
 // fold-overs left). The extraction refuses the fold-free ones (nothing written) and names a collapsed pair that the
@@ -1242,6 +1266,7 @@ int main(int argc, char** argv)
   if(!sanitizer_subset()) test_cut_invariance();
   test_shared_data();
   if(!sanitizer_subset()) test_collapsed_cone_pairs();
+  if(!sanitizer_subset()) test_quantized_dragon();
   std::cout << "test_quad: all passed\n";
   return 0;
 }
