@@ -25,14 +25,15 @@
 // at its nearest point), unless a cone placed before near it (sharing a face, or within 2 grid cells of the point)
 // holds that point already (two cones on one point force zero-area triangles) and is not one that the snap's
 // merge_cone_pairs(true) will merge with it, or the point makes a face whose three corners are placed cones (whose
-// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left (cycles of the cut graph, around the handles of the surface; cut
-// paths between border vertices, which have no condition) one cut edge that has none takes its translation rounded. In
-// each part of the graph that does not reach the border, one cone is left to the end (quantization_roots()) and takes
-// the point that the others' choices give it. add_integer_grid_rows() checks every vertex exactly afterwards and
-// refuses (INFEASIBLE, nothing written) where a condition fails, as for any other choice of integer translations.
+// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left (cycles of
+// the cut graph, around the handles of the surface; cut paths between border vertices, which have no condition) one
+// cut edge that has none takes its translation rounded. In each part of the graph that does not reach the border, one
+// cone is left to the end (quantization_roots()) and takes the point that the others' choices give it.
+// add_integer_grid_rows() checks every vertex exactly afterwards and refuses (INFEASIBLE, nothing written) where a
+// condition fails, as for any other choice of integer translations.
 
-#include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
@@ -186,11 +187,10 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   // Whether the cone v at the point p (chart of face(g0); t holds the translation of its last open cut edge, `crossed`,
   // that puts it there) would make a face of three placed cones non-positive (RIGID_TRIANGLE) or lie on the point of a
   // placed cone (two cones on one point force zero-area triangles: COINCIDENT_CORNERS) that either shares a face with
-  // it (both carried into that face's chart) or that a path of
-  // edges reaches, its vertices (at the input's UVs) within quantization_cone_reach of p, crossing cut edges whose
-  // translations are known only (the search of collapsed_cone_pairs()). With `merge_pairs`, a cone that
-  // merge_collapsed_cone_pairs() will find (a path of cut edges within default_merge_cone_reach) is no collision: the
-  // pair becomes regular points or one cone of the quad mesh.
+  // it (both carried into that face's chart) or that a path of edges reaches, its vertices (at the input's UVs) within
+  // quantization_cone_reach of p, crossing cut edges whose translations are known only (the search of
+  // collapsed_cone_pairs()). With `merge_pairs`, a cone that merge_collapsed_cone_pairs() will find (a path of cut
+  // edges within default_merge_cone_reach) is no collision: the pair becomes regular points or one cone of the quad mesh.
   auto collides = [&](int v, int g0, int crossed, const long p[2]) {
     known[std::size_t(cm.edge[crossed])] = 1;
     const Cone_merge near = near_cones.find(v, search_mark++, Cone_partner_search::Query{quantization_cone_reach, false, false,
