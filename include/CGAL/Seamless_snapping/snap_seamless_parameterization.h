@@ -346,7 +346,7 @@ namespace Seamless_snapping {
  *                           `grid_scale` whose cells are smaller than the distances between the cones (`retinal_miq` of
  *                           ../shared/data, an MIQ map before its integer rounding: a verified quad mesh at every grid
  *                           scale from 1 to 32, the map moved by at most 1.08 grid cells; Directional's rot-seamless
- *                           dragon, 870 cones: at grid scale 4 and from 16 on, at most 4.8 cells). Without effect on a map that is
+ *                           dragon, 870 cones: at grid scale 4 with `merge_cone_pairs` and from 16 on, at most 4.8 cells). Without effect on a map that is
  *                           near an integer-grid map (its translations are rounded); `Snap_report::quantized` says whether
  *                           it ran.}
  *     \cgalParamType{Boolean}

@@ -141,10 +141,12 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
 }
 
 // How far (grid cells, Euclidean, at the input's UVs) from a cone's candidate point peel_cut_graph() looks for placed
-// cones on that point: 2, since a cone lies up to sqrt(2) from the integer point it takes. Against 1, with the pairs that
-// merging joins allowed (the table in the manual's quantization section): the rot-seamless dragon of ../shared/data at grid
-// scale 1 with 17 negative / 10 zero-area triangles left instead of 21 / 8, 102 wound vertices instead of 99; the 302K bunny
-// of ../shared/large the same defects at grid scale 8 and 16
+// cones on that point: 2, since a cone lies up to sqrt(2) from the integer point it takes. (collapsed_cone_pairs() uses
+// 1, where a path of 2 could go around a third cone and call two far cones a pair; here such a false pair only costs
+// the cone its next candidate.) Against 1, with the pairs that merging joins allowed, measured at 1bc0fbd (before the
+// rule for triangles of three cones): the rot-seamless dragon of ../shared/data at grid scale 1 with 17 negative / 10
+// zero-area triangles left instead of 21 / 8, 102 wound vertices instead of 99; the 302K bunny of ../shared/large the
+// same defects at grid scale 8 and 16
 constexpr double quantization_cone_reach = 2.0;
 
 // The peeling of the cut graph (see the header) into t (its cut halfedges' entries; the others stay 0), each cone that
@@ -190,7 +192,11 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   // it (both carried into that face's chart) or that a path of edges reaches, its vertices (at the input's UVs) within
   // quantization_cone_reach of p, crossing cut edges whose translations are known only (the search of
   // collapsed_cone_pairs()). With `merge_pairs`, a cone that merge_collapsed_cone_pairs() will find (a path of cut
-  // edges within default_merge_cone_reach) is no collision: the pair becomes regular points or one cone of the quad mesh.
+  // edges within default_merge_cone_reach) is no collision: the pair becomes regular points or one cone of the quad mesh
+  // (an optimistic guess: the merge takes each cone once and joins no pair into a vertex of valence below 2), and the
+  // faces around v are not checked then. Checking them too, that partner left out, was worse where the cells are as
+  // large as the distances between the cones: the rot-seamless dragon at grid scale 1 / 2 with 11 / 2 negative and
+  // 14 / 4 zero-area triangles left, 94 / 17 wound vertices, instead of 7 / 2, 4 / 2 and 61 / 13 (4 to 16 the same).
   auto collides = [&](int v, int g0, int crossed, const long p[2]) {
     known[std::size_t(cm.edge[crossed])] = 1;
     const Cone_merge near = near_cones.find(v, search_mark++, Cone_partner_search::Query{quantization_cone_reach, false, false,

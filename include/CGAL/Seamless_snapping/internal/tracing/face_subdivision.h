@@ -333,7 +333,7 @@ private:
           part.to = Raw_point{ON_EDGE, h, lerp(A, B, cuts[k])};
           to = place(f, part.to.uv, Uv_box(part.to.uv));
         }
-        insert_segment(part, {{from, to}}, last_try);
+        insert_segment(part, {{from, to}}, last_try);         // along a piece's side now (else counted as unplaced)
         part.from = part.to;
         from = to;
       }
