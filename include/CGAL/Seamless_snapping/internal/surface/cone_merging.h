@@ -207,6 +207,7 @@ struct Cone_partner_search
       reached_from[std::size_t(w)] = mark;
       const double* x = &ubar[2 * std::size_t(st.sector_of[s.h])];     // w in the chart of face(s.h)
       if(std::hypot(x[0] - double(s.p[0]), x[1] - double(s.p[1])) > q.reach) continue;
+      if(K[std::size_t(w)] < 0) continue;              // a cone whose point is not known yet (peel_cut_graph()): no path
       if(K[std::size_t(w)] > 0) {
         long pw[2];
         if(!integer_cone_point(cm, st, rot, t, s.h, pw) || pw[0] != s.p[0] || pw[1] != s.p[1])

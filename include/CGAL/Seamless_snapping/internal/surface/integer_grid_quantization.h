@@ -183,7 +183,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   std::size_t next_free = 0;                                    // st.cut_edges before it all have translations
   std::vector<char> placed(std::size_t(cm.n_vertices), 0);      // cones whose point the peeling chose
   std::vector<std::array<long, 2> > point(std::size_t(cm.n_vertices));   // ... in the chart of face(corner_of[v])
-  std::vector<int> placed_K(std::size_t(cm.n_vertices), 0);   // the rotation sum (1..3) of each cone placed or being placed
+  std::vector<int> placed_K = field_rotation_sums(cm, st, rot);   // per cone placed or being placed its rotation sum
+  for(int& k : placed_K) k = k > 0 ? -1 : 0;                     // (1..3); -1: a cone not placed yet; 0: no cone
   Cone_partner_search near_cones(cm, st, rot, t, ubar, placed_K);   // cone_merging.h
   int search_mark = 0;
   // Whether the cone v at the point p (chart of face(g0); t holds the translation of its last open cut edge, `crossed`,
