@@ -196,8 +196,9 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   // edges within default_merge_cone_reach) is no collision: the pair becomes regular points or one cone of the quad mesh
   // (an optimistic guess: the merge takes each cone once and joins no pair into a vertex of valence below 2), and the
   // faces around v are not checked then. Checking them too, that partner left out, was worse where the cells are as
-  // large as the distances between the cones: the rot-seamless dragon at grid scale 1 / 2 with 11 / 2 negative and
-  // 14 / 4 zero-area triangles left, 94 / 17 wound vertices, instead of 7 / 2, 4 / 2 and 61 / 13 (4 to 16 the same).
+  // large as the distances between the cones (measured at 17cdc4c): the rot-seamless dragon at grid scale 1 / 2 with
+  // 11 / 2 negative and 14 / 4 zero-area triangles left, 94 / 17 wound vertices, instead of 7 / 2, 4 / 2 and 61 / 13
+  // (4 to 16 the same).
   auto collides = [&](int v, int g0, int crossed, const long p[2]) {
     known[std::size_t(cm.edge[crossed])] = 1;
     const Cone_merge near = near_cones.find(v, search_mark++, Cone_partner_search::Query{quantization_cone_reach, false, false,
