@@ -269,6 +269,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
             return false;
           t[2 * std::size_t(crossed) + std::size_t(c)] = x;
         }
+        set_opposite_translation(cm, rot, crossed, t);            // read by collides()' searches, set again by settle()
         return true;
       };
       if(K % 4 != 0) {                                          // a cone: its fixed point, an integer point next to it
