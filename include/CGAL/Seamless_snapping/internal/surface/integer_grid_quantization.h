@@ -181,8 +181,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
       if(--open[std::size_t(v)] == 1 && is_ready(v)) ready.push_back(v);
   };
   std::size_t next_free = 0;                                    // st.cut_edges before it all have translations
-  std::vector<char> placed(std::size_t(cm.n_vertices), 0);      // cones whose point the peeling chose
-  std::vector<std::array<long, 2> > point(std::size_t(cm.n_vertices));   // ... in the chart of face(corner_of[v])
+  std::vector<std::array<long, 2> > point(std::size_t(cm.n_vertices));   // per placed cone its point, chart of face(corner_of[v])
   std::vector<int> placed_K = field_rotation_sums(cm, st, rot);   // per cone placed or being placed its rotation sum
   for(int& k : placed_K) k = k > 0 ? -1 : 0;                     // (1..3); -1: a cone not placed yet; 0: no cone
   Cone_partner_search near_cones(cm, st, rot, t, ubar, placed_K);   // cone_merging.h
@@ -215,7 +214,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
       bool both = true;
       for(int i = 0; i < 2; ++i) {                               // the other corners of face(g)
         const int h = i == 0 ? cm.next[g] : cm.prev[g], w = cm.target[h];
-        if(!placed[std::size_t(w)]) { both = false; continue; }
+        if(placed_K[std::size_t(w)] <= 0) { both = false; continue; }   // (w != v: placed_K > 0 means placed)
         q[i][0] = point[std::size_t(w)][0]; q[i][1] = point[std::size_t(w)][1];
         carry_around(cm, st, rot, t, corner_of[std::size_t(w)], cm.next[h], q[i]);
         if(a[0] == q[i][0] && a[1] == q[i][1]) return true;
@@ -289,7 +288,6 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
           if(!collides(v, g0, crossed, p[i])) chosen = i;
         }
         if(chosen < 0 && !solve(p[chosen = 0])) return RANGE_EXCEEDED;   // t holds the chosen one's translation
-        placed[std::size_t(v)] = 1;
         point[std::size_t(v)] = {{p[chosen][0], p[chosen][1]}};
       } else {
         const long p[2] = {0, 0};
