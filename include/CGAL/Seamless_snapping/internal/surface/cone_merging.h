@@ -117,14 +117,20 @@ inline void apply_transition(int k, const long* t, long p[2])
 }
 
 // The integer point p given in the chart of face(h_in) (h_in: target v), carried around v on the side of face(h_in)
-// to the chart of face(h_out) (h_out: source v) through the transitions of the cut edges in between
-inline void carry_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                         const std::vector<long>& t, int h_in, int h_out, long p[2])
+// to the chart of face(h_out) (h_out: source v) through the transitions of the cut edges in between. With `known`
+// (per edge), false where a cut edge in between is not marked (its translation is not chosen yet; p is then carried
+// only partly), else true
+inline bool carry_around(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                         const std::vector<long>& t, int h_in, int h_out, long p[2],
+                         const std::vector<char>* known = nullptr)
 {
   for(int g = h_in; cm.next[g] != h_out; g = cm.opp[cm.next[g]]) {
     const int crossed = cm.next[g];
-    if(st.is_cut[cm.edge[crossed]]) apply_transition(rot.k[crossed], &t[2 * std::size_t(crossed)], p);
+    if(!st.is_cut[cm.edge[crossed]]) continue;
+    if(known != nullptr && !(*known)[std::size_t(cm.edge[crossed])]) return false;
+    apply_transition(rot.k[crossed], &t[2 * std::size_t(crossed)], p);
   }
+  return true;
 }
 
 // The search for a field cone's partner: what it reads (the cut graph, the rotations and rounded integer translations,
@@ -161,16 +167,6 @@ struct Cone_partner_search
                                                     // paths do not cross the others
   };
 
-  // whether carrying a point around target(g_in) from face(g_in) to face(out) (carry_around()) crosses only cut
-  // edges that `known` marks
-  bool crosses_known(int g_in, int out, const std::vector<char>* known) const
-  {
-    if(known != nullptr)
-      for(int g = g_in; cm.next[g] != out; g = cm.opp[cm.next[g]])
-        if(st.is_cut[cm.edge[cm.next[g]]] && !(*known)[std::size_t(cm.edge[cm.next[g]])]) return false;
-    return true;
-  }
-
   // The shortest path (of the kind q asks for) from field cone a to a partner b that the rounded transitions carry
   // onto a's integer point, every vertex of it within q.reach of that point; empty if none. Other cones on the
   // point may lie on the path (the changes then keep their rotation about that point); cones elsewhere may not.
@@ -188,10 +184,9 @@ struct Cone_partner_search
       do {
         const int out = cm.next[g];
         if((!q.cut_edges_only || st.is_cut[cm.edge[out]]) && (back_allowed || out != cm.opp[g_in]) &&
-           !seen(cm.target[out]) && crosses_known(g_in, out, q.known)) {
+           !seen(cm.target[out])) {
           State s{out, {p[0], p[1]}, parent};
-          carry_around(cm, st, rot, t, g_in, out, s.p);
-          states.push_back(s);
+          if(carry_around(cm, st, rot, t, g_in, out, s.p, q.known)) states.push_back(s);
         }
         g = cm.opp[out];
       } while(g != g_in);
