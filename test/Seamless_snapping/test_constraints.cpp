@@ -495,6 +495,38 @@ static void make_half_turn_cone(Mesh& m, UV_map& uv, double apex_u, double apex_
   }
 }
 
+// is_exact_integer_grid_map() on a map with a zero-length cut edge, whose UV image (a point) fits every rotation: a 2 x 2
+// grid of squares in the plane whose right column is in a chart turned by 180 degrees (UV -f + (3, 7), the left column
+// f), cut along x = 1 from the border vertex a = (1, 0) through the interior vertex v = (1, 1) to the border. f puts a
+// and v onto one half-integer point (0.5, 0.5); the cut edge v-b has rotation 2. The map is an exact integer-grid map
+// with rotation 2 on a-v too (v regular); the least rotation that fits a-v, 0, made v a cone of 180 degrees off the
+// integer points (the checker refused such a map that the snap had made exactly: the dragon, scaled and quantized)
+static void test_zero_length_cut_edge()
+{
+  Mesh m;
+  std::map<std::pair<int, int>, vertex_descriptor> vertex;
+  for(int y = 0; y <= 2; ++y)
+    for(int x = 0; x <= 2; ++x) vertex[{x, y}] = m.add_vertex(Point_3(x, y, 0));
+  UV_map uv = uv_of(m);
+  auto f = [](int x, int y) { return x == 1 && y == 0 ? Point_2(0.5, 0.5) : Point_2(x - 0.5, y - 0.5); };
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 2; ++i) {
+      const int X[4] = {i, i + 1, i + 1, i}, Y[4] = {j, j, j + 1, j + 1};
+      for(const std::array<int, 3>& t : {std::array<int, 3>{{0, 1, 2}}, std::array<int, 3>{{0, 2, 3}}}) {
+        auto corner = [&](int c) { return vertex[std::make_pair(X[t[std::size_t(c)]], Y[t[std::size_t(c)]])]; };
+        const Mesh::Face_index face = m.add_face(corner(0), corner(1), corner(2));
+        assert(face != Mesh::null_face());
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(face), m)) {
+          const Point_3& q = m.point(m.target(h));
+          const Point_2 a = f(int(q.x()), int(q.y()));
+          put(uv, h, i == 0 ? a : Point_2(3 - a.x(), 7 - a.y()));
+        }
+      }
+    }
+  assert(SS::is_exactly_seamless(m, uv) && SS::is_exact_integer_grid_map(m, uv));
+  std::cout << "integer grid: a zero-length cut edge takes the rotation that leaves its interior end regular\n";
+}
+
 // The integer-grid snap of (m, uv) at grid scale `scale` is refused with `status`, the map untouched, the message naming
 // the finer grid scale `named` (`named` / `scale` times this one); at that grid scale the map is an exact integer-grid
 // map already and snaps to itself, bit for bit. Returns the refusal's report.
@@ -1555,6 +1587,7 @@ int main(int argc, char** argv)
   parse_test_arguments(argc, argv);
   test_right_hand_sides();
   test_integer_grid_analytic();
+  test_zero_length_cut_edge();
   test_pinned_corners_analytic();
   test_pinned_corners_data();
   if(!sanitizer_subset()) test_integer_grid_orbifold();

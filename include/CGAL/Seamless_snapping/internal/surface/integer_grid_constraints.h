@@ -513,9 +513,14 @@ inline bool grid_scale_exponent(double S, int& s)
 // The exact test behind is_exact_integer_grid_map(): the map is exactly seamless
 // (is_exactly_seamless_impl) and, with every UV multiplied by 2^scale_exponent (exact in Gmpq),
 // - every cut edge has, for its rotation k (given, or among the k for which the transition holds
-//   exactly: several only for a zero-length cut edge), an integer translation t = U^j - R^k U^i;
+//   exactly), an integer translation t = U^j - R^k U^i;
 // - every interior vertex around which these k sum to K != 0 mod 4 (a cone of the field) has
-//   integer UVs in all its corners;
+//   integer UVs in all its corners.
+//   Only a zero-length cut edge can have several such k (its UV image, a point, says nothing of its rotation):
+//   it takes the one that leaves an end of it with all its other cut edges decided no cone (K = 0 mod 4), in
+//   turn, else its least. (The least at once made a vertex between two zero-length cut edges at a half-integer point
+//   a cone of 180 degrees, not on an integer point, in a map that the snap had made an exact integer-grid map with
+//   its own rotations: the full-seamless dragon of ../shared/data scaled by 1.5 and quantized, without untangling);
 // - every edge of `aligned` lies on an integer isoline (its constant coordinate is an integer).
 // With `why`, a failure says which edge or cone fails and how; with `edge_k`, on success, the k of
 // halfedge(e) of every cut edge e (0 for the other edges).
@@ -531,6 +536,14 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
     return false;
   };
   std::vector<int> K(cm.n_vertices, 0), k_of(cm.n_edges, 0);
+  std::vector<unsigned char> choices(std::size_t(cm.n_edges), 0);   // per seam edge: bit k where k fits; 0: decided
+  std::vector<int> open(std::size_t(cm.n_vertices), 0);              // per vertex: its seam edges not decided
+  auto decide = [&](int e, int k) {
+    const int h = cm.edge_halfedge[e];
+    k_of[e] = k;
+    K[cm.source(h)] += k;
+    K[cm.target[h]] -= k;     // k(opposite(h)) = -k, seen from the other end
+  };
   for(int e = 0; e < cm.n_edges; ++e) {
     if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
@@ -544,22 +557,56 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
     if(!seam) continue;
-    int found = -1;
-    for(int k = 0; k < 4 && found < 0; ++k) {
+    unsigned fits = 0;
+    for(int k = 0; k < 4; ++k) {
       if(!given_k.empty() && ((k - given_k[e]) % 4 + 4) % 4 != 0) continue;
       if(!exact_transition_holds(cm, h, k)) continue;
       const Quarter_turn R(k);
       bool integral = true;      // t at source(h): U(o) - R^k U(prev h)
       for(int c = 0; c < 2 && integral; ++c)
         integral = is_integer_sum(U(o, c), -R.sign[c] * U(cm.prev[h], R.col[c]), scale_exponent);
-      if(integral) found = k;
+      if(integral) fits |= 1u << k;
     }
-    if(found < 0)
+    if(fits == 0)
       return fail("cut edge " + vertex_pair_name(cm, h) + " (faces " + std::to_string(cm.face[h]) + ", " +
                   std::to_string(cm.face[o]) + "): its translation is not an integer vector");
-    k_of[e] = found;
-    K[cm.source(h)] += found;
-    K[cm.target[h]] -= found;   // k(opposite(h)) = -k, seen from the other end
+    if((fits & (fits - 1)) == 0) { decide(e, fits == 1 ? 0 : fits == 2 ? 1 : fits == 4 ? 2 : 3); continue; }
+    choices[std::size_t(e)] = static_cast<unsigned char>(fits);
+    ++open[std::size_t(cm.source(h))];
+    ++open[std::size_t(cm.target[h])];
+  }
+  // the zero-length cut edges, in turn: one at a vertex with no other open seam edge first, else the first open one
+  std::vector<int> undecided, first(std::size_t(cm.n_vertices) + 1, 0), at;   // per vertex its undecided edges
+  for(int e = 0; e < cm.n_edges; ++e) if(choices[std::size_t(e)] != 0) undecided.push_back(e);
+  for(int v = 0; v < cm.n_vertices; ++v) first[std::size_t(v) + 1] = first[std::size_t(v)] + open[std::size_t(v)];
+  at.resize(std::size_t(first.back()));
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(int e : undecided)
+      for(int v : {cm.source(cm.edge_halfedge[e]), cm.target[cm.edge_halfedge[e]]}) at[std::size_t(fill[std::size_t(v)]++)] = e;
+  }
+  std::vector<int> ready;
+  for(int v = 0; v < cm.n_vertices; ++v) if(open[std::size_t(v)] == 1) ready.push_back(v);
+  std::size_t next = 0;
+  for(;;) {
+    int e = -1, k = -1;
+    while(e < 0 && !ready.empty()) {
+      const int v = ready.back();
+      ready.pop_back();
+      if(open[std::size_t(v)] != 1) continue;
+      for(int q = first[std::size_t(v)]; q < first[std::size_t(v) + 1]; ++q)
+        if(choices[std::size_t(at[std::size_t(q)])] != 0) e = at[std::size_t(q)];
+      const bool source = cm.source(cm.edge_halfedge[e]) == v;
+      const int want = ((source ? -K[v] : K[v]) % 4 + 4) % 4;      // the k that makes K[v] = 0 mod 4
+      if(choices[std::size_t(e)] & (1u << want)) k = want;
+    }
+    while(e < 0 && next < undecided.size()) if(choices[std::size_t(undecided[next++])] != 0) e = undecided[next - 1];
+    if(e < 0) break;
+    if(k < 0) while(!(choices[std::size_t(e)] & (1u << ++k))) {}
+    choices[std::size_t(e)] = 0;
+    decide(e, k);
+    for(int v : {cm.source(cm.edge_halfedge[e]), cm.target[cm.edge_halfedge[e]]})
+      if(--open[std::size_t(v)] == 1) ready.push_back(v);
   }
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h];
