@@ -725,6 +725,27 @@ static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report&
 // quantize(true): maps that are not near an integer-grid map get integer translations chosen for them (each cone onto
 // one of the four integer points around it, the rest along the cut graph) and snap to exact integer-grid maps; maps that are
 // near one are rounded as without it, bit for bit
+// A cut graph with cycles (Directional's full-seamless dragon cuts its sphere into several charts), its UVs scaled by 1.5
+// so that they are near no integer-grid map, quantized at grid scale 1 with pairs merged and without untangling: the
+// edges that close the cycles are the free choices. Before, a free choice could fall on an edge that no cycle holds and
+// cut a part off its root: INFEASIBLE, the translations around vertex 4211 composing to (1, 1). The result also has
+// zero-length cut edges at half-integer points, which is_exact_integer_grid_map() must read with the rotations that
+// leave their interior ends regular (test_zero_length_cut_edge())
+static void test_quantized_cut_cycles()
+{
+  Mesh m;
+  if(!load_shared_or_skip("directional/dragon-param-full-seamless.obj", "quantization: a cut graph with cycles", m)) return;
+  UV_map uv = uv_of(m);
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * 1.5, get(uv, h).y() * 1.5));
+  const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true)
+                                                                          .merge_cone_pairs(true).untangle(false));
+  if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
+  assert(r.status == SS::SUCCESS && r.quantized && SS::is_exact_integer_grid_map(m, uv));
+  std::cout << "quantization: the full-seamless dragon x 1.5 (cut graph with cycles): exact integer-grid map, "
+            << r.field_cones << " cones\n";
+}
+
 static void test_quantization()
 {
   const auto quantized = SS::parameters::integer_grid_map(true).quantize(true);
@@ -784,6 +805,7 @@ static void test_quantization()
   assert(r.flips_after_repair == 0 && r.degenerate_after_repair == 0 && r.pinned_cones == r.field_cones);
   std::cout << "quantization: retinal_miq at grid scale 8: exact integer-grid map, " << r.field_cones << " cones, max / RMS change "
             << (r.total_max_change * r.grid_scale) << " / " << (r.total_rms_change * r.grid_scale) << " cells\n";
+  test_quantized_cut_cycles();
 }
 
 static void test_integer_grid_data()

@@ -186,6 +186,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   for(int& k : placed_K) k = k > 0 ? -1 : 0;                     // (1..3); -1: a cone not placed yet; 0: no cone
   Cone_partner_search near_cones(cm, st, rot, t, ubar, placed_K);   // cone_merging.h
   int search_mark = 0;
+  bool cycles_opened = false;                                   // the cut edges closing cycles have been chosen
   // Whether the cone v at the point p (chart of face(g0); t holds the translation of its last open cut edge, `crossed`,
   // that puts it there) would make a face of three placed cones non-positive (RIGID_TRIANGLE) or lie on the point of a
   // placed cone (two cones on one point force zero-area triangles: COINCIDENT_CORNERS) that either shares a face with
@@ -297,21 +298,46 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     }
     while(next_free < st.cut_edges.size() && known[std::size_t(st.cut_edges[next_free])]) ++next_free;
     if(next_free == st.cut_edges.size()) return SUCCESS;
-    // a free choice: a cut edge at the border if one is open (a path between two border vertices), else any
+    auto choose_rounded = [&](int e) {                          // a free choice: e's translation, rounded
+      const int h = cm.edge_halfedge[std::size_t(e)];
+      double ta[2];
+      translation(cm, st, rot, h, true, ubar, ta);
+      for(int c = 0; c < 2; ++c) {
+        if(!within_exact_integers(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h) + " lies", message))
+          return false;
+        t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
+      }
+      settle(h);
+      return true;
+    };
+    // Stuck: every vertex with one open cut edge is a root or on the border. The first time, the open cut edges that
+    // close cycles of the open graph (a spanning forest of it kept, in the order of st.cut_edges) are the free
+    // choices: a free choice on an edge that no cycle holds (a bridge) cuts a part off its root and its border
+    // vertices, where at the end two vertices share their last open edge and the condition of one of them is left
+    // unmet (the full-seamless dragon of ../shared/data, quantized anew: INFEASIBLE at a regular vertex, the
+    // translations around it composing to (1, 1)). What is left is a forest, whose leaves peel.
+    if(!cycles_opened) {
+      cycles_opened = true;
+      Union_find forest(cm.n_vertices);
+      std::vector<int> closing;
+      for(std::size_t i = next_free; i < st.cut_edges.size(); ++i) {
+        const int e = st.cut_edges[i], h = cm.edge_halfedge[std::size_t(e)];
+        if(known[std::size_t(e)]) continue;
+        const int a = forest.find(cm.target[h]), b = forest.find(cm.target[cm.opp[h]]);
+        if(a == b) closing.push_back(e);
+        else forest.unite(a, b);
+      }
+      for(int e : closing)
+        if(!choose_rounded(e)) return RANGE_EXCEEDED;
+      if(!closing.empty()) continue;
+    }
+    // a tree whose leaves are border vertices or its root: a cut edge at the border (a path between two border vertices)
     int e = st.cut_edges[next_free];
     for(std::size_t i = next_free; i < st.cut_edges.size(); ++i) {
       const int f = st.cut_edges[i], g = cm.edge_halfedge[std::size_t(f)];
       if(!known[std::size_t(f)] && (cm.vertex_on_border[cm.target[g]] || cm.vertex_on_border[cm.target[cm.opp[g]]])) { e = f; break; }
     }
-    const int h = cm.edge_halfedge[std::size_t(e)];           // its translation, rounded
-    double ta[2];
-    translation(cm, st, rot, h, true, ubar, ta);
-    for(int c = 0; c < 2; ++c) {
-      if(!within_exact_integers(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h) + " lies", message))
-        return RANGE_EXCEEDED;
-      t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
-    }
-    settle(h);
+    if(!choose_rounded(e)) return RANGE_EXCEEDED;
   }
 }
 
