@@ -25,9 +25,10 @@
 // at its nearest point), unless a cone placed before near it (sharing a face, or within 2 grid cells of the point)
 // holds that point already (two cones on one point force zero-area triangles) and is not one that the snap's
 // merge_cone_pairs(true) will merge with it, or the point makes a face whose three corners are placed cones (whose
-// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left (cycles of
-// the cut graph, around the handles of the surface; cut paths between border vertices, which have no condition) one
-// cut edge that has none takes its translation rounded. In each part of the graph that does not reach the border, one
+// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left, the cut edges
+// that close the cycles of the graph still open (around the handles of the surface, or between its charts where the
+// cuts split it) take their translations rounded, all at once, the first time; then, on cut paths between border
+// vertices (which have no condition), one cut edge at the border. In each part of the graph that does not reach the border, one
 // cone is left to the end (quantization_roots()) and takes the point that the others' choices give it.
 // add_integer_grid_rows() checks every vertex exactly afterwards and refuses (INFEASIBLE, nothing written) where a
 // condition fails, as for any other choice of integer translations.
