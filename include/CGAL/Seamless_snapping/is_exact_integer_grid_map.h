@@ -36,8 +36,10 @@ namespace Seamless_snapping {
  * - it is exactly seamless (`is_exactly_seamless()`, with the same parameters);
  * - every cut edge has an integer translation: with `h = halfedge(e)`, `o = opposite(h)` and the rotation `k`
  *   of the edge, `t = UV(o) - R^k UV(prev(h))` (the UVs of `source(h)` in the two faces, Eq. 3/7) has integer
- *   coordinates (`k` is the given one, or any `k` for which the transition holds exactly: several only for a
- *   zero-length cut edge);
+ *   coordinates (`k` is the given one (`rotation_map`), else the one for which the transition holds exactly; only a
+ *   zero-length cut edge, whose UV image is a point, fits several: of those it takes the one that makes an end of it
+ *   whose other cut edges have their `k` no cone, edge after edge, else the least: a map with such edges is
+ *   accepted where this choice leaves no cone off the integer points; pass `rotation_map` to test given rotations);
  * - every cone of the field (an interior vertex around which these `k` do not sum to a multiple of 4) has integer
  *   UVs in all its corners;
  * - every edge of `edge_is_constrained_map` lies on an integer isoline (its constant coordinate is an integer).
