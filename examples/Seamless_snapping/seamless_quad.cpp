@@ -304,8 +304,12 @@ int main(int argc, char** argv)
     if(q.status == SS::FOLD_OVERS && untangle && !q.advice.empty() && why.size() >= advice.size() &&
        why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
       why.resize(why.size() - advice.size());
-      proven = "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) + " negative and " +
-               std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
+      proven = snap.uv_mirrored
+                   ? "; the map is mirrored (" + std::to_string(snap.flips_before_untangling) + " of " +
+                         std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle it: "
+                         "mirror its UVs (e.g. v -> -v, a texture convention some tools flip) or reverse its faces"
+                   : "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) +
+                         " negative and " + std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
     }
     const auto forced = std::find_if(snap.folds.begin(), snap.folds.end(), [](const SS::Fold_explanation& f) { return f.forced(); });
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())

@@ -240,6 +240,13 @@ def test_untangle_integer_grid_map():
     # a bound on the change refuses the untangled map: the fold-overs stay, and the report says so
     _, _, refused = ss.snap(V, F, UV, FUV, integer_grid_map=True, max_untangle_change=1e-3)
     assert refused["untangle_refused"] and refused["flips_after_repair"] > 0
+    assert not report["uv_mirrored"] and not refused["uv_mirrored"]
+    # the same map mirrored (v -> -v, as a flipped texture convention gives it): not untangled, reported as mirrored
+    UVm = UV.copy()
+    UVm[:, 1] = -UVm[:, 1]
+    _, _, mirrored = ss.snap(V, F, UVm, FUV, integer_grid_map=True)
+    assert mirrored["uv_mirrored"] and not mirrored["untangled"] and "mirrored" in mirrored["message"]
+    assert mirrored["flips_after_repair"] > len(F) // 2
 
 
 def test_closed_surface_without_cuts():

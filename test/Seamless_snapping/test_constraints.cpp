@@ -1341,9 +1341,23 @@ static void test_untangling_analytic()
     assert(r.folds.size() == r.flips_after_repair + r.degenerate_after_repair && r.folds_forced == 0);
     assert(r.message.find("remain") != std::string::npos);
   }
+  // the same torus mirrored (u -> -u: every triangle negative, the cut's transitions mirrored too): the untangling does
+  // not run (it would turn the whole map over), the report says why, every triangle stays listed
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, n, n);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(-get(uv, h).x(), get(uv, h).y()));
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::SUCCESS && r.untangle && !r.untangled && r.uv_mirrored && SS::is_exact_integer_grid_map(m, uv));
+    assert(r.flips_after_repair == r.faces && r.folds.size() == r.faces && r.message.find("mirrored") != std::string::npos);
+    assert(r.folds[0].message.find("mirrored") != std::string::npos);
+    std::cout << "untangling: a mirrored torus: not untangled, reported as mirrored\n";
+  }
   Mesh m = m0; UV_map uv = uv_of(m);
   const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
   check_untangled(m, uv, r, true, "torus with a dragged vertex");
+  assert(!r.uv_mirrored);
   assert(r.untangled && r.flips_before_untangling > 0 && r.flips_after_repair == 0 && r.degenerate_after_repair == 0);
   assert(r.folds.empty() && r.winding_defects.empty() && r.closed_uncut_faces == 0);   // a closed surface, but with cuts
   for(halfedge_descriptor h : m.halfedges()) {

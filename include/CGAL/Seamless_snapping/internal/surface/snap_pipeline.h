@@ -745,7 +745,14 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   const Uv_change snap = measure_uv_change(S, S.x, S.st.ubar);
   report.snap_max_change = snap.max;
   report.snap_rms_change = snap.rms;
-  if(!opt.untangle) return SUCCESS;
+  // a mirrored map (most triangles negative): untangling would turn the whole map over, far from the input (the
+  // horse of ../shared/data with u -> -u: all 6000 triangles "untangled", moving UVs by up to 13,000 grid cells)
+  report.uv_mirrored = snapped.negative > std::size_t(S.cm.n_faces) - snapped.negative - snapped.degenerate;
+  if(report.uv_mirrored && opt.untangle)
+    S.untangle_note = "; the untangling did not run: the map is mirrored (" + std::to_string(snapped.negative) + " of " +
+                      std::to_string(S.cm.n_faces) + " UV triangles are negative): mirror its UVs (e.g. v -> -v, a "
+                      "texture convention some tools flip) or reverse the orientation of its faces";
+  if(!opt.untangle || report.uv_mirrored) return SUCCESS;
   const Face_corners fc(S.cm);
   Target_valences target = target_valences(S, fc, field_rotation_sums(S.cm, S.st, S.rot));
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
@@ -916,6 +923,9 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         if(closed[e.face] > 0) { e.message = closed_uncut_part_reason(closed[e.face]); continue; }
         if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
         else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
+        else if(report.uv_mirrored)
+          e.message = "not proven forced by the constraints; the map is mirrored (more of its UV triangles are negative than "
+                      "positive), so the untangling did not run: mirror its UVs or reverse the orientation of its faces";
         else if(report.untangle_rings > 0)   // the regions grew up to untangle_rings around the faces still non-positive
           e.message = "not proven forced by the constraints; the untangling did not make it positive (its regions grew to " +
                       std::to_string(report.untangle_rings) + " face rings around the fold-overs" +
