@@ -596,6 +596,7 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
       if(open[std::size_t(v)] != 1) continue;
       for(int q = first[std::size_t(v)]; q < first[std::size_t(v) + 1]; ++q)
         if(choices[std::size_t(at[std::size_t(q)])] != 0) e = at[std::size_t(q)];
+      if(e < 0) continue;                                           // (open counts them: not reached)
       const bool source = cm.source(cm.edge_halfedge[e]) == v;
       const int want = ((source ? -K[v] : K[v]) % 4 + 4) % 4;      // the k that makes K[v] = 0 mod 4
       if(choices[std::size_t(e)] & (1u << want)) k = want;

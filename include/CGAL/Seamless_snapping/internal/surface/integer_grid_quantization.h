@@ -28,8 +28,8 @@
 // shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left, the cut edges
 // that close the cycles of the graph still open (around the handles of the surface, or between its charts where the
 // cuts split it) take their translations rounded, all at once, the first time; then, on cut paths between border
-// vertices (which have no condition), one cut edge at the border. In each part of the graph that does not reach the border, one
-// cone is left to the end (quantization_roots()) and takes the point that the others' choices give it.
+// vertices (which have no condition), one cut edge at the border. In each part of the graph that does not reach the
+// border, one cone is left to the end (quantization_roots()) and takes the point that the others' choices give it.
 // add_integer_grid_rows() checks every vertex exactly afterwards and refuses (INFEASIBLE, nothing written) where a
 // condition fails, as for any other choice of integer translations.
 
@@ -231,6 +231,18 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     } while(g != g0);
     return false;
   };
+  auto choose_rounded = [&](int e) {                          // a free choice: e's translation, rounded
+    const int h = cm.edge_halfedge[std::size_t(e)];
+    double ta[2];
+    translation(cm, st, rot, h, true, ubar, ta);
+    for(int c = 0; c < 2; ++c) {
+      if(!within_exact_integers(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h) + " lies", message))
+        return false;
+      t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
+    }
+    settle(h);
+    return true;
+  };
   for(;;) {
     while(!ready.empty()) {
       const int v = ready.front();
@@ -299,18 +311,6 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     }
     while(next_free < st.cut_edges.size() && known[std::size_t(st.cut_edges[next_free])]) ++next_free;
     if(next_free == st.cut_edges.size()) return SUCCESS;
-    auto choose_rounded = [&](int e) {                          // a free choice: e's translation, rounded
-      const int h = cm.edge_halfedge[std::size_t(e)];
-      double ta[2];
-      translation(cm, st, rot, h, true, ubar, ta);
-      for(int c = 0; c < 2; ++c) {
-        if(!within_exact_integers(ta[c], "the translation of cut edge " + vertex_pair_name(cm, h) + " lies", message))
-          return false;
-        t[2 * std::size_t(h) + std::size_t(c)] = long(std::nearbyint(ta[c]));
-      }
-      settle(h);
-      return true;
-    };
     // Stuck: every vertex with one open cut edge is a root or on the border. The first time, the open cut edges that
     // close cycles of the open graph (a spanning forest of it kept, in the order of st.cut_edges) are the free
     // choices: a free choice on an edge that no cycle holds (a bridge) cuts a part off its root and its border
