@@ -82,7 +82,12 @@ struct Untangle_options
   std::vector<int> rings = {1, 2, 4, 8, 16};  // region sizes tried in turn, per cluster of fold-overs
   std::vector<int> wound_rings = {1, 2, 4, 8};// the same in the second sweep (also wound vertices). k = 16 there changed
                                               // no count on any map where it ran (duck_qc_8 default and IGM, the 302K
-                                              // bunny of ../shared/large) and cost 0.1 / 0.43 / 0.8-1.2 s
+                                              // bunny of ../shared/large) and cost 0.1 / 0.43 / 0.8-1.2 s. Without the
+                                              // second sweep (measured 2026-11-29): fandisk (default mode) 2 wound
+                                              // vertices left instead of 0, duck_miq_8 8 instead of 0, duck_qc_8 12
+                                              // instead of 4. Starting it at eps0 = 100 or 1000 (nearly the Dirichlet
+                                              // energy: a harmonic start) or from a least-squares fit of the Jacobians
+                                              // to the input's rotations did not remove duck_qc_8's 4
   int max_outer = 300;                        // eps updates per attempt
   int max_newton = 3;                         // Newton steps per eps
   int stall = 20;                             // eps updates without fewer non-positive faces before an attempt gives up
