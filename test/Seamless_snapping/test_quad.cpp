@@ -1146,6 +1146,29 @@ static void test_quantized_dragon()
   assert(r.report.irregular_vertices == s.field_cones);
 }
 
+// A real genus-1 map that was never made integral: Directional's hex torus with its UVs times 1.1 (no cone, no border:
+// the quantization rounds the translations of the cut edges that close the cut graph's cycles and takes the others from
+// the vertices' conditions), quantized at grid scale 1: an exact fold-free IGM whose quad mesh has every guarantee,
+// Euler characteristic 0 and no irregular vertex
+static void test_quantized_torus()
+{
+  Mesh m;
+  if(!load_shared_or_skip("directional/torus-hex-param.obj", "quad: quantized hex torus", m)) return;
+  UV_map uv = uv_of(m);
+  for(halfedge_descriptor h : m.halfedges())
+    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * 1.1, get(uv, h).y() * 1.1));
+  const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true));
+  if(s.status != SS::SUCCESS) std::cerr << s.message << std::endl;
+  assert(s.status == SS::SUCCESS && s.quantized && SS::is_exact_integer_grid_map(m, uv) && s.field_cones == 0);
+  assert(s.flips_after_repair == 0 && s.degenerate_after_repair == 0 && s.winding_defects.empty());
+  Quad_result r;
+  extract(m, uv, 1, r);
+  check_quad_mesh(m, uv, 1, r, "hex torus x 1.1, quantized");
+  assert(r.report.euler_characteristic == 0 && r.report.irregular_vertices == 0);
+  std::printf("quad: hex torus x 1.1 (genus 1), quantized at grid scale 1: %zu quads, max change %.2f cells\n",
+              r.report.quads, s.total_max_change * s.grid_scale);
+}
+
 // libQEx's maps (over 1 MB, so not in test_shared_data()): their integer translations put cone pairs onto one
 // integer point, and the untangled IGM winds wrongly around them (fandisk, duck_miq_8: fold-free; duck_qc_8: 2
 // fold-overs left). The extraction refuses the fold-free ones (nothing written) and names a collapsed pair that the
@@ -1267,6 +1290,7 @@ int main(int argc, char** argv)
   test_shared_data();
   if(!sanitizer_subset()) test_collapsed_cone_pairs();
   if(!sanitizer_subset()) test_quantized_dragon();
+  test_quantized_torus();
   std::cout << "test_quad: all passed\n";
   return 0;
 }
