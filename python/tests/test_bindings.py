@@ -253,9 +253,11 @@ def test_closed_surface_without_cuts():
     # UVs given per vertex (no seam) on a closed mesh, as a projection or a placeholder makes them: every map of a
     # closed surface into the plane folds, so the snap says so for its folds and leaves the map as it is
     V, F, _, _ = flat_torus(n=4)
-    for UV in (V[:, :2].copy(), np.zeros((len(V), 2))):
+    # (mirrored too: its triangles are mostly negative, but such a part folds in every map: not called mirrored)
+    for UV in (V[:, :2].copy(), V[:, :2] * np.array([-1.0, 1.0]), np.zeros((len(V), 2))):
         UV2, FUV2, report = ss.snap(V, F, UV, F, untangle=True)
         assert report["status"] == "SUCCESS" and report["closed_uncut_faces"] == len(F) and not report["untangled"]
+        assert not report["uv_mirrored"]
         assert report["folds"] and report["folds_forced"] == 0
         assert all("closed part of the surface" in x["message"] for x in report["folds"])
         assert np.array_equal(UV2[FUV2], UV[F])

@@ -746,8 +746,18 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   report.snap_max_change = snap.max;
   report.snap_rms_change = snap.rms;
   // a mirrored map (most triangles negative): untangling would turn the whole map over, far from the input (the
-  // horse of ../shared/data with u -> -u: all 6000 triangles "untangled", moving UVs by up to 13,000 grid cells)
+  // horse of ../shared/data with u -> -u: all 6000 triangles "untangled", moving UVs by up to 13,000 grid cells). The
+  // closed parts without cut edges (closed_uncut_parts.h: a projection's UVs on a closed mesh, about half negative) fold
+  // in every map and are left alone anyway: their triangles do not count
   report.uv_mirrored = snapped.negative > std::size_t(S.cm.n_faces) - snapped.negative - snapped.degenerate;
+  if(report.uv_mirrored) {
+    const std::vector<signed char>& o = orientations_of_x(S);
+    const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, Face_corners(S.cm), non_positive_faces(o));
+    std::size_t negative = 0, positive = 0;
+    for(std::size_t f = 0; f < closed.size(); ++f)
+      if(closed[f] == 0) { negative += o[f] == CGAL::NEGATIVE ? 1 : 0; positive += o[f] == CGAL::POSITIVE ? 1 : 0; }
+    report.uv_mirrored = negative > positive;
+  }
   if(report.uv_mirrored && opt.untangle)
     S.untangle_note = "; the untangling did not run: the map is mirrored (" + std::to_string(snapped.negative) + " of " +
                       std::to_string(S.cm.n_faces) + " UV triangles are negative): mirror its UVs (e.g. v -> -v, a "
