@@ -41,6 +41,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Gmpq.h>
@@ -576,15 +577,12 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
     ++open[std::size_t(cm.target[h])];
   }
   // the zero-length cut edges, in turn: one at a vertex with no other open seam edge first, else the first open one
-  std::vector<int> undecided, first(std::size_t(cm.n_vertices) + 1, 0), at;   // per vertex its undecided edges
+  std::vector<int> undecided;
   for(int e = 0; e < cm.n_edges; ++e) if(choices[std::size_t(e)] != 0) undecided.push_back(e);
-  for(int v = 0; v < cm.n_vertices; ++v) first[std::size_t(v) + 1] = first[std::size_t(v)] + open[std::size_t(v)];
-  at.resize(std::size_t(first.back()));
-  {
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for(int e : undecided)
-      for(int v : {cm.source(cm.edge_halfedge[e]), cm.target[cm.edge_halfedge[e]]}) at[std::size_t(fill[std::size_t(v)]++)] = e;
-  }
+  Index_lists edges_at;                                          // per vertex its undecided edges
+  edges_at.build(cm.n_vertices, [&](auto emit) {
+    for(int e : undecided) { emit(cm.source(cm.edge_halfedge[e]), e); emit(cm.target[cm.edge_halfedge[e]], e); }
+  });
   std::vector<int> ready;
   for(int v = 0; v < cm.n_vertices; ++v) if(open[std::size_t(v)] == 1) ready.push_back(v);
   std::size_t next = 0;
@@ -594,8 +592,8 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
       const int v = ready.back();
       ready.pop_back();
       if(open[std::size_t(v)] != 1) continue;
-      for(int q = first[std::size_t(v)]; q < first[std::size_t(v) + 1]; ++q)
-        if(choices[std::size_t(at[std::size_t(q)])] != 0) e = at[std::size_t(q)];
+      for(int f : edges_at[v])
+        if(choices[std::size_t(f)] != 0) e = f;
       if(e < 0) continue;                                           // (open counts them: not reached)
       const bool source = cm.source(cm.edge_halfedge[e]) == v;
       const int want = ((source ? -K[v] : K[v]) % 4 + 4) % 4;      // the k that makes K[v] = 0 mod 4
