@@ -74,6 +74,13 @@ static inline void scale_uvs(const Mesh& m, UV_map uv, int j)
     put(uv, h, Point_2(std::ldexp(get(uv, h).x(), j), std::ldexp(get(uv, h).y(), j)));
 }
 
+// every halfedge UV (border ones too) times `factor`, rounded (a factor that is not a power of two: a map moved off its
+// integer grid, e.g. for quantization)
+static inline void multiply_uvs(const Mesh& m, UV_map uv, double factor)
+{
+  for(halfedge_descriptor h : m.halfedges()) put(uv, h, Point_2(get(uv, h).x() * factor, get(uv, h).y() * factor));
+}
+
 // all halfedge UVs (also border ones), as raw bits
 static inline std::vector<std::uint64_t> uv_bits(const Mesh& m, UV_map uv)
 {

@@ -736,8 +736,7 @@ static void test_quantized_cut_cycles()
   Mesh m;
   if(!load_shared_or_skip("directional/dragon-param-full-seamless.obj", "quantization: a cut graph with cycles", m)) return;
   UV_map uv = uv_of(m);
-  for(halfedge_descriptor h : m.halfedges())
-    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * 1.5, get(uv, h).y() * 1.5));
+  multiply_uvs(m, uv, 1.5);
   const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true)
                                                                           .merge_cone_pairs(true).untangle(false));
   if(r.status != SS::SUCCESS) std::cerr << r.message << std::endl;
@@ -918,8 +917,7 @@ static void make_perturbed_torus(Mesh& m, UV_map& uv, double scale)
   make_flat_torus(m, uv, 3, 3 + std::ldexp(1., -51));
   for(halfedge_descriptor h : m.halfedges())
     if(!m.is_border(h) && get(uv, h) == Point_2(1, 0)) put(uv, h, Point_2(1 + std::ldexp(1., -40), 0));
-  for(halfedge_descriptor h : m.halfedges())
-    put(uv, h, Point_2(get(uv, h).x() * scale, get(uv, h).y() * scale));
+  multiply_uvs(m, uv, scale);
 }
 
 static void test_pinned_corners_analytic()

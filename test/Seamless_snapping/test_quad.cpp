@@ -592,8 +592,7 @@ static void test_quantized_cube()
     for(double factor : {1.3, 1.45, 1.7}) {
       Mesh m; UV_map uv;
       make_cube_map(m, uv, n);
-      for(halfedge_descriptor h : m.halfedges())
-        if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * factor, get(uv, h).y() * factor));
+      multiply_uvs(m, uv, factor);
       const std::string what = "quantized cube " + std::to_string(n) + " x " + std::to_string(factor).substr(0, 4);
       const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true));
       if(s.status != SS::SUCCESS) std::cerr << what << ": " << s.message << std::endl;
@@ -1155,8 +1154,7 @@ static void test_quantized_torus()
   Mesh m;
   if(!load_shared_or_skip("directional/torus-hex-param.obj", "quad: quantized hex torus", m)) return;
   UV_map uv = uv_of(m);
-  for(halfedge_descriptor h : m.halfedges())
-    if(!m.is_border(h)) put(uv, h, Point_2(get(uv, h).x() * 1.1, get(uv, h).y() * 1.1));
+  multiply_uvs(m, uv, 1.1);
   const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).quantize(true));
   if(s.status != SS::SUCCESS) std::cerr << s.message << std::endl;
   assert(s.status == SS::SUCCESS && s.quantized && SS::is_exact_integer_grid_map(m, uv) && s.field_cones == 0);
