@@ -17,7 +17,11 @@
 // as many patches, its nodes and arcs the quad layout's vertices and arcs but those that split loops), and the
 // patches of libQEx's stored mesh.
 //
-// usage: bench_quad [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
+// --quantize: quantize(true) too, so that maps whose translations are not integers (Directional's rot-seamless dragon,
+// retinal_miq) get integer translations chosen at the grid scale given, as `seamless_quad --quantize` (on the maps that
+// are integer-grid maps already the rounding keeps their translations: the same rows).
+//
+// usage: bench_quad [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
 //        as Directional writes cut meshes). Without arguments the directory in the environment variable
 //        SS_SHARED_DATA_DIR is used, and the reference directory is SS_SHARED_DATA_DIR/../reference/libqex_quads.
@@ -128,22 +132,23 @@ int main(int argc, char** argv)
   std::vector<fs::path> inputs, files;
   int repeat = 5;
   double grid_scale = 1;
-  bool merge_cone_pairs = true;
+  bool merge_cone_pairs = true, quantize = false;
   std::string reference_dir;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = (std::max)(1, std::atoi(argv[++i]));
     else if(std::strcmp(argv[i], "--grid-scale") == 0 && i + 1 < argc) grid_scale = std::atof(argv[++i]);
     else if(std::strcmp(argv[i], "--reference") == 0 && i + 1 < argc) reference_dir = argv[++i];
     else if(std::strcmp(argv[i], "--keep-cone-pairs") == 0) merge_cone_pairs = false;
+    else if(std::strcmp(argv[i], "--quantize") == 0) quantize = true;
     else inputs.emplace_back(argv[i]);
   }
   if(reference_dir.empty() && std::getenv("SS_SHARED_DATA_DIR") != nullptr)
     reference_dir = (fs::path(std::getenv("SS_SHARED_DATA_DIR")) / ".." / "reference" / "libqex_quads").string();
-  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--grid-scale S] [--reference DIR] [--keep-cone-pairs] "
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] "
                                 "<file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files))
     return 2;
 
-  std::printf("grid scale %g; times: minimum of %d runs, ms\n\n", grid_scale, repeat);
+  std::printf("grid scale %g%s; times: minimum of %d runs, ms\n\n", grid_scale, quantize ? ", quantized" : "", repeat);
   std::printf("| model | faces | snap | snap ms | extraction | extract ms (check / cells / mesh) | extract / snap | quads | vertices |"
               " irregular / cones | holes | non-manifold v / e | chi (map) | all quads | covers map | libQEx V / F |"
               " libQEx closed, manifold |\n");
@@ -167,7 +172,7 @@ int main(int argc, char** argv)
       m = input;
       UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
       snap = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(grid_scale)
-                                                       .merge_cone_pairs(merge_cone_pairs));
+                                                       .merge_cone_pairs(merge_cone_pairs).quantize(quantize));
       snap_ms = (std::min)(snap_ms, snap.total_ms);
     }
     UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
