@@ -63,6 +63,12 @@
 #include <unordered_map>
 #include <vector>
 
+#if defined(__unix__)
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
+
 #ifndef SS_SHARED_DATA_DIR
 #define SS_SHARED_DATA_DIR ""
 #endif
@@ -844,6 +850,28 @@ static void test_write_failures(const fs::path& tmp)
   std::size_t tmp_files = 0;
   for(const auto& e : fs::directory_iterator(dir)) if(e.path().string().find(".tmp-") != std::string::npos) ++tmp_files;
   CHECK(tmp_files == 0, "temporary files left: " << tmp_files);
+  // a symbolic link is followed: its target replaced, the link kept
+  const fs::path target = dir / "target.obj", link = dir / "link.obj";
+  { std::ofstream old(target.string()); old << "old content\n"; }
+  fs::create_symlink(target.filename(), link);
+  CHECK(SS::IO::write_OBJ_with_corner_uvs(link.string(), m, uv, msg) == SS::SUCCESS, "symbolic link: " << msg);
+  {
+    std::ifstream in(target.string()); std::string first; std::getline(in, first);
+    CHECK(fs::is_symlink(fs::symlink_status(link)) && first.rfind("# OBJ", 0) == 0, "the link was replaced, or not its target");
+  }
+#if defined(__unix__)
+  // a named pipe (as a device, e.g. /dev/null or /dev/stdout) is written to, not replaced by a regular file
+  const fs::path fifo = dir / "pipe";
+  CHECK(mkfifo(fifo.c_str(), 0600) == 0, "mkfifo");
+  const int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);   // a reader first, so that the writer does not block
+  CHECK(reader >= 0, "open the pipe");
+  const std::string text = "{\"json\": 1}\n";                  // fits in the pipe's buffer
+  CHECK(SS::IO::internal::write_text_atomically(fifo.string(), text, msg) == SS::SUCCESS, "named pipe: " << msg);
+  char buffer[64] = {0};
+  const ssize_t got = reader >= 0 ? read(reader, buffer, sizeof buffer - 1) : -1;
+  CHECK(fs::is_fifo(fifo) && got == ssize_t(text.size()) && text == buffer, "the named pipe was replaced or not written (" << got << " bytes)");
+  if(reader >= 0) close(reader);
+#endif
   // the missing-file reader error
   Mesh r; UV_map ruv = r.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   CHECK(SS::IO::read_OBJ_with_corner_uvs((dir / "nope.obj").string(), r, ruv, msg) == SS::INVALID_INPUT && msg.find("cannot open") != std::string::npos, "missing file: " << msg);

@@ -40,6 +40,7 @@
 #include <cstdlib>
 #include <condition_variable>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <mutex>
@@ -808,13 +809,12 @@ inline std::string temporary_name_next_to(const std::string& filename)
   return filename + ".tmp-" + buf;
 }
 
-// Writes a file through a temporary file next to it and std::rename (atomic on POSIX): `write(os)`
-// writes the content to the stream and returns false if it could not; on failure nothing is left
-// behind and `filename` is untouched.
+// write_atomically() to the regular file (or new file) `path`; `filename`: the name the caller gave, for messages
 template <class Write>
-Status write_atomically(const std::string& filename, const Write& write, std::string& message)
+Status write_regular_file_atomically(const std::string& path, const std::string& filename, const Write& write,
+                                     std::string& message)
 {
-  const std::string tmp = temporary_name_next_to(filename);
+  const std::string tmp = temporary_name_next_to(path);
   {
     std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
     if(!os) {
@@ -832,13 +832,45 @@ Status write_atomically(const std::string& filename, const Write& write, std::st
       return INVALID_INPUT;
     }
   }
-  if(std::rename(tmp.c_str(), filename.c_str()) != 0) {
+  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string why = std::strerror(errno);
     std::remove(tmp.c_str());
     message = "cannot write '" + filename + "': renaming the temporary file failed (" + why + ")";
     return INVALID_INPUT;
   }
   return SUCCESS;
+}
+
+// Writes a file through a temporary file next to it and std::rename (atomic on POSIX): `write(os)`
+// writes the content to the stream and returns false if it could not; on failure nothing is left
+// behind and `filename` is untouched. A symbolic link is followed (the file it points to is replaced, not
+// the link). Where `filename` is something other than a regular file (a device such as /dev/null or
+// /dev/stdout, a named pipe), a rename would replace it by a regular file (as root: /dev/null itself), so the
+// content is written to it directly, not atomically; a directory is refused.
+template <class Write>
+Status write_atomically(const std::string& filename, const Write& write, std::string& message)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status target = fs::status(filename, ec);     // follows symbolic links
+  if(!ec && fs::is_directory(target)) {
+    message = "cannot write '" + filename + "': it is a directory";
+    return INVALID_INPUT;
+  }
+  if(!ec && fs::exists(target) && !fs::is_regular_file(target)) {
+    std::ofstream os(filename, std::ios::binary);
+    bool ok = static_cast<bool>(os) && write(os);
+    os.flush();
+    ok = ok && static_cast<bool>(os);
+    if(!ok) message = "cannot write '" + filename + "' (" + std::strerror(errno) + ")";
+    return ok ? SUCCESS : INVALID_INPUT;
+  }
+  std::string path = filename;
+  if(!ec && fs::is_symlink(fs::symlink_status(filename, ec)) && !ec) {
+    const fs::path resolved = fs::canonical(filename, ec);
+    if(!ec) path = resolved.string();
+  }
+  return write_regular_file_atomically(path, filename, write, message);
 }
 
 // Writes `text` to `filename` atomically (write_atomically()).
@@ -1002,7 +1034,9 @@ Status read_OBJ_with_corner_uvs(std::istream& is, TriangleMesh& tm, HalfedgeUVMa
  * writes the triangle mesh `tm` with the per-corner texture coordinates `uv` to the OBJ file
  * `filename`, atomically: the text goes to a temporary file in the same directory, which is
  * then renamed to `filename` (`std::rename()`, atomic on POSIX file systems). On any failure no
- * file is created or changed, and no temporary file is left behind.
+ * file is created or changed, and no temporary file is left behind. A symbolic link is followed (its
+ * target is replaced); a `filename` that is not a regular file (a device such as `/dev/stdout`, a named
+ * pipe) is written directly, not atomically, and stays what it is.
  *
  * The file has one `v` per vertex (in the order of `vertices(tm)`), one `vt` per vertex and
  * distinct (bit-identical) UV among the corners of that vertex (so `vt` are shared inside charts
