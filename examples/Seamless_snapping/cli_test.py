@@ -80,9 +80,16 @@ if rc == 0:
 
 # 4. --integer-grid --vval: the VVAL file (header line, vertex count = the v lines of OUT.obj, one valence per
 # vertex); the cones of the field are exactly the vertices whose valence is not 4, and on a closed genus-0 surface
-# the valences satisfy Gauss-Bonnet exactly: sum (4 - valence) = 4 chi = 8
+# the valences satisfy Gauss-Bonnet exactly: sum (4 - valence) = 4 chi = 8. On the bear's Parallelogram map (4 cones
+# of 180 degrees, valence 2; grid scale 4, as seamless_quad's example); the Square map's cones of 90 degrees have
+# valence 1, which no quad mesh has: refused, nothing written
+square_out, square_vval = os.path.join(work, "square.obj"), os.path.join(work, "square.vval")
+rc, text = run(src, square_out, "--integer-grid", "--vval", square_vval)
+check(rc == 1 and "(a cone of valence 1)" in text and not os.path.exists(square_out) and not os.path.exists(square_vval),
+      "--vval with cones of 90 degrees: exit 1, nothing written: %d %s" % (rc, text))
+parallelogram = os.path.join(os.path.dirname(src), "bear_parallelogram.obj")
 out5, vval5, rep5 = os.path.join(work, "igm.obj"), os.path.join(work, "igm.vval"), os.path.join(work, "igm.json")
-rc, text = run(src, out5, "--integer-grid", "--vval", vval5, "--report", rep5)
+rc, text = run(parallelogram, out5, "--integer-grid", "--grid-scale", "4", "--vval", vval5, "--report", rep5)
 check(rc == 0 and "VVAL" in text, "--integer-grid --vval: exit %d %s" % (rc, text))
 if rc == 0:
     lines = open(vval5).read().split("\n")

@@ -2,8 +2,10 @@
 // cuts, cones on integer points, up to solver error) is snapped to an exact IGM, checked, and written for a quad
 // extractor such as libQEx: an OBJ with one vt per face corner and the vertex valences (VVAL).
 //   integer_grid_snap IN.obj [GRID_SCALE [OUT.obj [OUT.vval]]]    (GRID_SCALE: a power of two, default 1)
-// On orbifold_to_exact's bear map (CTest) grid scale 1 is accepted: the square Orbifold Tutte map is near an IGM (integer
-// translations 0 -> 99 of 99 cut edges, cones on integer points 0 -> 3 of 3); grid scale 0.25 is refused (INVALID_INPUT).
+// On quad_figure's bear map (CTest; the Parallelogram Orbifold Tutte map, 4 cones of 180 degrees) grid scale 4 is accepted:
+// it is near an IGM (integer translations 0 -> 225 of 225 cut edges, cones on integer points 0 -> 4 of 4); grid scale 1 is
+// refused (INFEASIBLE: a cone's fixed point at a half-integer; the message names grid scale 2). The Square map's cones
+// of 90 degrees snap too, but have valence 1, which no quad mesh has: quad_valences() refuses them (INVALID_INPUT).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
@@ -45,7 +47,8 @@ int main(int argc, char** argv)
     return fail("the snapped map is not an exact integer-grid map");
 
   // the valences a quad extractor needs: the integer-grid directions leaving each vertex (4 regular, 3 and 5 at
-  // cones), counted exactly; refused (FOLD_OVERS) when the map has fold-overs or zero-area UV triangles
+  // cones), counted exactly; refused (FOLD_OVERS) when the map has fold-overs or zero-area UV triangles, and
+  // (INVALID_INPUT) at a vertex of valence 1
   const SS::Quad_valences q = SS::quad_valences(mesh, uv);
   if(q.status != SS::SUCCESS) return fail(std::string("quad_valences: ") + SS::status_name(q.status) + ": " + q.message);
   std::size_t irregular = 0;

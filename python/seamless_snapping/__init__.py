@@ -383,7 +383,9 @@ def quad_valences(V, F, UV, FUV, *, weld=False, raise_on_failure=True):
     are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
     vertex is on the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
     valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
-    be multiples of 90 degrees: snap() it first; or the arrays do not form a triangle mesh), "FOLD_OVERS" (a negatively
+    be multiples of 90 degrees: snap() it first; or the arrays do not form a triangle mesh; or an interior vertex has
+    valence 1, a cone of 90 degrees or a cone of 5 quarter turns that the map winds back to 1, which no quad mesh has:
+    the message names it), "FOLD_OVERS" (a negatively
     oriented UV triangle, or a zero-area one with two corners at one point, listed: there the angle sum is a signed
     winding number that no quad mesh has; snap(..., untangle=True) removes fold-overs where the constraints allow). A
     zero-area triangle with three distinct collinear corners counts as the limit of a thin positive one, as

@@ -902,7 +902,11 @@ static void test_refusals()
   // a cone of 90 degrees
   Mesh c; UV_map uvc;
   make_quarter_turn_cone(c, uvc);
-  assert(SS::is_exact_integer_grid_map(c, uvc) && SS::quad_valences(c, uvc).valence[0] == 1);
+  {
+    const SS::Quad_valences qc = SS::quad_valences(c, uvc);   // the same refusal: a VVAL file never gets a valence of 1
+    assert(SS::is_exact_integer_grid_map(c, uvc) && qc.status == SS::INVALID_INPUT && qc.valence.empty() &&
+           qc.message.find("vertex 0 has a UV angle sum of 1 quarter turn") == 0);
+  }
   check_refused(c, uvc, 1, SS::INVALID_INPUT, "valence 1", "cone of 90 degrees");
   // no whole cell, so no quad mesh (it used to be an empty mesh with SUCCESS, or an internal error): one grid square
   // at half size (its one cell cut by the border), and a grid whose UVs lie on one line (every face collapsed onto
@@ -1064,12 +1068,10 @@ static void test_shared_data()
       continue;
     }
     const SS::Quad_valences qv = SS::quad_valences(m, uv);
-    assert(qv.status == SS::SUCCESS);
-    bool quarter_cone = false, winds_twice = false;   // a cone of 90 degrees (Directional's knight has one)
-    for(vertex_descriptor v : m.vertices()) {
-      quarter_cone = quarter_cone || (!m.is_border(v) && qv.valence[std::size_t(v)] == 1);
-      winds_twice = winds_twice || (!m.is_border(v) && qv.valence[std::size_t(v)] >= 7);
-    }
+    // a cone of 90 degrees (Directional's knight has one): quad_valences() refuses it, naming the vertex
+    const bool quarter_cone = qv.status == SS::INVALID_INPUT && qv.message.find("(a cone of valence 1)") != std::string::npos;
+    const bool winds_twice = quarter_cone && qv.message.find("quarter turns: most likely a cone of 5") != std::string::npos;
+    assert(qv.status == SS::SUCCESS || quarter_cone);
     if(quarter_cone) {
       // with no vertex winding twice anywhere, the cone is most likely the map's own (the knight's field has it):
       // said so, and no cone pair is blamed
@@ -1170,7 +1172,7 @@ static void test_quantized_torus()
 // libQEx's maps (over 1 MB, so not in test_shared_data()): their integer translations put cone pairs onto one
 // integer point, and the untangled IGM winds wrongly around them (fandisk, duck_miq_8: fold-free; duck_qc_8: 2
 // fold-overs left). The extraction refuses the fold-free ones (nothing written) and names a collapsed pair that the
-// snap report's winding defects name too.
+// snap report's winding defects name too; quad_valences() refuses them as well (no valence 1 in a VVAL file).
 // With merge_cone_pairs(true) the named pair is merged (its cones regular points of the field, the map still an
 // exact IGM with two cones fewer), and the quad mesh is extracted with every guarantee: as many vertices and
 // quads as libQEx's stored mesh within 10 %, no more irregular vertices than it.
@@ -1204,6 +1206,9 @@ static void test_collapsed_cone_pairs()
       for(const SS::Winding_defect& d : s.winding_defects)
         named = named || d.message.find("the cones at vertices " + pair + " nearby") != std::string::npos;
       assert(named);
+      // quad_valences() (the VVAL file) refuses it too: it gave the wound cone valence 1 and its partner 8
+      const SS::Quad_valences qv = SS::quad_valences(m, uv);
+      assert(qv.status == SS::INVALID_INPUT && qv.valence.empty() && qv.message.find("quarter turns: most likely a cone of 5") != std::string::npos);
       ++refused;
     }
 

@@ -58,7 +58,8 @@ struct Quad_valences
  * that trusts it leaves holes. A zero-area UV triangle whose three corners are distinct (collinear) is counted as the
  * limit of a thin positively oriented triangle (its middle corner 180 degrees, its others 0), as
  * `extract_quad_mesh()` collapses it onto its longest side; one with two corners at one UV point is refused too.
- * `extract_quad_mesh()` refuses the same maps.
+ * So is an interior vertex of valence 1 (an angle sum of 90 degrees: a cone of the map's own, or a cone of 5 quarter
+ * turns that the map winds back to 1): no quad mesh has it. `extract_quad_mesh()` refuses the same maps.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
  * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
@@ -68,7 +69,8 @@ struct Quad_valences
  * \param uv the corner UV map: `get(uv, h)` is the UV of the corner (`target(h)`, `face(h)`)
  *
  * \return the valences; `INVALID_INPUT` (nothing computed) if the map is not exactly seamless
- *         (`is_exactly_seamless()`), is empty, has a face that is not a triangle or a non-finite UV; `FOLD_OVERS`
+ *         (`is_exactly_seamless()`), is empty, has a face that is not a triangle or a non-finite UV, or has an interior
+ *         vertex of valence 1 (`message` names it); `FOLD_OVERS`
  *         (nothing computed) if a UV triangle is negatively oriented or has two corners at one UV point (all the
  *         zero-area triangles are listed then).
  *
@@ -98,6 +100,21 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
     return r;
   }
   const internal::Quad_valence_result q = internal::quad_valences(cm);
+  for(int v = 0; v < cm.n_vertices; ++v)
+    if(q.valence[std::size_t(v)] == 1 && !cm.vertex_on_border[std::size_t(v)]) {
+      r.status = INVALID_INPUT;
+      r.message = "vertex " + std::to_string(v) + " has a UV angle sum of 1 quarter turn (a cone of valence 1): the quad "
+                  "there would have its two sides at the cone on one edge, a corner twice; no quad mesh has it "
+                  "(extract_quad_mesh() refuses it too)";
+      for(int w = 0; w < cm.n_vertices; ++w)
+        if(q.valence[std::size_t(w)] >= 7 && !cm.vertex_on_border[std::size_t(w)]) {
+          r.message += "; vertex " + std::to_string(w) + " has " + std::to_string(q.valence[std::size_t(w)]) +
+                       " quarter turns: most likely a cone of 5 wound back to 1, its missing turns there (a cone pair "
+                       "put onto one integer point: merge_cone_pairs(true))";
+          break;
+        }
+      return r;
+    }
   r.valence = q.valence;
   r.border.assign(q.border.begin(), q.border.end());
   return r;
