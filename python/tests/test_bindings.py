@@ -150,6 +150,12 @@ def test_snap_integer_grid_map():
     with pytest.raises(ss.SnapError) as e:
         ss.snap(Vq, Fq, UVq, FUVq, integer_grid_map=True)
     assert e.value.report["status"] == "INVALID_INPUT"
+    # tolerances that are NaN or negative: refused (NaN used to pass as "no bound" or "align nothing")
+    for name in ("max_untangle_change", "alignment_tolerance", "rotation_tolerance"):
+        for bad in (float("nan"), -1.0):
+            with pytest.raises(ss.SnapError) as e:
+                ss.snap(V, F, UV, FUV, integer_grid_map=True, **{name: bad})
+            assert e.value.report["status"] == "INVALID_INPUT" and e.value.report["message"].startswith(name + " = ")
 
 
 def test_diagnose_seamlessness():

@@ -86,6 +86,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -578,6 +579,20 @@ static void test_integer_grid_analytic()
     const SS::Snap_report r3 = SS::snap_seamless_parameterization(q, uvq, SS::parameters::integer_grid_map(true,
                                                                   SS::parameters::grid_scale(3.)));
     assert(r3.status == SS::INVALID_INPUT && uv_bits(q, uvq) == bits);
+    // so are tolerances that are NaN, negative or (but max_untangle_change) infinite: NaN used to pass as "no bound"
+    // (max_untangle_change), "align nothing" (alignment_tolerance) or "not quarter-turn seamless" (rotation_tolerance)
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = HUGE_VAL;
+    for(const double bad : {nan, -1., inf}) {
+      const SS::Snap_report ra = SS::snap_seamless_parameterization(q, uvq, SS::parameters::alignment_tolerance(bad));
+      const SS::Snap_report rr = SS::snap_seamless_parameterization(q, uvq, SS::parameters::rotation_tolerance(bad));
+      assert(ra.status == SS::INVALID_INPUT && ra.message.find("alignment_tolerance = ") == 0);
+      assert(rr.status == SS::INVALID_INPUT && rr.message.find("rotation_tolerance = ") == 0);
+      if(bad == inf) continue;
+      const SS::Snap_report rm = SS::snap_seamless_parameterization(q, uvq, SS::parameters::integer_grid_map(true).grid_scale(4.)
+                                                                                .max_untangle_change(bad));
+      assert(rm.status == SS::INVALID_INPUT && rm.message.find("max_untangle_change = ") == 0);
+    }
+    assert(uv_bits(q, uvq) == bits);
     std::cout << "integer grid: torus translation 3.0000000001 -> 3: OK (" << r.message << ")\n";
   }
   // torus whose period is far from an integer, at every power-of-two grid scale too (3.4 is not dyadic): refused with

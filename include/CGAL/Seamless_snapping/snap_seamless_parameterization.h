@@ -98,7 +98,8 @@ namespace Seamless_snapping {
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{`1` (degree)}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::rotation_tolerance()`. A larger deviation
- *                     gives `NOT_QUARTER_TURN_SEAMLESS` (e.g. the 120 degree seams of CGAL's `Triangle` orbifold).}
+ *                     gives `NOT_QUARTER_TURN_SEAMLESS` (e.g. the 120 degree seams of CGAL's `Triangle` orbifold). A
+ *                     value that is NaN, negative or infinite gives `INVALID_INPUT`.}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{align_boundary}
  *     \cgalParamDescription{whether border edges whose UV direction is within `alignment_tolerance` of the u or v axis
@@ -115,7 +116,8 @@ namespace Seamless_snapping {
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{`1e-3` (degrees): aligned parametrizations are axis-parallel up to solver error, far below
  *                       this; free boundaries are rarely that close to an axis by chance}
- *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::alignment_tolerance()`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::alignment_tolerance()`; NaN, negative or
+ *                     infinite: `INVALID_INPUT`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_is_constrained_map}
  *     \cgalParamDescription{edges (features, border) that must be aligned with the u or v axis (Eq. 5); the aligned
@@ -275,7 +277,8 @@ namespace Seamless_snapping {
  *                           snap of the input is written, `Snap_report::untangle_refused` is set and the message says why)}
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{no bound}
- *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_untangle_change()`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_untangle_change()`; NaN or negative:
+ *                     `INVALID_INPUT` (infinity: no bound)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{merge_cone_pairs}
  *     \cgalParamDescription{with `integer_grid_map`: a +90 and a -90 degree cone (valence 3 and 5) that the rounded

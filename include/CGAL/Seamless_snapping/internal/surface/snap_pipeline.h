@@ -310,6 +310,17 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
                      Snap_state<TriangleMesh>& S, Snap_report& report, std::string& message)
 {
   int& grid_exponent = S.grid_exponent;   // the grid scale is 2^grid_exponent
+  // the tolerances: finite and not negative (a NaN compared false everywhere: alignment_tolerance = NaN aligned nothing,
+  // rotation_tolerance = NaN refused every map); max_untangle_change: not negative, +infinity (no bound) allowed
+  const std::pair<const char*, double> tolerances[] = {{"alignment_tolerance", opt.alignment_tolerance},
+                                                       {"rotation_tolerance", opt.rotation_tolerance},
+                                                       {"max_untangle_change", opt.max_untangle_change}};
+  for(const std::pair<const char*, double>& t : tolerances)
+    if(!(t.second >= 0) || (std::isinf(t.second) && t.first != tolerances[2].first)) {
+      message = std::string(t.first) + " = " + format_double(t.second, 17) + ": it must be " +
+                (t.first == tolerances[2].first ? "a number >= 0 (or infinity: no bound)" : "a finite number >= 0");
+      return INVALID_INPUT;
+    }
   if(!grid_scale_exponent(opt.grid_scale, grid_exponent)) {
     message = "the grid scale " + format_double(opt.grid_scale, 17) + " is not a power of two, so it cannot be applied " +
               "exactly; use 2^j, or scale the map yourself";
