@@ -224,6 +224,20 @@ check(json.load(open(os.path.join(outdir, "cut.json")))["status"] == "SUCCESS", 
 table = open(summary).read()
 check("2 of 3 inputs snapped exactly" in table and "| FAILED |" in table and "missing.obj" in table,
       "--summary: the table names every input and status: %s" % table)
+# an input that cannot be read gets its report too (status INVALID_INPUT, the reader's message), as with --report
+missing_report = json.load(open(os.path.join(outdir, "missing.json")))
+check(missing_report["status"] == "INVALID_INPUT" and "cannot read input" in missing_report["message"] and
+      missing_report["input"] == missing, "--outdir: a report for the unreadable input: %s" % missing_report)
+rc, text = run(missing, os.path.join(work, "m.obj"), "--report", os.path.join(work, "missing_single.json"))
+check(rc == 1 and json.load(open(os.path.join(work, "missing_single.json")))["status"] == "INVALID_INPUT",
+      "--report of an unreadable input: exit 1, the report written: %d %s" % (rc, text))
+# two inputs with one file name would overwrite each other's results: refused (exit 2), nothing written
+os.makedirs(os.path.join(work, "other"), exist_ok=True)
+twin = os.path.join(work, "other", os.path.basename(src))
+shutil.copyfile(src, twin)
+rc, text = run("--outdir", os.path.join(work, "twins"), src, twin)
+check(rc == 2 and "share the name" in text and not os.path.exists(os.path.join(work, "twins")),
+      "--outdir with two inputs of one name: exit 2, nothing written: %d %s" % (rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 

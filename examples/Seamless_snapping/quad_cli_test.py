@@ -220,6 +220,14 @@ for opt in ["--weld", "--no-weld", "--grid-scale", "--quantize", "--no-untangle"
             "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
+# an input that cannot be read: exit 1, no mesh, and the report says why (the help: "also on failure")
+unreadable, unreadable_report = os.path.join(work, "missing.obj"), os.path.join(work, "missing.json")
+rc, text = run(unreadable, os.path.join(work, "missing_out.obj"), "--report", unreadable_report)
+rep = json.load(open(unreadable_report)) if os.path.exists(unreadable_report) else {}
+check(rc == 1 and not os.path.exists(os.path.join(work, "missing_out.obj")) and rep.get("quad_mesh", 0) is None and
+      rep.get("snap", {}).get("status") == "INVALID_INPUT" and "cannot read input" in rep.get("snap", {}).get("message", ""),
+      "unreadable input: exit 1, the report written: %d %s %s" % (rc, text, rep))
+
 for f in failures:
     print("FAILED:", f)
 print("quad_cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))

@@ -230,15 +230,36 @@ int main(int argc, char** argv)
     return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld).number_of_threads(threads))
            == SS::SUCCESS;
   };
-  if(!read()) return fail("cannot read input: " + message);
+  // the JSON report (--report): the snap report and the quad mesh's, its patches' and its layout's (JSON texts)
+  auto write_report = [&](const SS::Snap_report& snap, const std::string& quad_mesh, const std::string& patches,
+                          const std::string& layout) {
+    const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+                             ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
+                             snap.to_json() + ",\n  \"quad_mesh\": " + quad_mesh + ",\n  \"patches\": " + patches +
+                             ",\n  \"layout\": " + layout + "}\n";
+    return SS::IO::internal::write_text_atomically(report_file, json, message) == SS::SUCCESS;
+  };
+  // a refusal before the snap (the input cannot be read): the report says why, as the help promises
+  auto refuse_input = [&](const std::string& why) {
+    if(!report_file.empty()) {
+      SS::Snap_report refused;
+      refused.status = SS::INVALID_INPUT;
+      refused.message = why;
+      const std::string saved = message;
+      if(!write_report(refused, "null", "null", "null")) fail(message);
+      message = saved;
+    }
+    return fail(why);
+  };
+  if(!read()) return refuse_input("cannot read input: " + message);
   const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
   if(cut.is_cut_mesh() && no_weld)
-    return fail("the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
+    return refuse_input("the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
                 std::to_string(cut.border_edges) + " border edges lie on another one at bit-identical 3D points) and "
                 "--no-weld keeps its seams as borders, which no quad mesh of the map has; nothing was written");
   if(cut.is_cut_mesh()) {
     weld = true;
-    if(!read()) return fail("cannot read input: " + message);
+    if(!read()) return refuse_input("cannot read input: " + message);
     if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
                          << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
   }
@@ -286,15 +307,11 @@ int main(int argc, char** argv)
   auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
   SS::Quad_layout lay;
   if(q.status == SS::SUCCESS && !layout_file.empty()) lay = SS::quad_layout(quads, layout, arcs);
-  if(!report_file.empty()) {
-    const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
-                             ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
-                             snap.to_json() + ",\n  \"quad_mesh\": " +
-                             (snap.status == SS::SUCCESS ? q.to_json() : std::string("null")) + ",\n  \"patches\": " +
-                             (q.status == SS::SUCCESS ? patches.to_json() : std::string("null")) + ",\n  \"layout\": " +
-                             (q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null")) + "}\n";
-    if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
-  }
+  if(!report_file.empty() &&
+     !write_report(snap, snap.status == SS::SUCCESS ? q.to_json() : std::string("null"),
+                   q.status == SS::SUCCESS ? patches.to_json() : std::string("null"),
+                   q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null")))
+    return fail(message);
   if(snap.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(snap.status) + ": " + snap.message);
   if(q.status != SS::SUCCESS) {

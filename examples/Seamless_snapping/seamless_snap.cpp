@@ -333,10 +333,25 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   Summary_row& R = row != nullptr ? *row : scratch_row;
   R.input = in;
   const Clock::time_point t_start = Clock::now();
+  bool report_written = false;
+  auto write_report = [&](const SS::Snap_report& report, std::string& message) {
+    report_written = true;
+    std::string json = report.to_json();
+    json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+                                    ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",");
+    return SS::IO::internal::write_text_atomically(report_file, json, message) == SS::SUCCESS;
+  };
   auto fail = [&](const std::string& why) {
     R.status = "FAILED";
     R.message = one_line(why);
     R.total_ms = ms_since(t_start);
+    if(has_report && !report_written) {   // before the snap ran (the input or a file of an option): the report says why
+      SS::Snap_report refused;
+      refused.status = SS::INVALID_INPUT;
+      refused.message = why;
+      std::string message;
+      if(!write_report(refused, message)) ::fail(message);
+    }
     return ::fail(why);
   };
 
@@ -437,10 +452,7 @@ static int snap_file(const Options& options, const std::string& in, const std::s
     std::cerr << "seamless_snap: warning: " << report.cones_on_integer_points_before - report.cones_on_integer_points_after
               << " cones that were exactly on integer points moved off them; --integer-grid keeps them\n";
   if(has_report) {
-    std::string json = report.to_json();
-    json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
-                                    ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",");
-    if(SS::IO::internal::write_text_atomically(report_file, json, message) != SS::SUCCESS) return fail(message);
+    if(!write_report(report, message)) return fail(message);
     if(!quiet) std::cout << "report written to " << report_file << "\n";
   }
   if(report.status != SS::SUCCESS)
@@ -671,6 +683,14 @@ int main(int argc, char** argv)
 
   if(outdir.empty()) return snap_file(o, in, out, has_report ? report_file : std::string(), nullptr);
   // --outdir: each input to OUTDIR/NAME.obj with its report OUTDIR/NAME.json, then the summary table
+  for(std::size_t i = 0; i < inputs.size(); ++i)      // the results are named by file stem: two alike would overwrite
+    for(std::size_t j = 0; j < i; ++j)
+      if(std::filesystem::path(inputs[i]).stem() == std::filesystem::path(inputs[j]).stem()) {
+        std::cerr << "seamless_snap: --outdir: '" << inputs[j] << "' and '" << inputs[i] << "' share the name "
+                  << std::filesystem::path(inputs[i]).stem() << ", and each input's results are OUTDIR/NAME.obj and "
+                  << "OUTDIR/NAME.json; nothing was written\n";
+        return 2;
+      }
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if(!std::filesystem::is_directory(outdir)) return fail("cannot create the output directory '" + outdir + "'");
