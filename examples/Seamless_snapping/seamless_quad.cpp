@@ -224,10 +224,10 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
-  auto read = [&]() {
+  auto read = [&](bool w, std::string& m) {
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
-    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, params::weld_vertices(weld).number_of_threads(threads))
+    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, params::weld_vertices(w).number_of_threads(threads))
            == SS::SUCCESS;
   };
   // the JSON report (--report): the snap report and the quad mesh's, its patches' and its layout's (JSON texts)
@@ -251,18 +251,15 @@ int main(int argc, char** argv)
     }
     return fail(why);
   };
-  if(!read()) return refuse_input("cannot read input: " + message);
-  const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
+  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, read);
+  if(!wr.ok) return refuse_input("cannot read input: " + message);
+  const SS::IO::Cut_mesh_test& cut = wr.cut;
   if(cut.is_cut_mesh() && no_weld)
     return refuse_input("the input looks like a cut mesh (" + std::to_string(cut.twinned) + " of " +
                 std::to_string(cut.border_edges) + " border edges lie on another one at bit-identical 3D points) and "
                 "--no-weld keeps its seams as borders, which no quad mesh of the map has; nothing was written");
-  if(cut.is_cut_mesh()) {
-    weld = true;
-    if(!read()) return refuse_input("cannot read input: " + message);
-    if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
-                         << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
-  }
+  if(!quiet && !wr.note(weld).empty()) std::cout << wr.note(weld) << "\n";
+  weld = wr.welded;
   if(!quiet) std::cout << message << "\n";
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)

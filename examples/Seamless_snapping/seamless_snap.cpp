@@ -360,15 +360,14 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   UV_map uv;
   std::string message;
   Clock::time_point t = Clock::now();
-  if(!read_mesh(in, weld, o.threads, mesh, uv, message)) return fail("cannot read input: " + message);
-  const SS::IO::Cut_mesh_test cut = weld ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
+  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
+    return read_mesh(in, w, o.threads, mesh, uv, m);
+  });
+  if(!wr.ok) return fail("cannot read input: " + message);
+  const SS::IO::Cut_mesh_test& cut = wr.cut;
   const bool cut_mesh = cut.is_cut_mesh();
-  if(cut_mesh && !no_weld) {
-    weld = true;
-    if(!read_mesh(in, weld, o.threads, mesh, uv, message)) return fail("cannot read input: " + message);
-    if(!quiet) std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges "
-                         << "lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
-  }
+  if(!quiet && !wr.note(weld).empty()) std::cout << wr.note(weld) << "\n";
+  weld = wr.welded;
   if(!quiet) std::cout << message << "\n";
   R.read_ms = ms_since(t);
 

@@ -112,20 +112,13 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
-  auto read = [&]() {
+  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
-    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, message, SS::parameters::weld_vertices(weld)) == SS::SUCCESS;
-  };
-  bool ok = read();
-  const SS::IO::Cut_mesh_test cut = weld || !ok ? SS::IO::Cut_mesh_test() : SS::IO::cut_mesh_test(mesh);
-  if(ok && cut.is_cut_mesh() && !no_weld) {
-    weld = true;
-    ok = read();
-    std::cout << "welded automatically: " << cut.twinned << " of " << cut.border_edges << " border edges lie on "
-              << "another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)\n";
-  }
-  if(!ok) return fail(message);
+    return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, SS::parameters::weld_vertices(w)) == SS::SUCCESS;
+  });
+  if(!wr.note(weld).empty()) std::cout << wr.note(weld) << "\n";
+  if(!wr.ok) return fail(message);
   const auto t0 = std::chrono::steady_clock::now();
   SS::Isoline_tracer<Mesh, UV_map> tracer(mesh, uv);
   if(tracer.status() != SS::SUCCESS)

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -74,6 +75,60 @@ Cut_mesh_test cut_mesh_test(const TriangleMesh& tm)
     i = j;
   }
   return t;
+}
+
+/// \ingroup PkgSeamlessSnappingRef
+/// How `read_welding_cut_meshes()` read an input.
+struct Welding_read
+{
+  bool ok = false;                ///< the input was read (by the read that counts)
+  bool welded = false;            ///< it was read with its vertices welded
+  Cut_mesh_test cut;              ///< of the input read as it is (empty when it was not read so, or that read failed)
+  std::string unwelded_error;     ///< why the input read as it is was refused, where the welded read was used instead
+
+  /// a line for the user when the input was welded without being asked to (`weld == false`), else empty
+  std::string note(bool asked) const
+  {
+    if(!welded || asked) return std::string();
+    if(unwelded_error.empty())
+      return "welded automatically: " + std::to_string(cut.twinned) + " of " + std::to_string(cut.border_edges) +
+             " border edges lie on another one at bit-identical 3D points (a cut mesh; --no-weld keeps them apart)";
+    return "welded automatically: read as it is, the input is refused (" + unwelded_error + "); with the vertices at "
+           "bit-identical 3D points welded it is a valid mesh (a cut mesh with a hole at a seam; --no-weld keeps them apart)";
+  }
+};
+
+/// \ingroup PkgSeamlessSnappingRef
+/// Reads an input as the command-line programs do with cut meshes (`cut_mesh_test()`): `read(weld, message)` reads it
+/// into the caller's mesh `tm`, its vertices welded or not (`weld_vertices()` of `read_OBJ_with_corner_uvs()`), and
+/// returns whether it succeeded (`message`: the reader's). With `weld` it reads welded; with `no_weld` as it is (and
+/// tests it, `Welding_read::cut`); else as it is first, then welded when that is a cut mesh, or when that read was refused but the welded one is not (a cut
+/// mesh with a hole at a seam has vertices there at which two fans of faces meet, non-manifold, until the two sides of
+/// its seams are welded). Where both reads fail, `message` is the one of the input as it is.
+/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point property map
+/// \tparam Read a callable `bool(bool weld, std::string& message)`
+template <class TriangleMesh, class Read>
+Welding_read read_welding_cut_meshes(const TriangleMesh& tm, bool weld, bool no_weld, std::string& message, const Read& read)
+{
+  Welding_read r;
+  r.welded = weld && !no_weld;
+  r.ok = read(r.welded, message);
+  if(r.welded) return r;
+  if(r.ok) {
+    r.cut = cut_mesh_test(tm);
+    if(no_weld || !r.cut.is_cut_mesh()) return r;
+    r.welded = true;
+    r.ok = read(true, message);
+    return r;
+  }
+  if(no_weld) return r;
+  std::string welded_message;
+  if(read(true, welded_message)) {
+    r.ok = r.welded = true;
+    r.unwelded_error = message;
+    message = welded_message;
+  }
+  return r;
 }
 
 } // namespace IO
