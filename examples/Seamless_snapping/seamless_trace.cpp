@@ -136,6 +136,11 @@ int main(int argc, char** argv)
               g.layout.measure_ms);
   for(int e = 0; e < SS::number_of_trace_ends; ++e)
     if(g.ends[e]) std::printf("  %-32s %zu\n", SS::trace_end_name(SS::Trace_end(e)), g.ends[e]);
+  std::size_t inexact = 0;                      // cut crossings where the transition missed the point on the edge
+  for(const auto& s : g.separatrices) inexact += s.inexact_transfers;
+  if(inexact > 0)
+    std::printf("  inexact cut crossings            %zu (the transition R^k u + t of a cut edge did not give the point on "
+                "the other side: the seams are not exact; seamless_snap makes them so)\n", inexact);
   for(std::size_t i = 0; i < g.separatrices.size(); ++i)
     if(SS::is_failure(g.separatrices[i].end))
       std::printf("  failure: separatrix %zu: %s: %s\n", i, SS::trace_end_name(g.separatrices[i].end),
@@ -146,6 +151,7 @@ int main(int argc, char** argv)
                 L.patches.size(), L.quad_patches, L.is_valid() ? " (a valid quad layout)" : "", L.nodes, L.arcs,
                 L.euler_characteristic, L.surface_euler_characteristic,
                 L.unplaced_segments ? (", " + std::to_string(L.unplaced_segments) + " segments not placed").c_str() : "");
+  if(L.status == SS::SUCCESS && !L.is_valid()) std::printf("  %s\n", L.message.c_str());
   else std::printf("patches: none (%s)\n", L.message.c_str());
 
   if(!json.empty()) {
@@ -154,6 +160,7 @@ int main(int argc, char** argv)
        << ",\n  \"faces\": " << num_faces(mesh) << ",\n  \"cones\": " << g.cones
        << ",\n  \"border_corners\": " << g.border_corners << ",\n  \"seeded\": " << (g.seeded ? "true" : "false")
        << ",\n  \"separatrices\": " << g.separatrices.size() << ",\n  \"failed\": " << g.failed
+       << ",\n  \"inexact_transfers\": " << inexact
        << ",\n  \"patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.patches.size()) : "null")
        << ",\n  \"quad_patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.quad_patches) : "null")
        << ",\n  \"valid_layout\": " << (L.is_valid() ? "true" : "false")

@@ -249,6 +249,11 @@ static void check_layout(const Mesh& m, UV_map uv, const SS::Motorcycle_graph<Me
   const int chi = int(m.number_of_vertices()) - int(m.number_of_edges()) + int(m.number_of_faces());
   assert(L.euler_characteristic == chi && L.surface_euler_characteristic == chi);
   assert(L.quad_patches + border_patches >= L.patches.size() && (border_patches > 0 || L.is_valid()));
+  // the message says why a layout is not valid (its patches along a border off the isolines), and nothing when it is
+  assert(L.is_valid() ? L.message.empty()
+                      : L.message == "not a quad layout: " + std::to_string(L.patches.size() - L.quad_patches) + " of " +
+                                     std::to_string(L.patches.size()) + " patches are not quads (disks with 4 right-angle "
+                                     "corners and a rectangle as UV image)");
   // the refined mesh
   const SS::Layout_mesh& r = L.mesh;
   assert(CGAL::is_valid_polygon_mesh(r));

@@ -544,6 +544,17 @@ inline void build_patch_layout(const Tracing_map& map, const std::vector<Trace_r
   L.measure_ms = ms_since(t);
   L.status = SUCCESS;
   if(S.unplaced > 0) L.message = std::to_string(S.unplaced) + " trace segments not inserted; first: " + S.first_unplaced;
+  else if(!L.is_valid()) {                                          // say why it is not a quad layout
+    L.message = "not a quad layout:";
+    if(L.quad_patches < L.patches.size())
+      L.message += " " + std::to_string(L.patches.size() - L.quad_patches) + " of " + std::to_string(L.patches.size()) +
+                   " patches are not quads (disks with 4 right-angle corners and a rectangle as UV image)";
+    if(L.euler_characteristic != L.surface_euler_characteristic)
+      L.message += std::string(L.quad_patches < L.patches.size() ? ";" : "") + " the Euler characteristic of the layout is " +
+                   std::to_string(L.euler_characteristic) + ", of the surface " + std::to_string(L.surface_euler_characteristic) +
+                   " (a patch that is not a disk)";
+    if(L.patches.empty()) L.message += " no patch";
+  }
 }
 
 } // namespace tracing
