@@ -56,6 +56,10 @@ def _integer_array(a, what, meaning):
     """`a` as a C-contiguous int64 array, or InputError unless every entry is an integer: an integer array, or
     floats with integral values (as SciPy may store integer matrices)."""
     arr = np.asarray(a)
+    if arr.dtype.kind == "u" and arr.size and arr.max() > np.iinfo(np.int64).max:   # would wrap around to negative
+        where = tuple(int(i) for i in np.argwhere(arr > np.iinfo(np.int64).max)[0])
+        raise InputError("%s must hold integers below 2^63 (%s); %s[%s] = %d is not one" %
+                         (what, meaning, what, ", ".join(map(str, where)), int(arr[where])))
     if arr.dtype.kind in "iu":
         return np.ascontiguousarray(arr, dtype=np.int64)
     if arr.dtype.kind == "f":

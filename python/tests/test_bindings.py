@@ -315,6 +315,15 @@ def test_project_scipy_sparse():
     assert exact_rows(C, b, x2)
 
 
+def test_project_unsigned_beyond_int64():
+    # uint64 entries of 2^63 or more used to wrap around to negative int64 values: a "SUCCESS" whose rows did not hold
+    for C, b in (([[2 ** 64 - 1, 1, 0]], [5]), ([[1, 1, 0]], [2 ** 64 - 1])):
+        with pytest.raises(ss.InputError, match="below 2\\^63"):
+            ss.project(np.array(C, dtype=np.uint64), np.array(b, dtype=np.uint64), [0.0, 0.0, 0.0])
+    x, r = ss.project(np.array([[3, 1, 0]], dtype=np.uint64), np.array([5], dtype=np.uint64), [1.0, 1.0, 1.0])
+    assert r["status"] == "SUCCESS" and 3 * Fraction(x[0]) + Fraction(x[1]) == 5
+
+
 def test_project_infeasible_and_bad_input():
     sp = pytest.importorskip("scipy.sparse")
     C = sp.csr_matrix(np.array([[3]]))
