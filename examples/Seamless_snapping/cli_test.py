@@ -259,6 +259,11 @@ shutil.copyfile(src, twin)
 rc, text = run("--outdir", os.path.join(work, "twins"), src, twin)
 check(rc == 2 and "share the name" in text and not os.path.exists(os.path.join(work, "twins")),
       "--outdir with two inputs of one name: exit 2, nothing written: %d %s" % (rc, text))
+# two options naming one output file: the second would replace the first, and the run would still say both were
+# written: refused (exit 2), nothing written
+clash = os.path.join(work, "clash.obj")
+rc, text = run(src, clash, "--report", os.path.join(work, ".", "clash.obj"))
+check(rc == 2 and "name one file" in text and not os.path.exists(clash), "OUT = --report: exit 2: %d %s" % (rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 

@@ -220,6 +220,12 @@ for opt in ["--weld", "--no-weld", "--grid-scale", "--quantize", "--no-untangle"
             "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
+# OUT and --layout naming one file: the layout would replace the quad mesh, and the run would still say both were
+# written: refused (exit 2), nothing written
+clash = os.path.join(work, "clash.obj")
+rc, text = run(parallelogram, clash, "--grid-scale", "4", "--layout", os.path.join(work, ".", "clash.obj"))
+check(rc == 2 and "name one file" in text and not os.path.exists(clash), "OUT = --layout: exit 2: %d %s" % (rc, text))
+
 # an input that cannot be read: exit 1, no mesh, and the report says why (the help: "also on failure")
 unreadable, unreadable_report = os.path.join(work, "missing.obj"), os.path.join(work, "missing.json")
 rc, text = run(unreadable, os.path.join(work, "missing_out.obj"), "--report", unreadable_report)

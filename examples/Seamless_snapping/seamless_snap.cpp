@@ -666,6 +666,9 @@ int main(int argc, char** argv)
     return 2;
   }
   if(weld && no_weld) { std::cerr << "seamless_snap: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
+  const std::string same = SS::IO::internal::same_output_file({{"OUT", out}, {"--report", report_file}, {"--vval", vval_file},
+                                                               {"--summary", summary_file}});
+  if(!same.empty()) { std::cerr << "seamless_snap: " << same << "\n" << usage_text; return 2; }
   if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
   if(o.merge_cone_pairs && !integer_grid) {
     std::cerr << "seamless_snap: --merge-cone-pairs needs --integer-grid (cones are merged on integer points)\n" << usage_text;

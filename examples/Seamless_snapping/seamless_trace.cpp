@@ -107,6 +107,9 @@ int main(int argc, char** argv)
     std::cerr << "seamless_trace: " << (in.empty() ? "no input file" : "--weld and --no-weld exclude each other") << "\n" << usage;
     return 2;
   }
+  const std::string same = SS::IO::internal::same_output_file({{"--json", json}, {"--svg", svg}, {"--layout-obj", layout_obj},
+                                                               {"--layout-ply", layout_ply}});
+  if(!same.empty()) { std::cerr << "seamless_trace: " << same << "\n" << usage; return 2; }
 
   // a cut mesh (vertices duplicated along the seams, as libigl/Directional write them) is welded unless --no-weld
   Mesh mesh;
@@ -177,17 +180,18 @@ int main(int argc, char** argv)
        << L.subdivision_ms << ",\n  \"mesh_ms\": " << L.mesh_ms << ",\n  \"measure_ms\": " << L.measure_ms << "\n}\n";
     if(SS::IO::internal::write_text_atomically(json, os.str(), message) != SS::SUCCESS) return fail(message);
   }
+  // the SVG first: it shows what keeps a layout from being built (its flipped triangles in red)
+  if(!svg.empty()) {
+    std::ostringstream os;
+    SS::IO::write_motorcycle_graph_svg(os, mesh, uv, g);
+    if(SS::IO::internal::write_text_atomically(svg, os.str(), message) != SS::SUCCESS) return fail(message);
+  }
   for(const std::string* file : {&layout_obj, &layout_ply}) {
     if(file->empty()) continue;
     const SS::Status s = file == &layout_obj ? SS::IO::write_patch_layout_OBJ(*file, L, message)
                                              : SS::IO::write_patch_layout_PLY(*file, L, message);
     if(s != SS::SUCCESS) return fail(message);
     std::printf("%s\n", message.c_str());
-  }
-  if(!svg.empty()) {
-    std::ostringstream os;
-    SS::IO::write_motorcycle_graph_svg(os, mesh, uv, g);
-    if(SS::IO::internal::write_text_atomically(svg, os.str(), message) != SS::SUCCESS) return fail(message);
   }
   return EXIT_SUCCESS;
 }

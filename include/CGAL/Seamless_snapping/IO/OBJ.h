@@ -873,6 +873,25 @@ Status write_atomically(const std::string& filename, const Write& write, std::st
   return write_regular_file_atomically(path, filename, write, message);
 }
 
+// The command-line programs' output files, each with the option that names it: where two of them name one file (the
+// later write would replace the earlier, and the program would still report both written), a message naming the two,
+// else empty. Paths are compared as std::filesystem::weakly_canonical() gives them (./a and a are one file).
+inline std::string same_output_file(const std::vector<std::pair<std::string, std::string> >& outputs)
+{
+  std::vector<std::string> canonical;
+  for(const std::pair<std::string, std::string>& o : outputs) {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(o.second, ec);
+    canonical.push_back(ec ? o.second : p.string());
+  }
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    for(std::size_t j = 0; j < i; ++j)
+      if(!outputs[i].second.empty() && !outputs[j].second.empty() && canonical[i] == canonical[j])
+        return outputs[j].first + " and " + outputs[i].first + " name one file, '" + outputs[i].second +
+               "': the second would replace the first";
+  return std::string();
+}
+
 // Writes `text` to `filename` atomically (write_atomically()).
 inline Status write_text_atomically(const std::string& filename, const std::string& text, std::string& message)
 {
