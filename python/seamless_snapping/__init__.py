@@ -21,6 +21,7 @@ that do not hold integers, an unknown direction, a face or corner out of range) 
 whose message names what was wrong and the valid values.
 """
 import json
+import math
 import operator
 import os
 from fractions import Fraction
@@ -218,7 +219,7 @@ def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, rais
         raise InputError("xbar has %d entries, C has %d columns" % (xbar.size, shape[1]))
     x, text = _core.project(int(shape[0]), int(shape[1]), np.asarray(rows, dtype=np.int64).tolist(),
                             np.asarray(cols, dtype=np.int64).tolist(), vals.tolist(), b.tolist(), xbar.tolist(),
-                            int(delta_margin_bits), bool(force_multiprecision))
+                            _bounded_index(delta_margin_bits, "delta_margin_bits", -2 ** 31, 2 ** 31 - 1), bool(force_multiprecision))
     report = json.loads(text)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
@@ -253,6 +254,22 @@ def _index(x, what):
         except TypeError:
             pass
     raise InputError("%s must be an integer, got %r" % (what, x))
+
+
+def _bounded_index(x, what, low, high):
+    """x as an int in [low, high], or InputError (instead of the bindings' TypeError for a value their C++ type lacks)."""
+    n = _index(x, what)
+    if not low <= n <= high:
+        raise InputError("%s must be in [%d, %d], got %d" % (what, low, high, n))
+    return n
+
+
+def _tolerance(x, what):
+    """x as a finite float >= 0, or InputError (a NaN would compare false everywhere)."""
+    t = float(x)
+    if not (math.isfinite(t) and t >= 0):
+        raise InputError("%s must be a finite number >= 0, got %r" % (what, x))
+    return t
 
 
 def _thread_count(threads):
@@ -299,7 +316,8 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
     separatrices' "uv_exact" (their "uv" stays): on the 302K-face map of ../shared/large, 535K Fractions that take
     about 1.6 s to make.
     """
-    d = _core.motorcycle_graph(*_mesh_arrays(V, F, UV, FUV), bool(weld), int(max_faces), float(rotation_tolerance),
+    d = _core.motorcycle_graph(*_mesh_arrays(V, F, UV, FUV), bool(weld), _bounded_index(max_faces, "max_faces", 0, 2 ** 62),
+                               _tolerance(rotation_tolerance, "rotation_tolerance"),
                                bool(exact_uv))
     if exact_uv:
         for t in d.get("separatrices", []):
@@ -323,8 +341,9 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_fac
             rounded to doubles; "uv_exact": the same points exactly, as fractions.Fraction;
       "points": (#segments + 1, 3) the polyline in 3D (exact barycentric coordinates, rounded to doubles).
     """
-    d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), _index(face, "face"), _index(corner, "corner"),
-                            _direction(direction), bool(weld), int(max_faces), float(rotation_tolerance))
+    d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), _bounded_index(face, "face", -2 ** 62, 2 ** 62),
+                            _bounded_index(corner, "corner", -2 ** 31, 2 ** 31 - 1), _direction(direction), bool(weld),
+                            _bounded_index(max_faces, "max_faces", 0, 2 ** 62), _tolerance(rotation_tolerance, "rotation_tolerance"))
     if d["status"] == "SUCCESS":
         _exact_polyline(d)
     return d

@@ -399,6 +399,23 @@ def test_trace_isoline_cut_grid():
     assert ss.trace_isoline(V, F, bad, FUV2, 0, 0, "+u")["status"] == "INVALID_INPUT"
 
 
+def test_keyword_values_out_of_range():
+    # values the C++ types cannot take, or NaN tolerances: InputError naming the keyword (a TypeError of the bindings
+    # before, and rotation_tolerance=nan made an exact map "not quarter-turn seamless")
+    V, F, UV, FUV = cut_grid()
+    for kwargs, name in (({"max_faces": -1}, "max_faces"), ({"max_faces": 2 ** 64}, "max_faces"),
+                         ({"rotation_tolerance": float("nan")}, "rotation_tolerance"),
+                         ({"rotation_tolerance": -1.0}, "rotation_tolerance")):
+        with pytest.raises(ss.InputError, match=name):
+            ss.motorcycle_graph(V, F, UV, FUV, **kwargs)
+        with pytest.raises(ss.InputError, match=name):
+            ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u", **kwargs)
+    with pytest.raises(ss.InputError, match="face"):
+        ss.trace_isoline(V, F, UV, FUV, 2 ** 70, 0, "+u")
+    with pytest.raises(ss.InputError, match="delta_margin_bits"):
+        ss.project(np.array([[1, 1]]), [1], [0.5, 0.5], delta_margin_bits=2 ** 40)
+
+
 def test_motorcycle_graph_cut_grid():
     V, F, UV, FUV = cut_grid()
     g0 = ss.motorcycle_graph(V, F, UV, FUV)
