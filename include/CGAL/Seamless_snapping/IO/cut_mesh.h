@@ -102,9 +102,10 @@ struct Welding_read
 /// Reads an input as the command-line programs do with cut meshes (`cut_mesh_test()`): `read(weld, message)` reads it
 /// into the caller's mesh `tm`, its vertices welded or not (`weld_vertices()` of `read_OBJ_with_corner_uvs()`), and
 /// returns whether it succeeded (`message`: the reader's). With `weld` it reads welded; with `no_weld` as it is (and
-/// tests it, `Welding_read::cut`); else as it is first, then welded when that is a cut mesh, or when that read was refused but the welded one is not (a cut
-/// mesh with a hole at a seam has vertices there at which two fans of faces meet, non-manifold, until the two sides of
-/// its seams are welded). Where both reads fail, `message` is the one of the input as it is.
+/// tests it, `Welding_read::cut`); else as it is first, then welded when that is a cut mesh, or when that read was
+/// refused but the welded one is not (a cut mesh with a hole at a seam has vertices there at which two fans of faces
+/// meet, non-manifold, until the two sides of its seams are welded). Where both reads fail, `message` is the one of the
+/// input as it is.
 /// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex point property map
 /// \tparam Read a callable `bool(bool weld, std::string& message)`
 template <class TriangleMesh, class Read>
