@@ -401,6 +401,10 @@ void test_inhomogeneous_and_invalid()
   expect_status("3x = 1", small_system(1, Rows{ { { 0, 3 } } }, { 1 }), { 0.3333 }, SS::INFEASIBLE);
   expect_status("9x0 + 15x1 = 1", small_system(2, Rows{ { { 0, 9 }, { 1, 15 } } }, { 1 }), { 0.05, 0.0366 }, SS::INFEASIBLE);
   expect_status("2x0 + 2x1 = 1", small_system(2, Rows{ { { 0, 2 }, { 1, 2 } } }, { 1 }), { 0.3, 0.2 }, SS::SUCCESS);
+  // dyadic solutions exist (e.g. the doubles (-2^-62, 1, 1)), but not on a grid that the values' range allows: out of
+  // range, not "no solution" (it was INFEASIBLE)
+  expect_status("2^62 (x0 + x1 + x2) = 2^63 - 1", small_system(3, Rows{ { { 0, 1L << 62 }, { 1, 1L << 62 }, { 2, 1L << 62 } } },
+                                                               { std::numeric_limits<long>::max() }), { 1., 1., 1. }, SS::RANGE_EXCEEDED);
   expect_status("2x0 + 2x1 = 1 (far)", small_system(2, Rows{ { { 0, 2 }, { 1, 2 } } }, { 1 }), { 0.1, 0.1 }, SS::SUCCESS);
   expect_status("9x0 + 14x1 = 1", small_system(2, Rows{ { { 0, 9 }, { 1, 14 } } }, { 1 }), { 0.1, 1. / 140 }, SS::SUCCESS);
   expect_status("9x0 + 14x1 = 1 (near -3, 2)", small_system(2, Rows{ { { 0, 9 }, { 1, 14 } } }, { 1 }), { -3. + 1e-9, 2. }, SS::SUCCESS);

@@ -22,8 +22,8 @@ enum Status
 {
   SUCCESS = 0,              ///< all constraints hold exactly; outputs were written
   INVALID_INPUT,            ///< bad data: NaN/Inf, size mismatch, empty or non-manifold mesh, bad index, ...
-  INFEASIBLE,               ///< no solution: a zero row with nonzero right-hand side, or no solution on the F_delta grid (addendum, Eq. 2')
-  RANGE_EXCEEDED,           ///< a value (implied variable, lcm-rounded free variable, right-hand side) leaves the fixed-point range (-delta, delta) (Sec. 4.3, Sec. 7)
+  INFEASIBLE,               ///< no solution: a zero row with nonzero right-hand side, or no dyadic solution (the congruences of addendum Eq. 2' hold on no grid of powers of two: no solution in doubles exists, e.g. 3 x = 1)
+  RANGE_EXCEEDED,           ///< a value (implied variable, lcm-rounded free variable, right-hand side) leaves the fixed-point range (-delta, delta) (Sec. 4.3, Sec. 7), or dyadic solutions exist only on a grid finer than that range allows
   SAFE_DOT_FAILED,          ///< the safe dot product (Alg. 5) could not proceed without leaving (-delta, delta)
   NOT_QUARTER_TURN_SEAMLESS,///< a transition of the input is not a rotation by a multiple of 90 degrees (e.g. 120 degree orbifolds)
   EXACTNESS_CHECK_FAILED,   ///< the final exact check found a violated constraint (an internal error; reported, never hidden)

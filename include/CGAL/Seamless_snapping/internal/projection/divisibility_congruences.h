@@ -19,7 +19,10 @@
 // solution z0 with a column-style Hermite normal form (unimodular column operations by extended
 // gcd, [CD94]-style), separately for each group of rows coupled by shared free variables; groups
 // with B_j ≡ 0 for all rows take z0 = 0. If the triangular system has no integer solution, none
-// exists (the transformation is unimodular) and the system is INFEASIBLE on this grid.
+// exists on this grid (the transformation is unimodular); the same congruences modulo the odd parts of
+// the p_j then tell whether a finer grid of powers of two has one (2 is a unit there): if so, the
+// system has dyadic solutions that the fixed-point range cannot hold (RANGE_EXCEEDED), else none in
+// doubles at all (INFEASIBLE).
 // Every z = z0 + (multiples of the divisors l_i of Alg. 4) is then a solution too, since l_i is a
 // multiple of every pivot p_j of a row containing i; evaluation rounds x̄ to that shifted lattice.
 
@@ -167,26 +170,40 @@ Status solve_divisibility_congruences(const Irref<Int>& ir, const std::vector<CG
                 + std::to_string(N) + " unknowns; the dense Diophantine solver is limited to 4000";
       return RANGE_EXCEEDED;
     }
-    std::vector<std::vector<Z> > A(R, std::vector<Z>(N, Z(0)));
-    std::vector<Z> rhs(R);
-    for(std::size_t r = 0; r < R; ++r) {
-      const std::size_t j = G[r];
-      Z p = to_gmpz(ir.pivot[j]);
-      for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
-        const std::size_t c = std::size_t(std::lower_bound(cols.begin(), cols.end(), ir.col[q]) - cols.begin());
-        A[r][c] = Integer_ops<Z>::mod_floor(to_gmpz(ir.val[q]), p);  // coefficients matter modulo p only
-      }
-      A[r][cols.size() + r] = p;
-      rhs[r] = Integer_ops<Z>::mod_floor(B[j], p);
-    }
+    // the congruences modulo p_j, or (odd_only) modulo the odd parts of p_j: those decide whether any dyadic solution
+    // exists (2 is a unit of Z[1/2], so the conditions modulo powers of two vanish on a fine enough grid)
     std::vector<Z> y;
     std::vector<std::size_t> modulus_col(R);
     for(std::size_t r = 0; r < R; ++r) modulus_col[r] = cols.size() + r;   // the w_j column: p_j e_j
-    if(!solve_integer_system(A, rhs, y, modulus_col)) {
-      message = "no solution on the grid F_delta: the divisibility conditions of rows ";
-      for(std::size_t r = 0; r < R && r < 5; ++r) message += (r ? ", " : "") + std::to_string(G[r]);
-      message += R > 5 ? ", ..." : "";
-      message += " of the IRREF (addendum, Eq. 2') have no integer solution (e.g. 3 x = 1: 1/3 is not dyadic)";
+    auto solvable = [&](bool odd_only) {
+      std::vector<std::vector<Z> > A(R, std::vector<Z>(N, Z(0)));
+      std::vector<Z> rhs(R);
+      for(std::size_t r = 0; r < R; ++r) {
+        const std::size_t j = G[r];
+        Z p = to_gmpz(ir.pivot[j]);
+        if(odd_only) while(p != 0 && mpz_even_p(p.mpz())) p /= Z(2);   // (the same lattice for p and -p)
+        for(std::size_t q = ir.ptr[j]; q < ir.ptr[j + 1]; ++q) {
+          const std::size_t c = std::size_t(std::lower_bound(cols.begin(), cols.end(), ir.col[q]) - cols.begin());
+          A[r][c] = Integer_ops<Z>::mod_floor(to_gmpz(ir.val[q]), p);  // coefficients matter modulo p only
+        }
+        A[r][cols.size() + r] = p;
+        rhs[r] = Integer_ops<Z>::mod_floor(B[j], p);
+      }
+      return solve_integer_system(A, rhs, y, modulus_col);
+    };
+    if(!solvable(false)) {
+      std::string rows_named;
+      for(std::size_t r = 0; r < R && r < 5; ++r) rows_named += (r ? ", " : "") + std::to_string(G[r]);
+      rows_named += R > 5 ? ", ..." : "";
+      if(solvable(true)) {   // a dyadic solution exists, on a finer grid than the values' range allows
+        message = "no solution on the grid F_delta: the divisibility conditions of rows " + rows_named + " of the IRREF "
+                  "(addendum, Eq. 2') hold only on a finer grid: the system has solutions in dyadic rationals, but they "
+                  "need more bits between their largest and smallest digits than the fixed-point range has (Sec. 7)";
+        return RANGE_EXCEEDED;
+      }
+      message = "no solution on the grid F_delta: the divisibility conditions of rows " + rows_named + " of the IRREF "
+                "(addendum, Eq. 2') have no integer solution on any grid of powers of two: no solution in doubles exists "
+                "(e.g. 3 x = 1: 1/3 is not dyadic)";
       return INFEASIBLE;
     }
     for(std::size_t c = 0; c < cols.size(); ++c) {
