@@ -149,12 +149,13 @@ int main(int argc, char** argv)
       std::printf("  failure: separatrix %zu: %s: %s\n", i, SS::trace_end_name(g.separatrices[i].end),
                   g.separatrices[i].message.c_str());
   const SS::Patch_layout& L = g.layout;
-  if(L.status == SS::SUCCESS)
+  if(L.status == SS::SUCCESS) {
     std::printf("patches %zu, quad patches %zu%s; nodes %zu, arcs %zu, Euler characteristic %d (surface %d)%s\n",
                 L.patches.size(), L.quad_patches, L.is_valid() ? " (a valid quad layout)" : "", L.nodes, L.arcs,
                 L.euler_characteristic, L.surface_euler_characteristic,
                 L.unplaced_segments ? (", " + std::to_string(L.unplaced_segments) + " segments not placed").c_str() : "");
-  if(L.status == SS::SUCCESS && !L.is_valid()) std::printf("  %s\n", L.message.c_str());
+    if(!L.is_valid()) std::printf("  %s\n", L.message.c_str());   // why not
+  }
   else std::printf("patches: none (%s)\n", L.message.c_str());
 
   if(!json.empty()) {
