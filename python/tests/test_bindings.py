@@ -412,6 +412,9 @@ def test_keyword_values_out_of_range():
             ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u", **kwargs)
     with pytest.raises(ss.InputError, match="face"):
         ss.trace_isoline(V, F, UV, FUV, 2 ** 70, 0, "+u")
+    # a ray that leaves the surface at a border vertex: the message names the direction (it printed a count of 0)
+    t = ss.trace_isoline(V, F, UV, FUV, 0, 0, 2)
+    assert t["end"] == "invalid_start" and t["message"].endswith("the start direction 2 (a border vertex: the ray leaves the surface)")
     with pytest.raises(ss.InputError, match="delta_margin_bits"):
         ss.project(np.array([[1, 1]]), [1], [0.5, 0.5], delta_margin_bits=2 ** 40)
 

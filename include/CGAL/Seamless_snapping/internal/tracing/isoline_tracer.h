@@ -185,9 +185,12 @@ public:
       if(!fan.closed) wedges_containing(fan, 0, found);
       if(found.size() == 1) depart(r, fan.wedges[found[0]].corner, direction_mod4(fan.wedges[found[0]].m));
     }
-    if(found.size() != 1)
-      return finish(r, Trace_end::INVALID_START, "no unique sector of vertex " + std::to_string(r.start_vertex) +
-                                                 " contains the start direction (" + std::to_string(found.size()) + ")");
+    if(found.size() != 1)   // (the count was printed as if it were the direction)
+      return finish(r, Trace_end::INVALID_START,
+                    found.empty() ? "no sector of vertex " + std::to_string(r.start_vertex) + " contains the start direction " +
+                                        std::to_string(m) + (fan.closed ? std::string() : " (a border vertex: the ray leaves the surface)")
+                                  : std::to_string(found.size()) + " sectors of vertex " + std::to_string(r.start_vertex) +
+                                        " contain the start direction " + std::to_string(m));
     r.start_corner = r.face_h; r.start_m = r.m;
     register_vertex(r, r.start_vertex, r.start_corner, r.start_m);
   }
