@@ -106,13 +106,11 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
       r.message = "vertex " + std::to_string(v) + " has a UV angle sum of 1 quarter turn (a cone of valence 1): the quad "
                   "there would have its two sides at the cone on one edge, a corner twice; no quad mesh has it "
                   "(extract_quad_mesh() refuses it too)";
-      for(int w = 0; w < cm.n_vertices; ++w)
-        if(q.valence[std::size_t(w)] >= 7 && !cm.vertex_on_border[std::size_t(w)]) {
-          r.message += "; vertex " + std::to_string(w) + " has " + std::to_string(q.valence[std::size_t(w)]) +
-                       " quarter turns: most likely a cone of 5 wound back to 1, its missing turns there (a cone pair "
-                       "put onto one integer point: merge_cone_pairs(true))";
-          break;
-        }
+      const int w = internal::vertex_winding_twice(cm, q.valence);
+      if(w >= 0)
+        r.message += "; vertex " + std::to_string(w) + " has " + std::to_string(q.valence[std::size_t(w)]) +
+                     " quarter turns: most likely a cone of 5 wound back to 1, its missing turns there (a cone pair "
+                     "put onto one integer point: merge_cone_pairs(true))";
       return r;
     }
   r.valence = q.valence;

@@ -143,17 +143,6 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
          "that point (libQEx merges such pairs too), or choose integer translations that keep the cones apart";
 }
 
-// Whether an interior vertex of the map winds around its point by 7 quarter turns or more. A cone of 5 quarter turns
-// wound back to 1 leaves its 4 missing quarter turns at such a vertex (the angle sums are fixed by the Euler
-// characteristic), not always nearby: the dragon's are 4 to more than 40 face rings away. Without one, a cone of 1 is
-// most likely the map's own.
-inline bool winds_twice_somewhere(const Corner_mesh& cm, const std::vector<int>& valence)
-{
-  for(int w = 0; w < cm.n_vertices; ++w)
-    if(!cm.vertex_on_border[w] && valence[std::size_t(w)] >= 7) return true;
-  return false;
-}
-
 // Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
 // a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice). Where
 // such a vertex lies next to a collapsed cone pair, the message says so; a cone of valence 1 in a map where no vertex
@@ -171,7 +160,7 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     else {
       message += "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
                  "a corner twice; no quad mesh has it";
-      if(winds_twice_somewhere(cm, valence)) message += collapsed_cone_pairs_clause(cm, edge_k, v);
+      if(vertex_winding_twice(cm, valence) >= 0) message += collapsed_cone_pairs_clause(cm, edge_k, v);
       else message += "; its triangles are not folded and no vertex of the map winds around its point by 7 quarter "
                       "turns or more (where a cone wound back from 5 quarter turns to 1 would leave the 4 it lacks), "
                       "so this is most likely a cone of the map itself, a singularity of index 3/4 of its field: the "

@@ -129,6 +129,17 @@ inline Quad_valence_result quad_valences(const Corner_mesh& cm)
   return r;
 }
 
+// An interior vertex that winds around its point by 7 quarter turns or more, or -1. A cone of 5 quarter turns wound
+// back to 1 (valence 1, which no quad mesh has) leaves its 4 missing quarter turns at such a vertex (the angle sums are
+// fixed by the Euler characteristic), not always nearby: the dragon's are 4 to more than 40 face rings away. Without
+// one, a cone of 1 is most likely the map's own.
+inline int vertex_winding_twice(const Corner_mesh& cm, const std::vector<int>& valence)
+{
+  for(int w = 0; w < cm.n_vertices; ++w)
+    if(!cm.vertex_on_border[w] && valence[std::size_t(w)] >= 7) return w;
+  return -1;
+}
+
 } // namespace internal
 } // namespace Seamless_snapping
 } // namespace CGAL
