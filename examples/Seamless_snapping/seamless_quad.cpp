@@ -322,8 +322,8 @@ int main(int argc, char** argv)
       why.resize(why.size() - advice.size());
       proven = snap.uv_mirrored
                    ? "; the map is mirrored (" + std::to_string(snap.flips_before_untangling) + " of " +
-                         std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle it: "
-                         "mirror its UVs (e.g. v -> -v, a texture convention some tools flip) or reverse its faces"
+                         std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle it: " +
+                         SS::mirrored_map_advice()
                    : "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) +
                          " negative and " + std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
     }

@@ -51,6 +51,13 @@ inline const char* fold_reason_name(Fold_reason r)
   }
 }
 
+/// What to do with a map whose `Snap_report::uv_mirrored` is true (the untangling does not run on it): the words the
+/// package's messages use
+inline const char* mirrored_map_advice()
+{
+  return "mirror its UVs (e.g. v -> -v, a texture convention some tools flip) or reverse the orientation of its faces";
+}
+
 /*!
  * \ingroup PkgSeamlessSnappingRef
  * One UV triangle that is negatively oriented or degenerate in the result, and why.

@@ -771,8 +771,7 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   }
   if(report.uv_mirrored && opt.untangle)
     S.untangle_note = "; the untangling did not run: the map is mirrored (" + std::to_string(snapped.negative) + " of " +
-                      std::to_string(S.cm.n_faces) + " UV triangles are negative): mirror its UVs (e.g. v -> -v, a "
-                      "texture convention some tools flip) or reverse the orientation of its faces";
+                      std::to_string(S.cm.n_faces) + " UV triangles are negative): " + mirrored_map_advice();
   if(!opt.untangle || report.uv_mirrored) return SUCCESS;
   const Face_corners fc(S.cm);
   Target_valences target = target_valences(S, fc, field_rotation_sums(S.cm, S.st, S.rot));
@@ -946,7 +945,7 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
         else if(report.uv_mirrored)
           e.message = "not proven forced by the constraints; the map is mirrored (more of its UV triangles are negative than "
-                      "positive), so the untangling did not run: mirror its UVs or reverse the orientation of its faces";
+                      "positive), so the untangling did not run: " + std::string(mirrored_map_advice());
         else if(report.untangle_rings > 0)   // the regions grew up to untangle_rings around the faces still non-positive
           e.message = "not proven forced by the constraints; the untangling did not make it positive (its regions grew to " +
                       std::to_string(report.untangle_rings) + " face rings around the fold-overs" +
