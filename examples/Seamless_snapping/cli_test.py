@@ -257,8 +257,13 @@ os.makedirs(os.path.join(work, "other"), exist_ok=True)
 twin = os.path.join(work, "other", os.path.basename(src))
 shutil.copyfile(src, twin)
 rc, text = run("--outdir", os.path.join(work, "twins"), src, twin)
-check(rc == 2 and "share the name" in text and not os.path.exists(os.path.join(work, "twins")),
+check(rc == 2 and "name one file" in text and not os.path.exists(os.path.join(work, "twins")),
       "--outdir with two inputs of one name: exit 2, nothing written: %d %s" % (rc, text))
+# --summary naming the report of an input: refused too
+stem = os.path.splitext(os.path.basename(src))[0]
+rc, text = run("--outdir", os.path.join(work, "twins"), src, "--summary", os.path.join(work, "twins", stem + ".json"))
+check(rc == 2 and "name one file" in text and not os.path.exists(os.path.join(work, "twins")),
+      "--outdir with --summary on a report: exit 2, nothing written: %d %s" % (rc, text))
 # two options naming one output file: the second would replace the first, and the run would still say both were
 # written: refused (exit 2), nothing written
 clash = os.path.join(work, "clash.obj")

@@ -685,23 +685,27 @@ int main(int argc, char** argv)
 
   if(outdir.empty()) return snap_file(o, in, out, has_report ? report_file : std::string(), nullptr);
   // --outdir: each input to OUTDIR/NAME.obj with its report OUTDIR/NAME.json, then the summary table
-  for(std::size_t i = 0; i < inputs.size(); ++i)      // the results are named by file stem: two alike would overwrite
-    for(std::size_t j = 0; j < i; ++j)
-      if(std::filesystem::path(inputs[i]).stem() == std::filesystem::path(inputs[j]).stem()) {
-        std::cerr << "seamless_snap: --outdir: '" << inputs[j] << "' and '" << inputs[i] << "' share the name "
-                  << std::filesystem::path(inputs[i]).stem() << ", and each input's results are OUTDIR/NAME.obj and "
-                  << "OUTDIR/NAME.json; nothing was written\n";
-        return 2;
-      }
+  auto result_stem = [&](const std::string& input) {   // OUTDIR/NAME, NAME the input's file stem
+    return (std::filesystem::path(outdir) / std::filesystem::path(input).stem()).string();
+  };
+  std::vector<std::pair<std::string, std::string> > written{{"--summary", summary_file}};
+  for(const std::string& input : inputs) {            // two inputs of one name, or --summary on a report, would overwrite
+    written.emplace_back("the result of '" + input + "'", result_stem(input) + ".obj");
+    written.emplace_back("the report of '" + input + "'", result_stem(input) + ".json");
+  }
+  const std::string clash = SS::IO::internal::same_output_file(written);
+  if(!clash.empty()) {
+    std::cerr << "seamless_snap: --outdir: " << clash << " (each input's results are OUTDIR/NAME.obj and OUTDIR/NAME.json, "
+              << "NAME its file name without extension); nothing was written\n";
+    return 2;
+  }
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if(!std::filesystem::is_directory(outdir)) return fail("cannot create the output directory '" + outdir + "'");
   std::vector<Summary_row> rows(inputs.size());
   int status = EXIT_SUCCESS;
   for(std::size_t i = 0; i < inputs.size(); ++i) {
-    const std::filesystem::path name = std::filesystem::path(inputs[i]).stem();
-    const std::string obj = (std::filesystem::path(outdir) / name).string() + ".obj";
-    const std::string json = (std::filesystem::path(outdir) / name).string() + ".json";
+    const std::string obj = result_stem(inputs[i]) + ".obj", json = result_stem(inputs[i]) + ".json";
     if(!quiet) std::cout << "== " << inputs[i] << " -> " << obj << "\n";
     if(snap_file(o, inputs[i], obj, json, &rows[i]) != EXIT_SUCCESS) status = EXIT_FAILURE;
   }
