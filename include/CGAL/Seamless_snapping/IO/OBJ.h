@@ -809,6 +809,17 @@ inline std::string temporary_name_next_to(const std::string& filename)
   return filename + ".tmp-" + buf;
 }
 
+// write(os) into the open stream `os`, then flushed and closed; false if any of it failed
+template <class Write>
+bool write_and_close(std::ofstream& os, const Write& write)
+{
+  bool ok = static_cast<bool>(os) && write(os);
+  os.flush();
+  ok = ok && static_cast<bool>(os);
+  os.close();
+  return ok && !os.fail();
+}
+
 // write_atomically() to the regular file (or new file) `path`; `filename`: the name the caller gave, for messages
 template <class Write>
 Status write_regular_file_atomically(const std::string& path, const std::string& filename, const Write& write,
@@ -822,11 +833,7 @@ Status write_regular_file_atomically(const std::string& path, const std::string&
                 std::strerror(errno) + ")";
       return INVALID_INPUT;
     }
-    bool ok = write(os);
-    os.flush();
-    ok = ok && static_cast<bool>(os);
-    os.close();
-    if(!ok || os.fail()) {
+    if(!write_and_close(os, write)) {
       std::remove(tmp.c_str());
       message = "cannot write '" + filename + "': writing the temporary file '" + tmp + "' failed (disk full?)";
       return INVALID_INPUT;
@@ -859,11 +866,9 @@ Status write_atomically(const std::string& filename, const Write& write, std::st
   }
   if(!ec && fs::exists(target) && !fs::is_regular_file(target)) {
     std::ofstream os(filename, std::ios::binary);
-    bool ok = static_cast<bool>(os) && write(os);
-    os.flush();
-    ok = ok && static_cast<bool>(os);
-    if(!ok) message = "cannot write '" + filename + "' (" + std::strerror(errno) + ")";
-    return ok ? SUCCESS : INVALID_INPUT;
+    if(write_and_close(os, write)) return SUCCESS;
+    message = "cannot write '" + filename + "' (" + std::strerror(errno) + ")";
+    return INVALID_INPUT;
   }
   std::string path = filename;
   if(!ec && fs::is_symlink(fs::symlink_status(filename, ec)) && !ec) {
