@@ -57,8 +57,11 @@ def _integer_array(a, what, meaning):
     """`a` as a C-contiguous int64 array, or InputError unless every entry is an integer: an integer array, or
     floats with integral values (as SciPy may store integer matrices)."""
     arr = np.asarray(a)
-    if arr.dtype.kind == "u" and arr.size and arr.max() > np.iinfo(np.int64).max:   # would wrap around to negative
-        where = tuple(int(i) for i in np.argwhere(arr > np.iinfo(np.int64).max)[0])
+    # unsigned entries of 2^63 or more would wrap around to negative; compared in uint64 (against the Python int 2^63 - 1,
+    # NumPy 1.24 compares in float64, where 2^63 equals it)
+    too_large = arr > np.uint64(np.iinfo(np.int64).max) if arr.dtype.kind == "u" else None
+    if too_large is not None and too_large.any():
+        where = tuple(int(i) for i in np.argwhere(too_large)[0])
         raise InputError("%s must hold integers below 2^63 (%s); %s[%s] = %d is not one" %
                          (what, meaning, what, ", ".join(map(str, where)), int(arr[where])))
     if arr.dtype.kind in "iu":

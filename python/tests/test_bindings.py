@@ -317,7 +317,9 @@ def test_project_scipy_sparse():
 
 def test_project_unsigned_beyond_int64():
     # uint64 entries of 2^63 or more used to wrap around to negative int64 values: a "SUCCESS" whose rows did not hold
-    for C, b in (([[2 ** 64 - 1, 1, 0]], [5]), ([[1, 1, 0]], [2 ** 64 - 1])):
+    # (2^63 itself too: in float64, where NumPy 1.24 compared it with 2^63 - 1, the two are equal)
+    for C, b in (([[2 ** 64 - 1, 1, 0]], [5]), ([[1, 1, 0]], [2 ** 64 - 1]), ([[2 ** 63, 1, 0]], [5]),
+                 ([[1, 1, 0]], [2 ** 63 + 1])):
         with pytest.raises(ss.InputError, match="below 2\\^63"):
             ss.project(np.array(C, dtype=np.uint64), np.array(b, dtype=np.uint64), [0.0, 0.0, 0.0])
     x, r = ss.project(np.array([[3, 1, 0]], dtype=np.uint64), np.array([5], dtype=np.uint64), [1.0, 1.0, 1.0])
@@ -954,6 +956,7 @@ def test_quantize():
     UV3, _, r3 = ss.snap(V, F, UV, FUV, integer_grid_map=True, quantize=True)
     UV4, _, _ = ss.snap(V, F, UV, FUV, integer_grid_map=True)
     assert not r3["quantized"] and UV3.tobytes() == UV4.tobytes()
+
 
 
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
