@@ -958,6 +958,21 @@ def test_quantize():
     assert not r3["quantized"] and UV3.tobytes() == UV4.tobytes()
 
 
+def test_quantize_aligned_side_between_isolines():
+    # a flat 6 x 6 grid of squares, UV = 1.7 (i, j): its right side lies at u = 8.5, half-way between two isolines, and
+    # its corner vertex 1e-9 beyond. The border edges of a side share their ends' variables, so they lie on one isoline;
+    # rounded edge by edge (each at its first end), the side went to u = 8 and u = 9 at once: INFEASIBLE
+    n = 6
+    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
+    UV = np.array([[1.7 * i, 1.7 * j] for j in range(n) for i in range(n)])
+    F = np.array([f for j in range(n - 1) for i in range(n - 1) for a in [j * n + i]
+                  for f in ([a, a + 1, a + n + 1], [a, a + n + 1, a + n])])
+    UV[n - 1, 0] += 1e-9
+    UV2, FUV2, r = ss.snap(V, F, UV, F, integer_grid_map=True, quantize=True)
+    assert r["quantized"] and ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
+    right = UV2[FUV2[np.isin(F, np.arange(n - 1, n * n, n))]][:, 0]     # the corners of the right side's vertices
+    assert len(set(right.tolist())) == 1 and right[0] in (8.0, 9.0)
+
 
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])

@@ -406,11 +406,31 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
                                     const std::vector<char>& moved_cones = std::vector<char>(), double grid_scale = 0)
 {
   result = Integer_grid_rows_result();
+  // Align edges that share a corner's variable (the edges of one straight side in one chart) lie on one isoline: one
+  // value per such group, the integer nearest the mean of its edges' ends. Rounded edge by edge, the first end of each,
+  // the edges of a quantized side at u = 8.5 (+- 1e-9) went to the isolines 8 and 9, rows that contradict each other
+  // (INFEASIBLE)
+  Union_find group(2 * st.n_sectors);
+  auto ends = [&](int e, int& a, int& b) {
+    a = 2 * st.sector_of[cm.prev[al.halfedge[e]]] + al.component[e];
+    b = 2 * st.sector_of[al.halfedge[e]] + al.component[e];
+  };
+  for(int e : al.edges) { int a, b; ends(e, a, b); group.unite(a, b); }
+  std::vector<double> group_sum(2 * std::size_t(st.n_sectors), 0.), group_ends(2 * std::size_t(st.n_sectors), 0.);
+  for(int e : al.edges) {
+    int a, b;
+    ends(e, a, b);
+    group_sum[std::size_t(group.find(a))] += ubar[std::size_t(a)] + ubar[std::size_t(b)];
+    group_ends[std::size_t(group.find(a))] += 2;
+  }
   std::vector<long> isoline(cm.n_edges, 0);
   for(int e : al.edges) {
     const int g = al.halfedge[e], c = al.component[e];
-    const double a = ubar[2 * st.sector_of[cm.prev[g]] + c], b = ubar[2 * st.sector_of[g] + c];
-    const double r = std::nearbyint(a);
+    int ia, ib;
+    ends(e, ia, ib);
+    const double a = ubar[std::size_t(ia)], b = ubar[std::size_t(ib)];
+    const std::size_t root = std::size_t(group.find(ia));
+    const double r = std::nearbyint(group_sum[root] / group_ends[root]);
     auto where = [&] {                // formatted only for a message
       return "align edge " + vertex_pair_name(cm, g) + " lies on the isoline " + (c == 0 ? "u" : "v") + " = " +
              (a == b ? format_double(a, 17) : format_double(a, 17) + " .. " + format_double(b, 17));
