@@ -1024,6 +1024,25 @@ static void test_pinned_corners_analytic()
       assert(r.message.find("pinned corner (vertex") != std::string::npos && r.message.find("round the pinned UV") != std::string::npos);
       std::cout << "pinned corners: " << mode << ": off-grid pin refused: " << r.message << "\n";
     }
+    // pinned UVs whose bits span more than 62 (the free vertex (1, 1) moved to (1, 2^-70) and pinned): the corner
+    // mesh's unit 2^-70 cannot hold 1; refused with what to do (it said "internal error")
+    {
+      Mesh m; UV_map uv;
+      make_perturbed_torus(m, uv, 1);
+      const Point_2 fine(1, std::ldexp(1., -70));
+      for(halfedge_descriptor h : m.halfedges())
+        if(!m.is_border(h) && get(uv, h) == Point_2(1, 1)) put(uv, h, fine);
+      Pin_map pin = pins_of(m);
+      assert(pin_uv(m, uv, pin, fine) == 6);
+      const std::vector<std::uint64_t> bits0 = uv_bits(m, uv);
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv,
+          SS::parameters::pinned_corner_map(pin).integer_grid_map(igm));
+      if(r.status != SS::RANGE_EXCEEDED) std::cerr << SS::status_name(r.status) << " " << r.message << std::endl;
+      assert(r.status == SS::RANGE_EXCEEDED && uv_bits(m, uv) == bits0);
+      std::cout << "pinned corners: " << mode << ": pins spanning 62 bits refused: " << r.message << std::endl;
+      assert(r.message.find(igm ? "pin UVs with fewer bits" : "round the pinned UVs to multiples of 2^") != std::string::npos &&
+             r.message.find("internal error") == std::string::npos);
+    }
     // contradicting pins: both sides of vertices (1, 0) and (2, 0) of one seam branch, whose translations differ
     // by 2^-40: INFEASIBLE naming the pinned corners, untouched
     {

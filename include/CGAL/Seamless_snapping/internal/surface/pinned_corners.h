@@ -133,9 +133,21 @@ inline Status add_pinned_rows(const Corner_mesh& cm, const Pinned_sectors& pins,
   for(std::size_t i = 0; i < pins.sector.size(); ++i)
     for(int c = 0; c < 2; ++c) {
       const double p = pins.value[2 * i + c];
-      if(!(p == std::nearbyint(p) && std::fabs(p) < 0x1p62)) {
+      if(p != std::nearbyint(p)) {
         message = pinned_corner_name(cm, pins.corner[i]) + ": its UV " + uv_name(cm, pins.corner[i]) +
                   " is not an integer of the corner mesh's unit 2^" + std::to_string(cm.uv_exponent) + ": internal error";
+        return RANGE_EXCEEDED;
+      }
+      if(!(std::fabs(p) < 0x1p62)) {   // the unit is the lowest set bit of the pins: they span 62 bits or more
+        double largest = 0;            // the map's largest |UV| sets the quantum of F_delta (Sec. 4.3)
+        for(int h = 0; h < cm.n_halfedges; ++h)
+          if(!cm.is_border_halfedge(h)) largest = (std::max)({largest, std::fabs(cm.u[h]), std::fabs(cm.v[h])});
+        const int k = Fixed_point_grid::exponent_of(cm.to_uv(largest)) + 1 - 52;
+        message = pinned_corner_name(cm, pins.corner[i]) + ": its UV " + uv_name(cm, pins.corner[i]) + " is 2^62 or " +
+                  "more units of 2^" + std::to_string(cm.uv_exponent) + ", the lowest set bit of the pinned UVs: they " +
+                  "span more bits than any snapped map keeps (every snapped value is a multiple of the quantum of the " +
+                  "fixed-point grid F_delta, Sec. 4.3, 52 bits below the map's largest |UV|); round the pinned UVs to " +
+                  "multiples of 2^" + std::to_string(k) + " or coarser; nothing was written";
         return RANGE_EXCEEDED;
       }
     }
