@@ -598,6 +598,15 @@ void test_determinism()
     const Outcome o = run(s, xbar, options);
     assert(o.status() == SS::RANGE_EXCEEDED && o.report.message.find("outside the range of double grids") != std::string::npos);
   }
+  // so is a margin at the limits of int: K = e(max |x̄|) + margin formed without wrapping around (INT_MIN used to give
+  // K near 2^31, "too large")
+  for(int margin : {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()}) {
+    SS::Projection_options options;
+    options.delta_margin_bits = margin;
+    const Outcome o = run(s, xbar, options);
+    const char* expected = margin < 0 ? "too small" : "too large";
+    assert(o.status() == SS::RANGE_EXCEEDED && o.report.message.find(expected) != std::string::npos);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -71,7 +71,8 @@ struct Fixed_point_grid
   // why a grid with `in_range == false` cannot be used
   std::string range_message() const
   {
-    return "the fixed-point range delta = 2^" + std::to_string(K) + " is outside the range of double grids 2^" +
+    const char* beyond = K == min_exponent - 1 ? " or less" : K == max_exponent + 1 ? " or more" : "";   // from_max_abs()
+    return "the fixed-point range delta = 2^" + std::to_string(K) + beyond + " is outside the range of double grids 2^" +
            std::to_string(min_exponent) + " ... 2^" + std::to_string(max_exponent) +
            " (Sec. 4.3): the values are too " + (K < min_exponent ? "small" : "large") +
            " for exact fixed-point arithmetic in doubles";
@@ -87,9 +88,12 @@ struct Fixed_point_grid
   }
 
   // K = e(max_abs) + margin_bits (Sec. 4.3: K = max_i ceil(log2 |x_i|) + 1, "the additional 1 adds a margin").
+  // The sum is formed in 64 bits: a margin near the limits of int (delta_margin_bits = -2^31) must not wrap around
+  // (undefined, and it made "too small" read "too large"); beyond the range of double grids K is kept one past it
   static Fixed_point_grid from_max_abs(double max_abs, int margin_bits)
   {
-    return Fixed_point_grid(exponent_of(max_abs) + margin_bits);
+    const long long k = static_cast<long long>(exponent_of(max_abs)) + margin_bits;
+    return Fixed_point_grid(k < min_exponent ? min_exponent - 1 : k > max_exponent ? max_exponent + 1 : static_cast<int>(k));
   }
 
   // F_delta(v) = (v + s_v delta) - s_v delta with s_v the sign of v ([EBCK13], Sec. 4.3).
