@@ -131,6 +131,16 @@ static void test_grid()
   // a start point outside the face is refused
   Trace bad = tracer.trace_from_point(f0, CGAL::Gmpq(-1), CGAL::Gmpq(-1), SS::Trace_direction::PLUS_U);
   assert(bad.end == SS::Trace_end::INVALID_START);
+  // a direction, a start or a target that is none of the mesh's: INVALID_START saying which (a target vertex threw
+  // std::out_of_range, a halfedge beyond the mesh's read past the end of an array)
+  const halfedge_descriptor start = corner_of(vs[(n + 1) + 1]);
+  bad = tracer.trace_from_vertex(start, SS::Trace_direction(7));
+  assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("direction 7") != std::string::npos);
+  bad = tracer.trace_from_vertex(halfedge_descriptor(m.number_of_halfedges() + 10), SS::Trace_direction::PLUS_U);
+  assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("no halfedge") != std::string::npos);
+  o.target_vertex = Mesh::Vertex_index(m.number_of_vertices() + 10);
+  bad = tracer.trace_from_vertex(start, SS::Trace_direction::PLUS_U, o);
+  assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("target vertex") != std::string::npos);
   // the motorcycle graph of a square: 4 convex corners, no rays, nothing seeded
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);

@@ -34,7 +34,7 @@ enum class Trace_end
   FELL_OFF_BORDER,               ///< a trace running along the border left the mesh (Fig. 3c)
   FOLDED_FACE,                   ///< entered a face whose UV triangle is flipped or degenerate (not locally injective); a zero-area triangle with three distinct (collinear) corners is crossed instead, as the limit of a thin positive one, unless the trace runs along its line
   DEGENERATE_VERTEX,             ///< passed a vertex with a zero-length UV edge (no direction)
-  INVALID_START                  ///< the start location is not on the surface, or no sector contains the start direction
+  INVALID_START                  ///< the start location is not on the surface, or no sector contains the start direction; or the start, the direction or the target of `Trace_options` is none of the mesh the tracer read (`message` says which)
 };
 
 /// `true` for the ends that report an inconsistency of the map (not a regular end).

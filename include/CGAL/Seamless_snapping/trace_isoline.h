@@ -160,10 +160,13 @@ public:
                           const Trace_options<TriangleMesh>& options = Trace_options<TriangleMesh>()) const
   {
     internal::tracing::Trace_run r;
-    if(status_ != SUCCESS || is_border(corner, tm_)) return failed_start("invalid tracer or border halfedge");
+    const int start = index_or_none(corner);
+    const std::string problem = start_problem(start, d, options);
+    if(!problem.empty()) return failed_start(problem);
+    if(is_border(corner, tm_)) return failed_start("border halfedge");
     internal::tracing::Trace_target target;
     internal::tracing::Isoline_stepper stepper = make_stepper(options, target);
-    stepper.start_at_vertex(r, index(corner), int(d));
+    stepper.start_at_vertex(r, start, int(d));
     stepper.run_to_end(r);
     return convert(r);
   }
@@ -173,10 +176,12 @@ public:
                          const Trace_options<TriangleMesh>& options = Trace_options<TriangleMesh>()) const
   {
     internal::tracing::Trace_run r;
-    if(status_ != SUCCESS) return failed_start("invalid tracer");
+    const int start = status_ == SUCCESS ? index_or_none(halfedge(f, tm_)) : -1;
+    const std::string problem = start_problem(start, d, options);
+    if(!problem.empty()) return failed_start(problem);
     internal::tracing::Trace_target target;
     internal::tracing::Isoline_stepper stepper = make_stepper(options, target);
-    stepper.start_at_point(r, index(halfedge(f, tm_)), internal::tracing::Exact_uv{u, v}, int(d));
+    stepper.start_at_point(r, start, internal::tracing::Exact_uv{u, v}, int(d));
     stepper.run_to_end(r);
     return convert(r);
   }
@@ -233,6 +238,26 @@ private:
     return hpos_[get(CGAL::get_initialized_halfedge_index_map(tm_), h)];
   }
 
+  // the index of h, or -1 where h is no halfedge of the mesh as the tracer read it (e.g. one of a removed face)
+  int index_or_none(halfedge_descriptor h) const
+  {
+    const std::size_t i = std::size_t(get(CGAL::get_initialized_halfedge_index_map(tm_), h));
+    return i < hpos_.size() ? hpos_[i] : -1;
+  }
+
+  // why a trace cannot start from the halfedge of index `start` (index_or_none()) along d with options o; empty if it can
+  std::string start_problem(int start, Trace_direction d, const Trace_options<TriangleMesh>& o) const
+  {
+    if(status_ != SUCCESS) return "invalid tracer";
+    if(start < 0) return "the start is no halfedge of the mesh the tracer read (an element removed since?)";
+    if(int(d) < 0 || int(d) > 3) return "direction " + std::to_string(int(d)) + " is none of PLUS_U, PLUS_V, MINUS_U, MINUS_V";
+    if(o.has_target_vertex && vpos_.find(o.target_vertex) == vpos_.end())
+      return "the target vertex is no vertex of the mesh the tracer read";
+    if(o.has_target_point && index_or_none(halfedge(o.target_face, tm_)) < 0)
+      return "the target face is no face of the mesh the tracer read";
+    return std::string();
+  }
+
   Trace failed_start(const std::string& why) const
   {
     Trace t; t.end = Trace_end::INVALID_START; t.message = why; return t;
@@ -243,9 +268,9 @@ private:
   {
     internal::tracing::Isoline_stepper stepper(map_);
     if(o.max_faces > 0) stepper.max_steps = o.max_faces;
-    if(o.has_target_vertex) target.vertex = vpos_.at(o.target_vertex);
+    if(o.has_target_vertex) target.vertex = vpos_.find(o.target_vertex)->second;   // start_problem() found it
     if(o.has_target_point) {
-      target.face = map_.cm.face[index(halfedge(o.target_face, tm_))];
+      target.face = map_.cm.face[index_or_none(halfedge(o.target_face, tm_))];
       target.uv = internal::tracing::Exact_uv{o.target_u, o.target_v};
     }
     if(o.has_target_vertex || o.has_target_point) stepper.target = &target;
