@@ -269,6 +269,26 @@ check(rc == 2 and "name one file" in text and not os.path.exists(os.path.join(wo
 clash = os.path.join(work, "clash.obj")
 rc, text = run(src, clash, "--report", os.path.join(work, ".", "clash.obj"))
 check(rc == 2 and "name one file" in text and not os.path.exists(clash), "OUT = --report: exit 2: %d %s" % (rc, text))
+# --quantize with align edges: the cube in the usual cross layout (its edges as features, --sharp-angle 60) scaled by 1.3,
+# near no integer-grid map: the quantization puts the cones of one aligned edge on different isolines; INFEASIBLE with
+# that said (it named a row of the node system and nothing else), nothing written
+cube = os.path.join(work, "cube13.obj")
+with open(cube, "w") as f:
+    for x, y, z in [(-1, -1, 1), (1, -1, 1), (-1, 1, 1), (1, 1, 1), (-1, 1, -1), (1, 1, -1), (-1, -1, -1), (1, -1, -1)]:
+        f.write("v %g %g %g\n" % (x / 2, y / 2, z / 2))
+    for u, v in [(3, 0), (5, 0), (3, 2), (5, 2), (3, 4), (5, 4), (3, 6), (5, 6), (3, 8), (5, 8), (7, 0), (7, 2), (1, 0),
+                 (1, 2)]:
+        f.write("vt %r %r\n" % (1.3 * u / 8, 1.3 * v / 8))
+    for face in ["1/1 2/2 3/3", "3/3 2/2 4/4", "3/3 4/4 5/5", "5/5 4/4 6/6", "5/5 6/6 7/7", "7/7 6/6 8/8", "7/7 8/8 1/9",
+                 "1/9 8/8 2/10", "2/2 8/11 4/4", "4/4 8/11 6/12", "7/13 1/1 5/14", "5/14 1/1 3/3"]:
+        f.write("f %s\n" % face)
+cube_out, cube_report = os.path.join(work, "cube13_snapped.obj"), os.path.join(work, "cube13.json")
+rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--sharp-angle", "60", "--report", cube_report)
+report = json.load(open(cube_report))
+check(rc == 1 and report["status"] == "INFEASIBLE" and report["quantized"] and "align edges" in report["message"] and
+      not os.path.exists(cube_out), "--quantize with align edges: INFEASIBLE, said why: %d %s" % (rc, text))
+rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--report", cube_report)
+check(rc == 0 and json.load(open(cube_report))["status"] == "SUCCESS", "the cube quantized without features: %d %s" % (rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 

@@ -351,7 +351,11 @@ namespace Seamless_snapping {
  *                           scale from 1 to 32, the map moved by at most 1.08 grid cells; Directional's rot-seamless
  *                           dragon, 870 cones: at grid scale 4 with `merge_cone_pairs` and from 16 on, at most 4.8 cells). Without effect on a map that is
  *                           near an integer-grid map (its translations are rounded); `Snap_report::quantized` says whether
- *                           it ran.}
+ *                           it ran. Not yet combined with alignment: the cones' points are chosen without regard to the
+ *                           align edges (feature edges, aligned border) and each aligned chain takes the integer isoline
+ *                           nearest it, so two cones on one aligned chain can land on different isolines: `INFEASIBLE`
+ *                           (libigl's cube scaled by 1.3 with its edges as features: at grid scales 1 and 2), and the
+ *                           message says so.}
  *     \cgalParamType{Boolean}
  *     \cgalParamDefault{`false`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::quantize()`; implemented in

@@ -616,6 +616,11 @@ Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Sna
 {
   auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
     if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
+    if(st == INFEASIBLE && report.quantized && !S.al.edges.empty())   // the libigl cube scaled by 1.3, its edges as features
+      message += "; the map was quantized (quantize(true)) and has " + std::to_string(S.al.edges.size()) + " align edges: "
+                 "the quantization chooses the cones' integer points without regard to them, and each aligned chain "
+                 "takes the isoline nearest it, so two cones on one aligned chain can end up on different isolines; snap "
+                 "without the alignment (no feature edges, align_boundary(false)) or at another grid scale";
     if(S.cm.uv_exponent != 0)
       message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
     return st;
