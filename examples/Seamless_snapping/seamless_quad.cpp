@@ -321,8 +321,9 @@ int main(int argc, char** argv)
        why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
       why.resize(why.size() - advice.size());
       proven = snap.uv_mirrored
-                   ? "; the map is mirrored (" + std::to_string(snap.flips_before_untangling) + " of " +
-                         std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle it: " +
+                   ? "; the map or a component of it is mirrored (" + std::to_string(snap.flips_before_untangling) +
+                         " of " + std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle "
+                         "it there: " +
                          SS::mirrored_map_advice()
                    : "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) +
                          " negative and " + std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";

@@ -127,8 +127,8 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     report["closed_uncut_faces"] counts the faces of closed parts without cut edges (e.g. UVs made by a projection
     on a closed mesh), whose maps into the plane always fold: not untangled; an untangled map that moves a UV by
     more than `max_untangle_change` grid cells is not used (report["untangle_refused"]); a mirrored map (more
-    negative than positive UV triangles, e.g. its v axis flipped) is not untangled (report["uv_mirrored"]: mirror the
-    UVs). `merge_cone_pairs=True` (with `integer_grid_map`) makes each
+    negative than positive UV triangles in a connected component, e.g. its v axis flipped) is not untangled there
+    (report["uv_mirrored"]: mirror the UVs of that component). `merge_cone_pairs=True` (with `integer_grid_map`) makes each
     pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point regular points of
     the field (report["merged_cone_pairs"]), as libQEx merges them, and then joins other pairs on one point (one
     cone takes both indices, never below valence 2, the other becomes regular: report["joined_cone_pairs"]);

@@ -253,6 +253,18 @@ def test_untangle_integer_grid_map():
     _, _, mirrored = ss.snap(V, F, UVm, FUV, integer_grid_map=True)
     assert mirrored["uv_mirrored"] and not mirrored["untangled"] and "mirrored" in mirrored["message"]
     assert mirrored["flips_after_repair"] > len(F) // 2
+    # the folded map and, beside it, a mirrored copy as a second component (the map as a whole is not mirrored): the
+    # first is untangled, the mirrored one left alone (it was turned over, its UVs moved by many grid cells)
+    V2 = np.vstack([V, V + [100.0, 0.0, 0.0]])
+    F2 = np.vstack([F, F + len(V)])
+    UV2 = np.vstack([UV, UVm])
+    FUV2 = np.vstack([FUV, FUV + len(UV)])
+    UV3, FUV3, both = ss.snap(V2, F2, UV2, FUV2, integer_grid_map=True)
+    signs = orientations(F2, UV3, FUV3)
+    assert both["uv_mirrored"] and both["untangled"] and "left the mirrored parts" in both["message"]
+    assert min(signs[:len(F)]) > 0 and sum(1 for x in signs[len(F):] if x < 0) > len(F) // 2
+    assert both["untangle_max_change"] < 2.0
+    assert all("mirrored part" in x["message"] for x in both["folds"]) and len(both["folds"]) >= len(F) // 2
 
 
 def test_closed_surface_without_cuts():

@@ -51,8 +51,8 @@ inline const char* fold_reason_name(Fold_reason r)
   }
 }
 
-/// What to do with a map whose `Snap_report::uv_mirrored` is true (the untangling does not run on it): the words the
-/// package's messages use
+/// What to do with a map whose `Snap_report::uv_mirrored` is true (the untangling leaves its mirrored components
+/// alone): the words the package's messages use
 inline const char* mirrored_map_advice()
 {
   return "mirror its UVs (e.g. v -> -v, a texture convention some tools flip) or reverse the orientation of its faces";
@@ -184,7 +184,7 @@ struct Snap_report
   std::vector<Fold_explanation> folds; ///< every non-positive UV triangle at the end, with its reason
   std::vector<Winding_defect> winding_defects; ///< every interior vertex at the end whose UV angle sum is not its valence (not locally injective there)
   bool untangle_refused = false;       ///< the untangled map moved more than `max_untangle_change`: it was not used
-  bool uv_mirrored = false;            ///< more UV triangles of the exact snap of the input are negative than positive (those of closed parts without cut edges not counted, see `closed_uncut_faces`): the map is mirrored (e.g. its v axis flipped, a texture convention some tools use), and the untangling did not run (it would turn the whole map over)
+  bool uv_mirrored = false;            ///< a connected component of the mesh has more negative than positive UV triangles in the exact snap of the input (those of closed parts without cut edges not counted, see `closed_uncut_faces`): that part of the map is mirrored (e.g. its v axis flipped, a texture convention some tools use), and the untangling leaves it alone (it would turn the whole component over); the other components are untangled
   bool untangle_budget_spent = false;  ///< the untangling stopped at its work budget (400 face evaluations per face of the mesh) with fold-overs left
   int untangle_rings = 0;              ///< the largest number of face rings around the fold-overs that an attempt moved (1, 2, 4, 8 or 16)
   std::size_t untangle_region_vertices = 0;  ///< vertices of that region

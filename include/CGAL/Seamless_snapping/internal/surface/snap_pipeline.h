@@ -58,6 +58,7 @@
 #include <CGAL/Seamless_snapping/internal/threads.h>
 #include <CGAL/Seamless_snapping/internal/timing.h>
 #include <CGAL/Seamless_snapping/internal/untangling/closed_uncut_parts.h>
+#include <CGAL/Seamless_snapping/internal/untangling/mirrored_components.h>
 #include <CGAL/Seamless_snapping/internal/untangling/forced_folds.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 #include <CGAL/Seamless_snapping/internal/untangling/winding_defects.h>
@@ -283,6 +284,7 @@ struct Snap_state
   bool already_exact = false;            // ubar satisfies every row: x = ubar, nothing is written
   std::string flip_note;
   std::string untangle_note;
+  std::vector<char> mirrored;            // 4b. per face: in a mirrored component, left alone by the untangling (empty: none)
   std::size_t collapsed_in_input = 0;    // cut edges of zero UV length on one side in ubar
   std::size_t written = 0;
 };
@@ -761,24 +763,31 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   const Uv_change snap = measure_uv_change(S, S.x, S.st.ubar);
   report.snap_max_change = snap.max;
   report.snap_rms_change = snap.rms;
-  // a mirrored map (most triangles negative): untangling would turn the whole map over, far from the input (the
-  // horse of ../shared/data with u -> -u: all 6000 triangles "untangled", moving UVs by up to 13,000 grid cells). The
-  // closed parts without cut edges (closed_uncut_parts.h: a projection's UVs on a closed mesh, about half negative) fold
-  // in every map and are left alone anyway: their triangles do not count
-  report.uv_mirrored = snapped.negative > std::size_t(S.cm.n_faces) - snapped.negative - snapped.degenerate;
-  if(report.uv_mirrored) {
-    const std::vector<signed char>& o = orientations_of_x(S);
-    const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, Face_corners(S.cm), non_positive_faces(o));
-    std::size_t negative = 0, positive = 0;
-    for(std::size_t f = 0; f < closed.size(); ++f)
-      if(closed[f] == 0) { negative += o[f] == CGAL::NEGATIVE ? 1 : 0; positive += o[f] == CGAL::POSITIVE ? 1 : 0; }
-    report.uv_mirrored = negative > positive;
-  }
-  if(report.uv_mirrored && opt.untangle)
-    S.untangle_note = "; the untangling did not run: the map is mirrored (" + std::to_string(snapped.negative) + " of " +
-                      std::to_string(S.cm.n_faces) + " UV triangles are negative): " + mirrored_map_advice();
-  if(!opt.untangle || report.uv_mirrored) return SUCCESS;
+  S.mirrored.clear();
+  report.uv_mirrored = false;
+  if(!opt.untangle && snapped.negative == 0) return SUCCESS;
+  // the mirrored components (mirrored_components.h) and the closed parts without cut edges (closed_uncut_parts.h), which
+  // fold in every map: left alone, faces and windings
   const Face_corners fc(S.cm);
+  const std::vector<int> non_positive = non_positive_faces(orientations_of_x(S));
+  const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, non_positive);
+  std::size_t mirrored_faces = 0, mirrored_negative = 0;
+  if(snapped.negative > 0) {
+    S.mirrored = mirrored_component_faces(S.cm, orientations_of_x(S), closed);
+    for(std::size_t f = 0; f < S.mirrored.size(); ++f)
+      if(S.mirrored[f]) { ++mirrored_faces; mirrored_negative += orientations_of_x(S)[f] == CGAL::NEGATIVE ? 1 : 0; }
+    if(mirrored_faces == 0) S.mirrored.clear();
+  }
+  report.uv_mirrored = mirrored_faces > 0;
+  auto left_alone = [&](std::size_t f) { return closed[f] > 0 || (!S.mirrored.empty() && S.mirrored[f]); };
+  if(report.uv_mirrored && opt.untangle)
+    S.untangle_note = (mirrored_faces == std::size_t(S.cm.n_faces)
+                           ? "; the untangling did not run: the map is mirrored (" + std::to_string(mirrored_negative) +
+                             " of its " + std::to_string(mirrored_faces) + " UV triangles are negative): "
+                           : "; the untangling left the mirrored parts of the map alone (connected components with more "
+                             "negative than positive UV triangles: " + std::to_string(mirrored_negative) + " of their " +
+                             std::to_string(mirrored_faces) + " are negative): ") + mirrored_map_advice();
+  if(!opt.untangle) return SUCCESS;
   Target_valences target = target_valences(S, fc, field_rotation_sums(S.cm, S.st, S.rot));
   const std::vector<int> turns = vertex_quarter_turns(S.cm, S.st, S.x, orientations_of_x(S));
   auto wound_at = [&](int v) { return target.wound(std::size_t(v), turns[std::size_t(v)]); };
@@ -790,7 +799,6 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   // (collapsed_cone_pairs(), those near the wrongly wound vertices and the vertices of non-positive faces) are not
   // targets: no move separates the cones
   std::size_t wound = 0;
-  const std::vector<int> non_positive = non_positive_faces(orientations_of_x(S));
   if(opt.integer_grid_map) {
     std::vector<int> seeds;
     for(int v = 0; v < S.cm.n_vertices; ++v) if(wound_at(v)) seeds.push_back(v);
@@ -798,19 +806,17 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
     const std::vector<std::pair<int, int> > pairs = collapsed_cone_pairs_near(S.cm, fc, collapsed_cone_pairs_of_x(S), seeds);
     for(int v : vertices_near_collapsed_cones(S.cm, fc, pairs, 2)) target.valence[std::size_t(v)] = 0;
   }
-  // the closed parts without cut edges fold in every map (closed_uncut_parts.h): left alone, faces and windings
-  const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, non_positive);
   for(std::size_t f = 0; f < closed.size(); ++f)
-    if(closed[f] > 0) for(int h : fc.halfedge[f]) target.valence[std::size_t(S.cm.target[h])] = 0;
+    if(left_alone(f)) for(int h : fc.halfedge[f]) target.valence[std::size_t(S.cm.target[h])] = 0;
   std::size_t targets = 0;                                     // non-positive faces to untangle
-  for(int f : non_positive) targets += closed[std::size_t(f)] > 0 ? 0 : 1;
+  for(int f : non_positive) targets += left_alone(std::size_t(f)) ? 0 : 1;
   for(int v = 0; v < S.cm.n_vertices; ++v) wound += wound_at(v) ? 1 : 0;
   if(targets + wound == 0) return SUCCESS;
   const Snap_clock::time_point t = Snap_clock::now();
   report.untangled = true;
   const Variable_rows incidence(S.full, S.x.size());
-  std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution, or in a closed uncut part
-  for(std::size_t f = 0; f < closed.size(); ++f) excluded[f] = closed[f] > 0 ? 1 : 0;
+  std::vector<char> excluded(std::size_t(S.cm.n_faces), 0);   // proven non-positive in every solution, or left alone
+  for(std::size_t f = 0; f < closed.size(); ++f) excluded[f] = left_alone(f) ? 1 : 0;
   Forced_fold_prover prover(S.cm, S.st, S.full, fc, incidence);
   for(const Fold_explanation& e : prover.explain(non_positive, S.x)) excluded[e.face] |= e.forced() ? 1 : 0;
   const std::vector<Reference_triangle> refs = reference_triangles(S.cm, S.st, fc, S.st.ubar, S.points, from_3d);
@@ -948,9 +954,10 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         if(closed[e.face] > 0) { e.message = closed_uncut_part_reason(closed[e.face]); continue; }
         if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
         else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
-        else if(report.uv_mirrored)
-          e.message = "not proven forced by the constraints; the map is mirrored (more of its UV triangles are negative than "
-                      "positive), so the untangling did not run: " + std::string(mirrored_map_advice());
+        else if(!S.mirrored.empty() && S.mirrored[e.face])
+          e.message = "not proven forced by the constraints; it lies in a mirrored part of the map (a connected component "
+                      "with more negative than positive UV triangles), which the untangling leaves alone: " +
+                      std::string(mirrored_map_advice());
         else if(report.untangle_rings > 0)   // the regions grew up to untangle_rings around the faces still non-positive
           e.message = "not proven forced by the constraints; the untangling did not make it positive (its regions grew to " +
                       std::to_string(report.untangle_rings) + " face rings around the fold-overs" +
