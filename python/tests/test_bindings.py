@@ -212,6 +212,18 @@ def orientations(F, UV, FUV):
     return out
 
 
+def test_change_statistics_scale_covariant():
+    # the report's changes scale with the map (2^j, bit for bit) down to 2^-500 and up to 2^1000, where summing the
+    # squares in the caller's units gave an RMS of 0 next to a positive max, and NaN (JSON null)
+    V, F, UV, FUV = cut_grid(n=8, noise=1e-9)
+    _, _, r = ss.snap(V, F, UV, FUV)
+    assert r["snap_max_change"] > 0 and r["snap_rms_change"] > 0
+    for j in (-500, 1000):
+        _, _, rj = ss.snap(V, F, UV * 2.0 ** j, FUV)
+        for key in ("snap_max_change", "snap_rms_change", "total_rms_change"):
+            assert rj[key] == r[key] * 2.0 ** j, (j, key, rj[key], r[key])
+
+
 def test_untangle_integer_grid_map():
     # an exact integer-grid map (grid of side 16, every vertex on an integer point) with one interior vertex of
     # the lower half dragged across its neighbour: its UV triangles fold over

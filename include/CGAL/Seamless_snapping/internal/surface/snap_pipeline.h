@@ -684,15 +684,18 @@ struct Uv_change
 template <class TriangleMesh>
 Uv_change measure_uv_change(const Snap_state<TriangleMesh>& S, const std::vector<double>& a, const std::vector<double>& b)
 {
+  // summed in corner-mesh units (normalized), then scaled: the same bits as in the caller's units wherever those neither
+  // overflow nor underflow, and an RMS for maps scaled by 2^-500 (it was 0 next to a positive max) or 2^1000 (NaN)
   Uv_change c;
-  double sum = 0;
+  double sum = 0, max = 0;
   for(std::size_t i = 0; i < a.size(); ++i) {
-    const double d = std::fabs(S.cm.to_uv(a[i]) - S.cm.to_uv(b[i]));
-    c.max = (std::max)(c.max, d);
+    const double d = std::fabs(a[i] - b[i]);
+    max = (std::max)(max, d);
     sum += d * d;
     if(i % 2 == 1 && (a[i] != b[i] || a[i - 1] != b[i - 1])) ++c.moved_sectors;
   }
-  c.rms = a.empty() ? 0. : std::sqrt(sum / double(a.size()));
+  c.max = S.cm.to_uv(max);
+  c.rms = a.empty() ? 0. : S.cm.to_uv(std::sqrt(sum / double(a.size())));
   return c;
 }
 
