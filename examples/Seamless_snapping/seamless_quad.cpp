@@ -320,13 +320,11 @@ int main(int argc, char** argv)
     if(q.status == SS::FOLD_OVERS && untangle && !q.advice.empty() && why.size() >= advice.size() &&
        why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
       why.resize(why.size() - advice.size());
-      proven = snap.uv_mirrored
-                   ? "; the map or a component of it is mirrored (" + std::to_string(snap.flips_before_untangling) +
-                         " of " + std::to_string(snap.faces) + " UV triangles negative), so seamless_quad did not untangle "
-                         "it there: " +
-                         SS::mirrored_map_advice()
-                   : "; seamless_quad untangled the map already: " + std::to_string(snap.flips_after_repair) +
-                         " negative and " + std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
+      proven = (snap.uv_mirrored ? "; the map or a component of it is mirrored, so seamless_quad did not untangle it "
+                                   "there (" + std::string(SS::mirrored_map_advice()) + "); it untangled the rest"
+                                 : std::string("; seamless_quad untangled the map already")) +
+               ": " + std::to_string(snap.flips_after_repair) + " negative and " +
+               std::to_string(snap.degenerate_after_repair) + " zero-area triangles are left";
     }
     const auto forced = std::find_if(snap.folds.begin(), snap.folds.end(), [](const SS::Fold_explanation& f) { return f.forced(); });
     if(q.status == SS::FOLD_OVERS && forced != snap.folds.end())

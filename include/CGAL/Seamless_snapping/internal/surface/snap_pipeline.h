@@ -618,7 +618,7 @@ Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Sna
 {
   auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
     if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
-    if(st == INFEASIBLE && report.quantized && !S.al.edges.empty())   // the libigl cube scaled by 1.3, its edges as features
+    if(st == INFEASIBLE && report.quantized && !S.al.edges.empty() && S.pins.empty())   // the cube scaled by 1.3, edges as features
       message += "; the map was quantized (quantize(true)) and has " + std::to_string(S.al.edges.size()) + " align edges: "
                  "the quantization chooses the cones' integer points without regard to them, and each aligned chain "
                  "takes the isoline nearest it, so two cones on one aligned chain can end up on different isolines; snap "
@@ -776,9 +776,10 @@ Status untangle_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap
   const std::vector<int> closed = closed_uncut_part_sizes(S.cm, S.st, fc, non_positive);
   std::size_t mirrored_faces = 0, mirrored_negative = 0;
   if(snapped.negative > 0) {
-    S.mirrored = mirrored_component_faces(S.cm, orientations_of_x(S), closed);
+    const std::vector<signed char>& o = orientations_of_x(S);   // (each call compares x with the x of its cache)
+    S.mirrored = mirrored_component_faces(S.cm, o, closed);
     for(std::size_t f = 0; f < S.mirrored.size(); ++f)
-      if(S.mirrored[f]) { ++mirrored_faces; mirrored_negative += orientations_of_x(S)[f] == CGAL::NEGATIVE ? 1 : 0; }
+      if(S.mirrored[f]) { ++mirrored_faces; mirrored_negative += o[f] == CGAL::NEGATIVE ? 1 : 0; }
     if(mirrored_faces == 0) S.mirrored.clear();
   }
   report.uv_mirrored = mirrored_faces > 0;
@@ -956,11 +957,11 @@ void explain_folds_stage(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
         }
         if(closed[e.face] > 0) { e.message = closed_uncut_part_reason(closed[e.face]); continue; }
         if(!opt.untangle) e.message = "not proven forced by the constraints; untangling was not asked for (untangle(true))";
-        else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
         else if(!S.mirrored.empty() && S.mirrored[e.face])
           e.message = "not proven forced by the constraints; it lies in a mirrored part of the map (a connected component "
                       "with more negative than positive UV triangles), which the untangling leaves alone: " +
                       std::string(mirrored_map_advice());
+        else if(report.untangle_refused) e.message = "not proven forced by the constraints; the untangled map was not used";
         else if(report.untangle_rings > 0)   // the regions grew up to untangle_rings around the faces still non-positive
           e.message = "not proven forced by the constraints; the untangling did not make it positive (its regions grew to " +
                       std::to_string(report.untangle_rings) + " face rings around the fold-overs" +
