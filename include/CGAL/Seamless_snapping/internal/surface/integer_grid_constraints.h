@@ -441,10 +441,12 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       return RANGE_EXCEEDED;
     }
     if(!(std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
-      const bool across = std::fabs(a - r) <= tolerance && std::fabs(b - std::nearbyint(b)) <= tolerance;   // two isolines
+      const bool ends_near = std::fabs(a - std::nearbyint(a)) <= tolerance && std::fabs(b - std::nearbyint(b)) <= tolerance;
       message = "the input is not near an integer-grid map: " + where() +
-                (across ? ", its ends on two different integer isolines (an align edge runs along one)"
-                        : ", farther than " + format_double(tolerance) + " from an integer") +
+                (!ends_near ? ", farther than " + format_double(tolerance) + " from an integer"
+                 : std::nearbyint(a) != std::nearbyint(b) ? ", its ends on two different integer isolines (an align edge runs along one)"
+                 : ", near the integer " + format_double(std::nearbyint(a)) + " but not near the isoline " + format_double(r) +
+                   " of the aligned chain it belongs to (the mean of the chain's ends, rounded)") +
                 finer_grid_advice(cm, st, rot, &al, ubar, tolerance, grid_scale, "; scale the map (grid_scale / --grid-scale)") +
                 ", or snap without integer_grid_map (--integer-grid)";
       return INVALID_INPUT;
