@@ -105,7 +105,7 @@ struct Projection_report
 {
   Status status = INVALID_INPUT;   ///< `SUCCESS` iff `C x = b` holds exactly and `x` was written
   std::string message;             ///< why it failed (names row/column), or a one-line summary
-  int delta_exponent = 0;          ///< K, with `delta = 2^K` (Sec. 4.3)
+  int delta_exponent = 0;          ///< K, with `delta = 2^K` (Sec. 4.3); where K from `delta_margin_bits` falls outside the doubles, one past their range (-1023 or 1024; `RANGE_EXCEEDED`)
   double delta = 0;                ///< the fixed-point range is (-delta, delta)
   double quantum = 0;              ///< spacing s = 2^(K-52) of the grid F_delta; every constrained output is a multiple of s
                                    ///< (`K`, `delta` and `quantum` are 0 when x̄ already satisfied every row exactly

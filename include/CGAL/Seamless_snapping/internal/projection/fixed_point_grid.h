@@ -52,7 +52,7 @@ struct Fixed_point_grid
   static constexpr int min_exponent = -1022;
   static constexpr int max_exponent = 1023;
 
-  int K = 0;           // delta = 2^K (as asked for, also when out of range)
+  int K = 0;           // delta = 2^K (as asked for, also when out of range; from_max_abs() keeps it one past the range)
   bool in_range = true;// min_exponent <= K <= max_exponent
   double delta = 1;    // the range is (-delta, delta)
   double quantum = 0;  // s = 2^(K-52)
