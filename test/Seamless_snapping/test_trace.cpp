@@ -141,6 +141,13 @@ static void test_grid()
   o.target_vertex = Mesh::Vertex_index(m.number_of_vertices() + 10);
   bad = tracer.trace_from_vertex(start, SS::Trace_direction::PLUS_U, o);
   assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("target vertex") != std::string::npos);
+  o.has_target_vertex = false;
+  o.has_target_point = true;                         // a target face, and a start face, past the end of the mesh's faces
+  o.target_face = Mesh::Face_index(m.number_of_faces() + 10); o.target_u = 1; o.target_v = 1;
+  bad = tracer.trace_from_vertex(start, SS::Trace_direction::PLUS_U, o);
+  assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("target face") != std::string::npos);
+  bad = tracer.trace_from_point(Mesh::Face_index(m.number_of_faces() + 10), u0, v0, SS::Trace_direction::PLUS_U);
+  assert(bad.end == SS::Trace_end::INVALID_START && bad.message.find("no halfedge") != std::string::npos);
   // the motorcycle graph of a square: 4 convex corners, no rays, nothing seeded
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);

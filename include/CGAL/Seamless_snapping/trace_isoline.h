@@ -149,6 +149,11 @@ public:
     hpos_.assign(max_h, -1);
     for(std::size_t i = 0; i < desc_.halfedges.size(); ++i) hpos_[get(him, desc_.halfedges[i])] = int(i);
     for(std::size_t i = 0; i < desc_.vertices.size(); ++i) vpos_[desc_.vertices[i]] = int(i);
+    auto fim = CGAL::get_initialized_face_index_map(tm);
+    std::size_t max_f = 0;
+    for(face_descriptor f : faces(tm)) max_f = (std::max)(max_f, std::size_t(get(fim, f)) + 1);
+    face_of_mesh_.assign(max_f, 0);
+    for(face_descriptor f : faces(tm)) face_of_mesh_[get(fim, f)] = 1;
   }
 
   /// `SUCCESS`, or why the map cannot be traced (`INVALID_INPUT`, `NOT_QUARTER_TURN_SEAMLESS`), with `message()`.
@@ -176,7 +181,7 @@ public:
                          const Trace_options<TriangleMesh>& options = Trace_options<TriangleMesh>()) const
   {
     internal::tracing::Trace_run r;
-    const int start = status_ == SUCCESS ? index_or_none(halfedge(f, tm_)) : -1;
+    const int start = status_ == SUCCESS && is_face_of_mesh(f) ? index_or_none(halfedge(f, tm_)) : -1;
     const std::string problem = start_problem(start, d, options);
     if(!problem.empty()) return failed_start(problem);
     internal::tracing::Trace_target target;
@@ -232,10 +237,19 @@ private:
   std::string message_;
   std::vector<int> hpos_;
   std::map<vertex_descriptor, int> vpos_;
+  std::vector<char> face_of_mesh_;          // per face index: a face of the mesh when the tracer read it
 
   int index(halfedge_descriptor h) const
   {
     return hpos_[get(CGAL::get_initialized_halfedge_index_map(tm_), h)];
+  }
+
+  // whether f is a face of the mesh as the tracer read it (not one removed since, nor an index past its end, where
+  // halfedge(f) would read outside the mesh)
+  bool is_face_of_mesh(face_descriptor f) const
+  {
+    const std::size_t i = std::size_t(get(CGAL::get_initialized_face_index_map(tm_), f));
+    return i < face_of_mesh_.size() && face_of_mesh_[i];
   }
 
   // the index of h, or -1 where h is no halfedge of the mesh as the tracer read it (e.g. one of a removed face)
@@ -249,11 +263,11 @@ private:
   std::string start_problem(int start, Trace_direction d, const Trace_options<TriangleMesh>& o) const
   {
     if(status_ != SUCCESS) return "invalid tracer";
-    if(start < 0) return "the start is no halfedge of the mesh the tracer read (an element removed since?)";
+    if(start < 0) return "the start is no halfedge (or face) of the mesh the tracer read (an element removed since?)";
     if(int(d) < 0 || int(d) > 3) return "direction " + std::to_string(int(d)) + " is none of PLUS_U, PLUS_V, MINUS_U, MINUS_V";
     if(o.has_target_vertex && vpos_.find(o.target_vertex) == vpos_.end())
       return "the target vertex is no vertex of the mesh the tracer read";
-    if(o.has_target_point && index_or_none(halfedge(o.target_face, tm_)) < 0)
+    if(o.has_target_point && (!is_face_of_mesh(o.target_face) || index_or_none(halfedge(o.target_face, tm_)) < 0))
       return "the target face is no face of the mesh the tracer read";
     return std::string();
   }
