@@ -498,6 +498,11 @@ def test_motorcycle_graph_flat_torus():
     lay = g["layout"]
     assert lay["status"] == "SUCCESS" and lay["valid"] and lay["patches"] == 1 and lay["quad_patches"] == 1
     assert lay["euler_characteristic"] == lay["surface_euler_characteristic"] == 0
+    # the same map scaled by 2^600 and 2^-600 (exact): the same layout (the corner angles' exact products overflowed or
+    # underflowed in double, and the patches were no longer quads)
+    for j in (600, -600):
+        lj = ss.motorcycle_graph(V, F, UV * 2.0 ** j, FUV)["layout"]
+        assert lj["valid"] and lj["patches"] == 1 and lj["quad_patches"] == 1, (j, lj)
     assert g["trace_ms"] > 0 and all(lay[k] > 0 for k in ("subdivision_ms", "mesh_ms", "measure_ms"))   # the phases ran
     for s in g["separatrices"]:
         assert s["inexact_transfers"] == 0

@@ -386,7 +386,10 @@ private:
     const FT ax = b.u - c.u, ay = b.v - c.v, bx = a.u - c.u, by = a.v - c.v;
     const FT cross = ax * by - ay * bx, dot = ax * bx + ay * by;
     if(CGAL::is_zero(cross)) return CGAL::is_negative(dot) ? std::acos(-1.) : 0.;   // straight, exactly
-    return std::atan2(CGAL::to_double(cross), CGAL::to_double(dot));                   // in (0, pi): convex pieces
+    // in (0, pi): convex pieces. Both divided by the larger first (exactly): for UVs beyond about 2^+-255 the products
+    // overflowed or underflowed in to_double(), and a map scaled by 2^600 or 2^-600 lost its quad patches
+    const FT m = (std::max)(CGAL::abs(cross), CGAL::abs(dot));
+    return std::atan2(CGAL::to_double(cross / m), CGAL::to_double(dot / m));
   }
 
   // corner_angle(h) within 1e-9 radians or so, from the corners' double intervals (no rationals), where those decide
