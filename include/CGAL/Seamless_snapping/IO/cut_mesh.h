@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,11 +53,12 @@ template <class TriangleMesh>
 Cut_mesh_test cut_mesh_test(const TriangleMesh& tm)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
-  typedef std::array<double, 3> Point;
+  typedef std::array<std::uint64_t, 3> Point;   // the bits of the coordinates: -0 and 0 differ, as in the weld
   const auto vpm = get(CGAL::vertex_point, tm);
+  auto bits = [](double x) { std::uint64_t b; std::memcpy(&b, &x, sizeof b); return b; };
   auto point = [&](typename GT::vertex_descriptor v) {
     const auto& p = get(vpm, v);
-    return Point{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    return Point{{bits(CGAL::to_double(p.x())), bits(CGAL::to_double(p.y())), bits(CGAL::to_double(p.z()))}};
   };
   std::vector<std::array<Point, 2> > sides;   // per border edge its two points, in order
   for(typename GT::edge_descriptor e : edges(tm)) {
