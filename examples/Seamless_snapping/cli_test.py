@@ -269,6 +269,11 @@ check(rc == 2 and "name one file" in text and not os.path.exists(os.path.join(wo
 clash = os.path.join(work, "clash.obj")
 rc, text = run(src, clash, "--report", os.path.join(work, ".", "clash.obj"))
 check(rc == 2 and "name one file" in text and not os.path.exists(clash), "OUT = --report: exit 2: %d %s" % (rc, text))
+# the same with relative paths to a file not written yet ('x' and './x' compared unequal: the VVAL file replaced OUT)
+p = subprocess.run([exe, os.path.abspath(src), "rel.obj", "--integer-grid", "--vval", "./rel.obj"], capture_output=True,
+                   text=True, cwd=work)
+check(p.returncode == 2 and "name one file" in p.stdout + p.stderr and not os.path.exists(os.path.join(work, "rel.obj")),
+      "OUT = ./OUT as --vval, relative, not yet written: exit 2: %d %s" % (p.returncode, p.stdout + p.stderr))
 # two squares whose shared side lies at x = 0 in one and x = -0 in the other: not bit-identical, so not a cut mesh (the
 # test compared values, the weld bits: "welded automatically" announced, 0 vertices welded)
 negzero = os.path.join(work, "negzero.obj")

@@ -885,9 +885,13 @@ inline std::string same_output_file(const std::vector<std::pair<std::string, std
 {
   std::vector<std::string> canonical;
   for(const std::pair<std::string, std::string>& o : outputs) {
+    // absolute first: weakly_canonical() leaves a relative path whose first component does not exist as it is, so
+    // "x" and "./x" differed where x was not written yet
     std::error_code ec;
-    const std::filesystem::path p = std::filesystem::weakly_canonical(o.second, ec);
-    canonical.push_back(ec ? o.second : p.string());
+    std::filesystem::path p = std::filesystem::absolute(o.second, ec);
+    if(ec) p = o.second;
+    const std::filesystem::path c = std::filesystem::weakly_canonical(p, ec);
+    canonical.push_back((ec ? p.lexically_normal() : c).string());
   }
   for(std::size_t i = 0; i < outputs.size(); ++i)
     for(std::size_t j = 0; j < i; ++j)
