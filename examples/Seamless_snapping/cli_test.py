@@ -283,6 +283,19 @@ with open(negzero, "w") as f:
             "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 5/5 6/6 7/7\nf 5/5 7/7 8/8\n")
 rc, text = run(negzero, os.path.join(work, "negzero_out.obj"))
 check(rc == 0 and "welded automatically" not in text, "-0 and 0 are not one point for the cut-mesh test: %d %s" % (rc, text))
+# a run that fails after the snap succeeded (OUT in a directory that does not exist; a --vval file that cannot be
+# written) exits 1, writes no OUT, and its report says so ("status" not SUCCESS, "output" null); the report said
+# SUCCESS and named the output, and a failed --vval left OUT written
+late = os.path.join(work, "late.json")
+rc, text = run(src, os.path.join(work, "no_such_dir", "o.obj"), "--report", late)
+r = json.load(open(late))
+check(rc == 1 and r["status"] == "INVALID_INPUT" and r["output"] is None and "the snap itself" in r["message"],
+      "OUT in a missing directory: exit 1, the report says why: %d %s %s" % (rc, text, r["status"]))
+vout = os.path.join(work, "vval_out.obj")
+rc, text = run(src, vout, "--integer-grid", "--vval", os.path.join(work, "no_such_dir", "v.vval"), "--report", late)
+r = json.load(open(late))
+check(rc == 1 and not os.path.exists(vout) and r["status"] != "SUCCESS" and r["output"] is None,
+      "--vval in a missing directory: exit 1, no OUT, the report says why: %d %s %s" % (rc, text, r["status"]))
 # --quantize with align edges: the cube in the usual cross layout (its edges as features, --sharp-angle 60) scaled by 1.3,
 # near no integer-grid map: the quantization puts the cones of one aligned edge on different isolines; INFEASIBLE with
 # that said (it named a row of the node system and nothing else), nothing written

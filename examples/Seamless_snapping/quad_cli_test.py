@@ -226,6 +226,14 @@ clash = os.path.join(work, "clash.obj")
 rc, text = run(parallelogram, clash, "--grid-scale", "4", "--layout", os.path.join(work, ".", "clash.obj"))
 check(rc == 2 and "name one file" in text and not os.path.exists(clash), "OUT = --layout: exit 2: %d %s" % (rc, text))
 
+# OUT in a directory that does not exist: exit 1, and the report (written before the mesh) says the run failed: "error",
+# "output" null (it named the output, with every status SUCCESS)
+late = os.path.join(work, "late.json")
+rc, text = run(parallelogram, os.path.join(work, "no_such_dir", "q.obj"), "--grid-scale", "4", "--report", late)
+r = json.load(open(late))
+check(rc == 1 and r["output"] is None and "no_such_dir" in r["error"] and r["quad_mesh"]["status"] == "SUCCESS",
+      "OUT in a missing directory: exit 1, the report says why: %d %s" % (rc, text))
+
 # an input that cannot be read: exit 1, no mesh, and the report says why (the help: "also on failure")
 unreadable, unreadable_report = os.path.join(work, "missing.obj"), os.path.join(work, "missing.json")
 rc, text = run(unreadable, os.path.join(work, "missing_out.obj"), "--report", unreadable_report)

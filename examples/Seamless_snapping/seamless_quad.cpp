@@ -233,9 +233,12 @@ int main(int argc, char** argv)
            == SS::SUCCESS;
   };
   // the JSON report (--report): the snap report and the quad mesh's, its patches' and its layout's (JSON texts)
+  // `error`: why the run failed (then "output" is null: nothing was written), or empty
   auto write_report = [&](const SS::Snap_report& snap, const std::string& quad_mesh, const std::string& patches,
-                          const std::string& layout) {
-    const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+                          const std::string& layout, const std::string& error = std::string()) {
+    const std::string json = "{\n  \"input\": " + json_string(in) + ",\n  \"output\": " +
+                             (error.empty() ? json_string(out) : std::string("null")) +
+                             (error.empty() ? std::string() : ",\n  \"error\": " + json_string(error)) +
                              ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",\n  \"snap\": " +
                              snap.to_json() + ",\n  \"quad_mesh\": " + quad_mesh + ",\n  \"patches\": " + patches +
                              ",\n  \"layout\": " + layout + "}\n";
@@ -306,11 +309,15 @@ int main(int argc, char** argv)
   auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
   SS::Quad_layout lay;
   if(q.status == SS::SUCCESS && !layout_file.empty()) lay = SS::quad_layout(quads, layout, arcs);
-  if(!report_file.empty() &&
-     !write_report(snap, snap.status == SS::SUCCESS ? q.to_json() : std::string("null"),
-                   q.status == SS::SUCCESS ? patches.to_json() : std::string("null"),
-                   q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null")))
-    return fail(message);
+  const std::string quad_json = snap.status == SS::SUCCESS ? q.to_json() : std::string("null");
+  const std::string patches_json = q.status == SS::SUCCESS ? patches.to_json() : std::string("null");
+  const std::string layout_json = q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null");
+  if(!report_file.empty() && !write_report(snap, quad_json, patches_json, layout_json)) return fail(message);
+  // a failure from here on: the report written above gets "error" and no "output"
+  auto fail = [&](const std::string& why) {
+    if(!report_file.empty() && !write_report(snap, quad_json, patches_json, layout_json, why)) ::fail(message);
+    return ::fail(why);
+  };
   if(snap.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(snap.status) + ": " + snap.message);
   if(q.status != SS::SUCCESS) {

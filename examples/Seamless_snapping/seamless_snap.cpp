@@ -334,23 +334,29 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   R.input = in;
   const Clock::time_point t_start = Clock::now();
   bool report_written = false;
-  auto write_report = [&](const SS::Snap_report& report, std::string& message) {
+  const SS::Snap_report* snapped = nullptr;   // the snap's report, once it ran
+  // "output": OUT, or null where the run failed (nothing written)
+  auto write_report = [&](const SS::Snap_report& report, std::string& message, bool failed) {
     report_written = true;
     std::string json = report.to_json();
-    json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " + json_string(out) +
+    json.insert(json.find('{') + 1, "\n  \"input\": " + json_string(in) + ",\n  \"output\": " +
+                                    (failed ? std::string("null") : json_string(out)) +
                                     ",\n  \"version\": " + json_string(CGAL_SEAMLESS_SNAPPING_VERSION) + ",");
     return SS::IO::internal::write_text_atomically(report_file, json, message) == SS::SUCCESS;
   };
-  auto fail = [&](const std::string& why) {
+  // The report says why the run failed: before the snap ran (the input or a file of an option), or after a snap that
+  // succeeded (a refused --vval or --fail-on-new-flips, a failed verification or write), where the report already
+  // written said SUCCESS: `status` becomes `st` and the message says why, the snap's own message after it
+  auto fail = [&](const std::string& why, SS::Status st = SS::INVALID_INPUT) {
     R.status = "FAILED";
     R.message = one_line(why);
     R.total_ms = ms_since(t_start);
-    if(has_report && !report_written) {   // before the snap ran (the input or a file of an option): the report says why
-      SS::Snap_report refused;
-      refused.status = SS::INVALID_INPUT;
-      refused.message = why;
+    if(has_report && (!report_written || (snapped != nullptr && snapped->status == SS::SUCCESS))) {
+      SS::Snap_report failed = snapped != nullptr ? *snapped : SS::Snap_report();
+      failed.status = st;
+      failed.message = why + (snapped != nullptr ? "; the snap itself: " + snapped->message : std::string());
       std::string message;
-      if(!write_report(refused, message)) ::fail(message);
+      if(!write_report(failed, message, true)) ::fail(message);
     }
     return ::fail(why);
   };
@@ -451,9 +457,10 @@ static int snap_file(const Options& options, const std::string& in, const std::s
     std::cerr << "seamless_snap: warning: " << report.cones_on_integer_points_before - report.cones_on_integer_points_after
               << " cones that were exactly on integer points moved off them; --integer-grid keeps them\n";
   if(has_report) {
-    if(!write_report(report, message)) return fail(message);
+    if(!write_report(report, message, report.status != SS::SUCCESS)) return fail(message);
     if(!quiet) std::cout << "report written to " << report_file << "\n";
   }
+  snapped = &report;
   if(report.status != SS::SUCCESS)
     return fail(std::string("snapping failed: ") + SS::status_name(report.status) + ": " + report.message);
   if(report.cut_edges == 0 && cut_mesh && no_weld)   // (welded automatically, a map without cut edges is one chart)
@@ -463,7 +470,7 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   if(fail_on_new_flips && report.flips_unrepaired + report.degenerate_unrepaired > 0)
     return fail("--fail-on-new-flips: " + std::to_string(report.flips_unrepaired) + " flipped and " +
                 std::to_string(report.degenerate_unrepaired) + " degenerate UV triangles introduced and not repaired; "
-                "nothing was written");
+                "nothing was written", SS::FOLD_OVERS);
 
   // 3. verify independently, in rational arithmetic; 4. write atomically. The valences come first, so that a failure
   //    leaves no OUT.obj behind. With two threads or more, the OBJ text is written to the temporary file while the map
@@ -475,7 +482,10 @@ static int snap_file(const Options& options, const std::string& in, const std::s
     valences = SS::quad_valences(mesh, uv);
     if(valences.status != SS::SUCCESS)
       return fail("--vval: " + std::string(SS::status_name(valences.status)) + ": " + valences.message +
-                  (valences.status == SS::FOLD_OVERS ? " (libQEx does better without a VVAL file here); nothing was written" : ""));
+                  (valences.status == SS::FOLD_OVERS ? " (libQEx does better without a VVAL file here); nothing was written" : ""),
+                  valences.status);
+    std::string why;                         // a VVAL file that cannot be written must not leave OUT.obj behind
+    if(!SS::IO::internal::can_create(vval_file, why)) return fail("--vval: " + why + "; nothing was written");
   }
   bool checked = false, exact = false, grid_exact = true;
   auto verify = [&] {
@@ -487,7 +497,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   };
   auto verification_failure = [&] {
     return fail(!exact ? "verification failed: the snapped map is not exactly seamless (internal error; please report)"
-                       : "verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
+                       : "verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)",
+                SS::EXACTNESS_CHECK_FAILED);
   };
   auto verified = [&] {
     if(quiet) return;

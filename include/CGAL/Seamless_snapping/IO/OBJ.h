@@ -848,6 +848,20 @@ Status write_regular_file_atomically(const std::string& path, const std::string&
   return SUCCESS;
 }
 
+// Whether write_atomically() can create `filename`: its directory exists and it is not a directory itself (a check
+// before other files are written, so that a failure leaves none of them behind); else false with `message`.
+inline bool can_create(const std::string& filename, std::string& message)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(filename);
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if(fs::is_directory(fs::status(filename, ec))) message = "cannot write '" + filename + "': it is a directory";
+  else if(!fs::is_directory(fs::status(dir, ec))) message = "cannot write '" + filename + "': no directory '" + dir.string() + "'";
+  else return true;
+  return false;
+}
+
 // Writes a file through a temporary file next to it and std::rename (atomic on POSIX): `write(os)`
 // writes the content to the stream and returns false if it could not; on failure nothing is left
 // behind and `filename` is untouched. A symbolic link is followed (the file it points to is replaced, not
