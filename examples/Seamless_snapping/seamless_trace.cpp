@@ -165,13 +165,14 @@ int main(int argc, char** argv)
        << ",\n  \"border_corners\": " << g.border_corners << ",\n  \"seeded\": " << (g.seeded ? "true" : "false")
        << ",\n  \"separatrices\": " << g.separatrices.size() << ",\n  \"failed\": " << g.failed
        << ",\n  \"inexact_transfers\": " << inexact
-       << ",\n  \"patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.patches.size()) : "null")
-       << ",\n  \"quad_patches\": " << (L.status == SS::SUCCESS ? std::to_string(L.quad_patches) : "null")
        << ",\n  \"valid_layout\": " << (L.is_valid() ? "true" : "false")
-       << ",\n  \"layout_message\": " << json_string(L.message)
-       << ",\n  \"nodes\": " << L.nodes << ",\n  \"arcs\": " << L.arcs
-       << ",\n  \"euler_characteristic\": " << L.euler_characteristic
-       << ",\n  \"surface_euler_characteristic\": " << L.surface_euler_characteristic << ",\n  \"ends\": {";
+       << ",\n  \"layout_message\": " << json_string(L.message);
+    // the layout's numbers, null where no layout was built (they were 0, the surface's Euler characteristic too)
+    auto count = [&](long n) { return L.status == SS::SUCCESS ? std::to_string(n) : std::string("null"); };
+    os << ",\n  \"patches\": " << count(long(L.patches.size())) << ",\n  \"quad_patches\": " << count(long(L.quad_patches))
+       << ",\n  \"nodes\": " << count(long(L.nodes)) << ",\n  \"arcs\": " << count(long(L.arcs))
+       << ",\n  \"euler_characteristic\": " << count(L.euler_characteristic)
+       << ",\n  \"surface_euler_characteristic\": " << count(L.surface_euler_characteristic) << ",\n  \"ends\": {";
     bool first = true;
     for(int e = 0; e < SS::number_of_trace_ends; ++e) {
       os << (first ? "" : ", ") << "\"" << SS::trace_end_name(SS::Trace_end(e)) << "\": " << g.ends[e];
