@@ -283,6 +283,18 @@ with open(negzero, "w") as f:
             "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 5/5 6/6 7/7\nf 5/5 7/7 8/8\n")
 rc, text = run(negzero, os.path.join(work, "negzero_out.obj"))
 check(rc == 0 and "welded automatically" not in text, "-0 and 0 are not one point for the cut-mesh test: %d %s" % (rc, text))
+# a file name that is not UTF-8 (a Latin-1 byte): the JSON report stays valid (the byte is read as its Latin-1
+# character; raw, it made the report unreadable)
+latin = os.path.join(work.encode(), b"lat\xe9.obj")
+shutil.copyfile(src, latin)
+latin_report = os.path.join(work, "latin.json")
+p = subprocess.run([exe.encode(), latin, os.path.join(work, "latin_out.obj").encode(), b"--report", latin_report.encode()],
+                   capture_output=True)
+try:
+    latin_input = json.load(open(latin_report, encoding="utf-8"))["input"]
+except ValueError as e:
+    latin_input = "unreadable: %s" % e
+check(p.returncode == 0 and latin_input.endswith("lat\u00e9.obj"), "a Latin-1 file name in the report: %r" % latin_input)
 # a run that fails after the snap succeeded (OUT in a directory that does not exist; a --vval file that cannot be
 # written) exits 1, writes no OUT, and its report says so ("status" not SUCCESS, "output" null); the report said
 # SUCCESS and named the output, and a failed --vval left OUT written

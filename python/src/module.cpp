@@ -50,7 +50,8 @@ namespace {
 // an argument refused before anything is computed; Python: seamless_snapping.InputError (a ValueError)
 struct Input_error : std::invalid_argument
 {
-  using std::invalid_argument::invalid_argument;
+  // valid UTF-8 (Python decodes the message as UTF-8: a Latin-1 byte of a file left it empty)
+  explicit Input_error(const std::string& what) : std::invalid_argument(SS::IO::internal::utf8_text(what)) {}
 };
 
 // (V, F, UV, FUV, message) of the OBJ file in its own layout (rows of V welded with `weld`); InputError with the

@@ -212,6 +212,14 @@ def orientations(F, UV, FUV):
     return out
 
 
+def test_messages_of_files_in_other_encodings(tmp_path):
+    # a Latin-1 byte in a token of the file: InputError names it (as its Latin-1 character); the message was empty
+    path = tmp_path / "latin.obj"
+    path.write_bytes(b"v 0 0 0\nv 1 0 0\nv 0 1 \xe9x\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n")
+    with pytest.raises(ss.InputError, match="\u00e9x"):
+        ss.read_obj(str(path))
+
+
 def test_change_statistics_scale_covariant():
     # the report's changes scale with the map (2^j, bit for bit) down to 2^-500 and up to 2^1000, where summing the
     # squares in the caller's units gave an RMS of 0 next to a positive max, and NaN (JSON null)

@@ -1271,10 +1271,20 @@ static void test_json_strings()
   std::string mixed = "C:\\maps\\\"a b\".obj\tline 3\r\n";
   for(int b = 0; b < 256; ++b) {
     const std::string one(1, char(b));
+    // a byte below 0x80 is itself; one above, alone, is no UTF-8: it becomes the character of its code (U+0080..U+00FF,
+    // two bytes of UTF-8), so that the JSON stays valid
+    const std::string expected = b < 0x80 ? one : std::string{char(0xC0 | (b >> 6)), char(0x80 | (b & 0x3F))};
     std::string back;
-    CHECK(decode_json_string(SS::IO::internal::json_string(one), back) && back == one, "byte " + std::to_string(b));
+    CHECK(decode_json_string(SS::IO::internal::json_string(one), back) && back == expected, "byte " + std::to_string(b));
     if(b < 0x20 || b == 0x7f) mixed += one;
   }
+  // valid UTF-8 is kept byte for byte (2, 3 and 4 bytes); an overlong form, a surrogate and a sequence cut short are not
+  // UTF-8: each of their bytes is mapped as above
+  for(const std::string& valid : {std::string("\xC3\xA9"), std::string("\xE2\x82\xAC"), std::string("\xF0\x9F\x98\x80")})
+    CHECK(SS::IO::internal::utf8_text(valid) == valid, "valid UTF-8 kept");
+  CHECK(SS::IO::internal::utf8_text("\xC0\x80") == "\xC3\x80\xC2\x80", "overlong form mapped");
+  CHECK(SS::IO::internal::utf8_text("\xED\xA0\x80") == "\xC3\xAD\xC2\xA0\xC2\x80", "surrogate mapped");
+  CHECK(SS::IO::internal::utf8_text("a\xE2\x82") == "a\xC3\xA2\xC2\x82", "cut sequence mapped");
   std::string back;
   CHECK(decode_json_string(SS::IO::internal::json_string(mixed), back) && back == mixed, "mixed string");
   SS::Snap_report r;

@@ -142,8 +142,10 @@ inline void skip_spaces(const char*& p, const char* end) { while(p != end && is_
 // length, so that a huge unparsable token does not end up whole in the message.
 inline std::string quote_token(const char* begin, const char* end)
 {
-  const std::size_t n = std::size_t(end - begin), shown = 60;
+  const std::size_t n = std::size_t(end - begin);
+  std::size_t shown = 60;
   if(n <= shown) return "'" + std::string(begin, end) + "'";
+  while(shown > 56 && (static_cast<unsigned char>(begin[shown]) & 0xC0) == 0x80) --shown;   // not inside a UTF-8 character
   return "'" + std::string(begin, begin + shown) + "...' (" + std::to_string(n) + " characters)";
 }
 
