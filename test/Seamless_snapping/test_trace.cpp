@@ -35,6 +35,7 @@
 #include "connection_test_utils.h"
 
 #include <CGAL/Seamless_snapping/IO/Patch_layout.h>
+#include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
@@ -152,6 +153,22 @@ static void test_grid()
   SS::Motorcycle_graph<Mesh> g = SS::build_motorcycle_graph(tracer);
   assert(g.status == SS::SUCCESS && g.border_corners == 4 && g.separatrices.empty() && !g.seeded);
   check_layout(m, uv, g, "grid");                         // one patch: the square itself
+  { // its SVG, and that of the same square moved and scaled to UVs of +-1.25 2^1023 (their span overflowed a double: NaN
+    // coordinates): finite, the square's corners at the image's corners (5, 5) .. (1005, 1005)
+    std::ostringstream svg;
+    SS::IO::write_motorcycle_graph_svg(svg, m, uv, g);
+    assert(svg.str().find("nan") == std::string::npos && svg.str().find("inf") == std::string::npos);
+    Mesh big_m = m;
+    UV_map big = uv_of(big_m);
+    for(halfedge_descriptor h : big_m.halfedges())
+      if(!big_m.is_border(h))
+        put(big, h, Point_2(std::ldexp(get(big, h).x() - n / 2., 1022), std::ldexp(get(big, h).y() - n / 2., 1022)));
+    std::ostringstream svg_big;
+    SS::IO::write_motorcycle_graph_svg(svg_big, big_m, big, SS::Motorcycle_graph<Mesh>());
+    const std::string t = svg_big.str();
+    assert(t.find("nan") == std::string::npos && t.find("inf") == std::string::npos);
+    assert(t.find("5.00,1005.00") != std::string::npos && t.find("1005.00,5.00") != std::string::npos);
+  }
   assert(g.layout.patches.size() == 1 && g.layout.patches[0].width == n && g.layout.nodes == 4 && g.layout.arcs == 4);
   std::cout << "trace: grid: OK\n";
 }

@@ -12,7 +12,10 @@
 
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -32,17 +35,20 @@ template <class TriangleMesh, class HalfedgeUVMap>
 void write_motorcycle_graph_svg(std::ostream& os, const TriangleMesh& tm, HalfedgeUVMap uv,
                                 const Motorcycle_graph<TriangleMesh>& g, double width = 1000)
 {
-  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for(auto h : halfedges(tm)) {
     if(is_border(h, tm)) continue;
     const auto p = get(uv, h);
     lo[0] = (std::min)(lo[0], double(p.x())); hi[0] = (std::max)(hi[0], double(p.x()));
     lo[1] = (std::min)(lo[1], double(p.y())); hi[1] = (std::max)(hi[1], double(p.y()));
   }
-  const double span = (std::max)((std::max)(hi[0] - lo[0], hi[1] - lo[1]), 1e-300);
-  const double s = width / span, height = (hi[1] - lo[1]) * s;
-  auto X = [&](double u) { return (u - lo[0]) * s + 5; };
-  auto Y = [&](double v) { return height - (v - lo[1]) * s + 5; };
+  if(!(lo[0] <= hi[0])) lo[0] = hi[0] = lo[1] = hi[1] = 0;   // no corner
+  // half coordinates: the span of UVs near +-DBL_MAX overflowed (NaN in the image); the minimum from the corners
+  // themselves (it started at 1e300, which moved maps beyond 1e305 off the image)
+  const double half_span = (std::max)((std::max)(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1]), 1e-300);
+  const double s = width / half_span, height = (0.5 * hi[1] - 0.5 * lo[1]) * s;
+  auto X = [&](double u) { return (0.5 * u - 0.5 * lo[0]) * s + 5; };
+  auto Y = [&](double v) { return height - (0.5 * v - 0.5 * lo[1]) * s + 5; };
   char buf[256];
   std::snprintf(buf, sizeof buf, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\">\n",
                 width + 10, height + 10);
@@ -67,9 +73,11 @@ void write_motorcycle_graph_svg(std::ostream& os, const TriangleMesh& tm, Halfed
   for(auto f : faces(tm)) {
     auto h = halfedge(f, tm);
     const auto a = get(uv, h), b = get(uv, next(h, tm)), c = get(uv, next(next(h, tm), tm));
-    const double det = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    typedef CGAL::Epick::Point_2 P;          // the exact orientation (a determinant in doubles overflows near DBL_MAX)
+    const bool positive = CGAL::orientation(P(double(a.x()), double(a.y())), P(double(b.x()), double(b.y())),
+                                            P(double(c.x()), double(c.y()))) == CGAL::LEFT_TURN;
     std::snprintf(buf, sizeof buf, "<polygon points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\" fill=\"%s\" stroke=\"#ccc\" stroke-width=\"0.3\"/>\n",
-                  X(a.x()), Y(a.y()), X(b.x()), Y(b.y()), X(c.x()), Y(c.y()), det > 0 ? "none" : "#f88");
+                  X(a.x()), Y(a.y()), X(b.x()), Y(b.y()), X(c.x()), Y(c.y()), positive ? "none" : "#f88");
     os << buf;
   }
   for(const Isoline_trace<TriangleMesh>& t : g.separatrices) {
