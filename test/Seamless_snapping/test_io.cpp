@@ -362,6 +362,8 @@ static void test_malformed()
     CHECK(found, "subnormal vt: the UV 4e-320 was not kept");
   }
   expect_invalid("garbage number", "v 0 0 1x\n", "cannot parse coordinate '1x'");
+  expect_invalid("two signs", "v 0 0 +-1\n", "cannot parse coordinate '+-1'");      // it was read as -1
+  expect_invalid("two signs in an index", tri + "f 1/1 2/2 +-1/3\n", "+-1");
   expect_invalid("missing coordinate", "v 0 0\n", "needs 3 coordinates");
   expect_invalid("vertex index out of range", tri + "f 1/1 2/2 9/3\n", "vertex index 9 out of range");
   expect_invalid("texture index out of range", tri + "f 1/1 2/2 3/30\n", "texture index 30 out of range");

@@ -70,10 +70,19 @@ namespace internal {
 
 // Parses one double at [p, end); on success advances p. Leading '+' is accepted (OBJ writers
 // emit it), "nan"/"inf" parse here and are rejected by the caller with a clearer message.
+// A leading '+' (one sign only: "+-1" is no number; it was read as -1), skipped; false where a second sign follows
+inline bool skip_plus(const char*& p, const char* end)
+{
+  if(p == end || *p != '+') return true;
+  if(p + 1 != end && (p[1] == '-' || p[1] == '+')) return false;
+  ++p;
+  return true;
+}
+
 inline bool parse_double(const char*& p, const char* end, double& x, bool& out_of_range)
 {
   out_of_range = false;
-  if(p != end && *p == '+') ++p;
+  if(!skip_plus(p, end)) return false;
 #if defined(__cpp_lib_to_chars)
   std::from_chars_result r = std::from_chars(p, end, x);
   if(r.ec == std::errc::result_out_of_range) { out_of_range = true; return false; }
@@ -95,7 +104,7 @@ inline bool parse_double(const char*& p, const char* end, double& x, bool& out_o
 // Parses an optional sign and decimal digits; false on overflow or when there are no digits.
 inline bool parse_index(const char*& p, const char* end, long long& i)
 {
-  if(p != end && *p == '+') ++p;
+  if(!skip_plus(p, end)) return false;
   std::from_chars_result r = std::from_chars(p, end, i);
   if(r.ec != std::errc()) return false;
   p = r.ptr;
