@@ -245,6 +245,13 @@ check(json.load(open(os.path.join(outdir, "cut.json")))["status"] == "SUCCESS", 
 table = open(summary).read()
 check("2 of 3 inputs snapped exactly" in table and "| FAILED |" in table and "missing.obj" in table,
       "--summary: the table names every input and status: %s" % table)
+# a '|' in a file name (and so in the message naming it) is escaped in the table: every row keeps its 11 cells
+import re
+piped_summary = os.path.join(work, "piped_summary.md")
+rc, text = run("--quiet", "--outdir", os.path.join(work, "piped"), os.path.join(work, "a|b.obj"), "--summary", piped_summary)
+rows = [l for l in open(piped_summary).read().splitlines() if l.startswith("| ")]
+check(rc == 1 and len(rows) == 2 and all(len(re.findall(r"(?<!\\)\|", l)) == 12 for l in rows) and "a\\|b.obj" in rows[1],
+      "--summary escapes '|': %s" % rows)
 # an input that cannot be read gets its report too (status INVALID_INPUT, the reader's message), as with --report
 missing_report = json.load(open(os.path.join(outdir, "missing.json")))
 check(missing_report["status"] == "INVALID_INPUT" and "cannot read input" in missing_report["message"] and

@@ -554,10 +554,15 @@ static void write_summary(std::ostream& os, const std::vector<Summary_row>& rows
   char b[512];
   std::size_t ok = 0;
   double total = 0;
+  auto cell = [](const std::string& text) {         // a '|' in a file name or message would end the cell
+    std::string c;
+    for(char x : text) { if(x == '|') c += '\\'; c += x; }
+    return c;
+  };
   for(const Summary_row& r : rows) {
-    std::snprintf(b, sizeof b, "| %s | %s | %zu | %zu | %zu | %zu | %.1f | %.1f | %.1f | %.1f | ", r.input.c_str(), r.status.c_str(),
+    std::snprintf(b, sizeof b, " | %s | %zu | %zu | %zu | %zu | %.1f | %.1f | %.1f | %.1f | ", r.status.c_str(),
                   r.faces, r.cones, r.nodes, r.flips, r.read_ms, r.snap_ms, r.write_ms, r.total_ms);
-    os << b << r.message.substr(0, 200) << " |\n";
+    os << "| " << cell(r.input) << b << cell(r.message.substr(0, 200)) << " |\n";
     ok += r.status == "SUCCESS" ? 1 : 0;
     total += r.total_ms;
   }
