@@ -68,8 +68,6 @@ namespace internal {
 // "C" numeric locale.
 // ---------------------------------------------------------------------------------------------
 
-// Parses one double at [p, end); on success advances p. Leading '+' is accepted (OBJ writers
-// emit it), "nan"/"inf" parse here and are rejected by the caller with a clearer message.
 // A leading '+' (one sign only: "+-1" is no number; it was read as -1), skipped; false where a second sign follows
 inline bool skip_plus(const char*& p, const char* end)
 {
@@ -79,6 +77,8 @@ inline bool skip_plus(const char*& p, const char* end)
   return true;
 }
 
+// Parses one double at [p, end); on success advances p. Leading '+' is accepted (OBJ writers
+// emit it), "nan"/"inf" parse here and are rejected by the caller with a clearer message.
 inline bool parse_double(const char*& p, const char* end, double& x, bool& out_of_range)
 {
   out_of_range = false;
