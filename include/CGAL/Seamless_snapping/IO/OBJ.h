@@ -905,7 +905,8 @@ Status write_atomically(const std::string& filename, const Write& write, std::st
 
 // The command-line programs' output files, each with the option that names it: where two of them name one file (the
 // later write would replace the earlier, and the program would still report both written), a message naming the two,
-// else empty. Paths are compared as std::filesystem::weakly_canonical() gives them (./a and a are one file).
+// else empty. Paths are compared made absolute, then as std::filesystem::weakly_canonical() gives them (./a and a are
+// one file, also where a does not exist yet).
 inline std::string same_output_file(const std::vector<std::pair<std::string, std::string> >& outputs)
 {
   std::vector<std::string> canonical;
