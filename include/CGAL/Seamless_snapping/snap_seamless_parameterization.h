@@ -351,11 +351,11 @@ namespace Seamless_snapping {
  *                           scale from 1 to 32, the map moved by at most 1.08 grid cells; Directional's rot-seamless
  *                           dragon, 870 cones: at grid scale 4 with `merge_cone_pairs` and from 16 on, at most 4.8 cells). Without effect on a map that is
  *                           near an integer-grid map (its translations are rounded); `Snap_report::quantized` says whether
- *                           it ran. Not yet combined with alignment: the cones' points are chosen without regard to the
- *                           align edges (feature edges, aligned border) and each aligned chain takes the integer isoline
- *                           nearest it, so two cones on one aligned chain can land on different isolines: `INFEASIBLE`
- *                           (libigl's cube scaled by 1.3 with its edges as features: at grid scales 1 and 2), and the
- *                           message says so.}
+ *                           it ran. With align edges (feature edges, aligned border) each cone takes a point on the isolines
+ *                           of the aligned chains through it where a chain already has one, and the chains that the cuts
+ *                           join take one isoline (`internal/surface/isoline_classes.h`); the last cone of each part of the
+ *                           cut graph and the translations rounded on its cycles are not chosen against the chains, and
+ *                           where they contradict one the snap is refused `INFEASIBLE` saying so.}
  *     \cgalParamType{Boolean}
  *     \cgalParamDefault{`false`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::quantize()`; implemented in

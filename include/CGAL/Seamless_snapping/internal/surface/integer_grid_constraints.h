@@ -42,6 +42,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 #include <CGAL/Seamless_snapping/internal/surface/exact_uv_check.h>
 #include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
+#include <CGAL/Seamless_snapping/internal/surface/isoline_classes.h>
 #include <CGAL/Seamless_snapping/internal/surface/transition_constraints.h>
 
 #include <CGAL/Gmpq.h>
@@ -406,31 +407,37 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
                                     const std::vector<char>& moved_cones = std::vector<char>(), double grid_scale = 0)
 {
   result = Integer_grid_rows_result();
-  // Align edges that share a corner's variable (the edges of one straight side in one chart) lie on one isoline: one
-  // value per such group, the integer nearest the mean of its edges' ends. Rounded edge by edge, the first end of each,
-  // the edges of a quantized side at u = 8.5 (+- 1e-9) went to the isolines 8 and 9, rows that contradict each other
-  // (INFEASIBLE)
-  Union_find group(2 * st.n_sectors);
-  auto ends = [&](int e, int& a, int& b) {
-    a = 2 * st.sector_of[cm.prev[al.halfedge[e]]] + al.component[e];
-    b = 2 * st.sector_of[al.halfedge[e]] + al.component[e];
-  };
-  for(int e : al.edges) { int a, b; ends(e, a, b); group.unite(a, b); }
-  std::vector<double> group_sum(2 * std::size_t(st.n_sectors), 0.), group_ends(2 * std::size_t(st.n_sectors), 0.);
-  for(int e : al.edges) {
-    int a, b;
-    ends(e, a, b);
-    group_sum[std::size_t(group.find(a))] += ubar[std::size_t(a)] + ubar[std::size_t(b)];
-    group_ends[std::size_t(group.find(a))] += 2;
+  // The isoline of each align edge from its class (isoline_classes.h): the align edges that share a corner's variable
+  // (the edges of one straight side in one chart) or that the cut edges join across the charts (with these translations)
+  // lie on one isoline, that of the cones on them (their integer points) where there are, else the integer nearest the
+  // mean of their ends (in the coordinate of the class's root). Rounded edge by edge, the first end of each, the edges
+  // of a quantized side at u = 8.5 (+- 1e-9) went to the isolines 8 and 9, rows that contradict each other; rounded
+  // per chart, the cube with its edges as features, quantized, put the cones of one edge on two isolines (INFEASIBLE)
+  Isoline_classes classes(al.edges.empty() ? 0 : 2 * std::size_t(st.n_sectors));
+  std::vector<double> root_sum(classes.size(), 0.), root_ends(classes.size(), 0.);
+  if(!al.edges.empty()) {
+    relate_align_edges(cm, st, al, classes);
+    for(int e : st.cut_edges) relate_cut_edge(cm, st, rot, t, cm.edge_halfedge[e], classes);
+    for(int e : al.edges) {
+      std::size_t ends[2];
+      align_edge_ends(cm, st, al, e, ends[0], ends[1]);
+      for(std::size_t x : ends) {
+        const Isoline_classes::Relation r = classes.find(x);
+        root_sum[r.root] += double(r.sign) * (ubar[x] - double(r.offset));
+        root_ends[r.root] += 1;
+      }
+    }
   }
   std::vector<long> isoline(cm.n_edges, 0);
   for(int e : al.edges) {
     const int g = al.halfedge[e], c = al.component[e];
-    int ia, ib;
-    ends(e, ia, ib);
-    const double a = ubar[std::size_t(ia)], b = ubar[std::size_t(ib)];
-    const std::size_t root = std::size_t(group.find(ia));
-    const double r = std::nearbyint(group_sum[root] / group_ends[root]);
+    std::size_t ia, ib;
+    align_edge_ends(cm, st, al, e, ia, ib);
+    const double a = ubar[ia], b = ubar[ib];
+    const Isoline_classes::Relation root = classes.find(ia);
+    long fixed;
+    const double r = double(root.sign) * (classes.fixed(root.root, fixed) ? double(fixed)
+                                          : std::nearbyint(root_sum[root.root] / root_ends[root.root])) + double(root.offset);
     auto where = [&] {                // formatted only for a message
       return "align edge " + vertex_pair_name(cm, g) + " lies on the isoline " + (c == 0 ? "u" : "v") + " = " +
              (a == b ? format_double(a, 17) : format_double(a, 17) + " .. " + format_double(b, 17));
@@ -495,6 +502,18 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       return INFEASIBLE;
     }
     result.cones.push_back(v);
+  }
+
+  if(classes.conflict()) {
+    const std::size_t x = classes.conflict_a();
+    const int v = st.sector_vertex(cm, int(x / 2));
+    message = classes.range_exceeded()
+      ? "the isolines of the align edges through vertex " + std::to_string(v) + ", composed across the cut edges' " +
+        "translations, reach 2^62 grid units; scale the map down (grid_scale / --grid-scale); nothing was written"
+      : "the integer translations and the align edges contradict each other at vertex " + std::to_string(v) + " (" +
+        (x % 2 == 0 ? "u" : "v") + "): an aligned chain through it, followed across the cut edges, would lie on two " +
+        "isolines at once (it joins cones at different isolines, or returns onto another isoline); nothing was written";
+    return classes.range_exceeded() ? RANGE_EXCEEDED : INFEASIBLE;
   }
 
   // the right-hand sides in corner-mesh units, |b| < 2^62

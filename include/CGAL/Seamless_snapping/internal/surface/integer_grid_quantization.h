@@ -38,6 +38,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
+#include <CGAL/Seamless_snapping/internal/surface/isoline_classes.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
@@ -141,6 +142,34 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
   for(int i = 0; i < 4; ++i) { p[i][0] = q[order[i].second][0]; p[i][1] = q[order[i].second][1]; }
 }
 
+// Where the classes (isoline_classes.h) fix a coordinate of the cone's coordinates x_a, x_a + 1 (input position x, an
+// aligned chain through it reaching a placed cone or closing a cycle), the points with that coordinate and the other
+// floor or ceiling of x, after the four of diffuse_rounding() in p[4..7], those within 2 grid cells of x; their number
+inline int aligned_candidates(Isoline_classes& classes, bool aligned, int a, const double x[2], long p[8][2])
+{
+  if(!aligned) return 0;
+  std::vector<long> want[2];
+  for(int c = 0; c < 2; ++c) {
+    const Isoline_classes::Relation r = classes.find(std::size_t(a + c));
+    long value;
+    if(classes.fixed(r.root, value) && std::fabs(double(r.sign) * double(value) + double(r.offset) - x[c]) <= 2)
+      want[c] = {r.sign * value + r.offset};
+    else if(classes.fixed(r.root, value))
+      return 0;                                                   // beyond 2 cells: none
+    else
+      want[c] = {long(std::floor(x[c])), long(std::ceil(x[c]))};
+  }
+  if(want[0].size() == 2 && want[1].size() == 2) return 0;      // nothing fixed: the four of diffuse_rounding()
+  int n = 0;
+  for(long u : want[0])
+    for(long w : want[1]) {
+      bool seen = false;
+      for(int i = 0; i < 4 + n; ++i) seen = seen || (p[i][0] == u && p[i][1] == w);
+      if(!seen) { p[4 + n][0] = u; p[4 + n][1] = w; ++n; }
+    }
+  return n;
+}
+
 // How far (grid cells, Euclidean, at the input's UVs) from a cone's candidate point peel_cut_graph() looks for placed
 // cones on that point: 2, since a cone lies up to sqrt(2) from the integer point it takes. (collapsed_cone_pairs() uses
 // 1, where a path of 2 could go around a third cone and call two far cones a pair; here such a false pair only costs
@@ -154,9 +183,14 @@ constexpr double quantization_cone_reach = 2.0;
 // determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end; `merge_pairs` as
 // in quantize_translations().
 inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                             const std::vector<double>& ubar, const std::vector<int>& corner_of, const std::vector<char>& root,
-                             bool merge_pairs, std::vector<long>& t, std::string& message)
+                             const Align_edges& al, const std::vector<double>& ubar, const std::vector<int>& corner_of,
+                             const std::vector<char>& root, bool merge_pairs, std::vector<long>& t, std::string& message)
 {
+  // the classes of the coordinates that the align edges and the translations known so far tie together
+  // (isoline_classes.h); without align edges they are not needed
+  const bool aligned = !al.edges.empty();
+  Isoline_classes classes(aligned ? 2 * std::size_t(st.n_sectors) : 0);
+  if(aligned) relate_align_edges(cm, st, al, classes);
   std::vector<double> tbar(t.size(), 0.);                       // the input's real translations, at their sources
   for(int e : st.cut_edges) {
     const int h = cm.edge_halfedge[std::size_t(e)];
@@ -177,6 +211,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   for(int v = 0; v < cm.n_vertices; ++v) if(is_ready(v)) ready.push_back(v);
   auto settle = [&](int h) {                                    // t of h set: its opposite, the counts, the queue
     set_opposite_translation(cm, rot, h, t);
+    if(aligned) relate_cut_edge(cm, st, rot, t, h, classes);
     known[std::size_t(cm.edge[h])] = 1;
     for(int v : {cm.target[h], cm.target[cm.opp[h]]})
       if(--open[std::size_t(v)] == 1 && is_ready(v)) ready.push_back(v);
@@ -230,6 +265,16 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
       g = cm.opp[cm.next[g]];
     } while(g != g0);
     return false;
+  };
+  // whether the translation of `crossed` in t contradicts the align edges, given the translations known (an aligned
+  // chain between two cones at different isolines, or across cut edges onto another isoline than its own)
+  auto contradicts_alignment = [&](int crossed) {
+    if(!aligned || classes.conflict()) return false;
+    classes.checkpoint();
+    relate_cut_edge(cm, st, rot, t, crossed, classes);
+    const bool contradiction = classes.conflict();
+    classes.rollback();
+    return contradiction;
   };
   auto choose_rounded = [&](int e) {                          // a free choice: e's translation, rounded
     const int h = cm.edge_halfedge[std::size_t(e)];
@@ -291,17 +336,22 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
           if(!within_exact_integers(std::nearbyint(ubar[2 * std::size_t(s) + std::size_t(c)]),
                                     "cone at vertex " + std::to_string(v) + " lies", message))
             return RANGE_EXCEEDED;
-        long p[4][2];
+        long p[8][2];
         diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
-        // of the four in diffuse_rounding()'s order, the first that does not put v onto the point of a cone placed near
-        // it; the first if all do
-        int chosen = -1;
+        const int n = 4 + aligned_candidates(classes, aligned, 2 * s, &ubar[2 * std::size_t(s)], p);
+        // of the four in diffuse_rounding()'s order (and those on the isolines of aligned chains through v), the first
+        // that contradicts no align edge and does not put v onto the point of a cone placed near it; else the first that
+        // contradicts no align edge; else the first
+        int chosen = -1, consistent = -1;
         placed_K[std::size_t(v)] = (K % 4 + 4) % 4;
-        for(int i = 0; i < 4 && chosen < 0; ++i) {
+        for(int i = 0; i < n && chosen < 0; ++i) {
           if(!solve(p[i])) return RANGE_EXCEEDED;
+          if(contradicts_alignment(crossed)) continue;
+          if(consistent < 0) consistent = i;
           if(!collides(v, g0, crossed, p[i])) chosen = i;
         }
-        if(chosen < 0 && !solve(p[chosen = 0])) return RANGE_EXCEEDED;   // t holds the chosen one's translation
+        if(chosen < 0) chosen = (std::max)(consistent, 0);
+        if(!solve(p[chosen])) return RANGE_EXCEEDED;              // t holds the chosen one's translation
         point[std::size_t(v)] = {{p[chosen][0], p[chosen][1]}};
       } else {
         const long p[2] = {0, 0};
@@ -342,16 +392,17 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   }
 }
 
-// `ubar`: the sector values in grid units. `merge_pairs`: the snap merges collapsed cone pairs afterwards
+// `al`: the align edges. `ubar`: the sector values in grid units. `merge_pairs`: the snap merges collapsed cone pairs afterwards
 // (Snap_options::merge_cone_pairs). `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
 // (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
 inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const std::vector<double>& ubar, bool merge_pairs, std::vector<long>& t, std::string& message)
+                                    const Align_edges& al, const std::vector<double>& ubar, bool merge_pairs,
+                                    std::vector<long>& t, std::string& message)
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   const std::vector<int> corner_of = first_corners(cm);
   const std::vector<char> root = quantization_roots(cm, st, rot, corner_of, t);   // t: all 0 yet
-  return peel_cut_graph(cm, st, rot, ubar, corner_of, root, merge_pairs, t, message);
+  return peel_cut_graph(cm, st, rot, al, ubar, corner_of, root, merge_pairs, t, message);
 }
 
 } // namespace internal

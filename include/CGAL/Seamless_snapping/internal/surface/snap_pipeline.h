@@ -420,7 +420,7 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     // quantize(true) and a map not near an integer-grid map (a translation, a cone or an align edge off the integers):
     // integer translations chosen for it instead of rounded
     report.quantized = opt.quantize && !near_integer_structure(S.cm, S.st, S.rot, S.al, ubar_grid, opt.integer_grid_tolerance);
-    const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, ubar_grid, opt.merge_cone_pairs,
+    const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, S.al, ubar_grid, opt.merge_cone_pairs,
                                                                     translations, message)
                                             : round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance,
                                                                  translations, message, opt.grid_scale, &S.al);
@@ -618,11 +618,12 @@ Status snap_from_start(const Snap_options& opt, Snap_state<TriangleMesh>& S, Sna
 {
   auto failed = [&](Status st) {   // the grid of the messages is that of the normalized UVs
     if(st == INFEASIBLE) message += pinned_infeasible_hint(S.cm, S.pins);
-    if(st == INFEASIBLE && report.quantized && !S.al.edges.empty() && S.pins.empty())   // the cube scaled by 1.3, edges as features
+    if(st == INFEASIBLE && report.quantized && !S.al.edges.empty() && S.pins.empty())
       message += "; the map was quantized (quantize(true)) and has " + std::to_string(S.al.edges.size()) + " align edges: "
-                 "the quantization chooses the cones' integer points without regard to them, and each aligned chain "
-                 "takes the isoline nearest it, so two cones on one aligned chain can end up on different isolines; snap "
-                 "without the alignment (no feature edges, align_boundary(false)) or at another grid scale";
+                 "the quantization puts each cone on the isolines of the aligned chains through it where it can, but "
+                 "the last cone of each part of the cut graph and the translations rounded on its cycles take what the "
+                 "others leave; snap without the alignment (no feature edges, align_boundary(false)) or at another grid "
+                 "scale";
     if(S.cm.uv_exponent != 0)
       message += " (delta and grid values refer to the UVs scaled by 2^" + std::to_string(-S.cm.uv_exponent) + ")";
     return st;
