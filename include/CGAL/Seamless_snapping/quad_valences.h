@@ -33,7 +33,9 @@ struct Quad_valences
   Status status = SUCCESS;                 ///< `SUCCESS`, `INVALID_INPUT` or `FOLD_OVERS` (see `message`)
   std::string message;                     ///< why the valences could not be computed
   std::vector<int> valence;                ///< per vertex, in the order of `vertices(tm)`: the number of integer-grid directions leaving it (see `quad_valences()`)
-  std::vector<std::size_t> border;         ///< border vertices (their valence counts the directions of their closed fan)
+  std::vector<std::size_t> border;         ///< vertices on the border of the quad mesh (their valence counts the directions
+                                           ///< of their closed fan): the border vertices, and the middle vertex of a
+                                           ///< zero-area triangle whose long side is a border edge
   std::vector<std::size_t> fold_overs;     ///< `FOLD_OVERS`: the faces (ranks in `faces(tm)`) whose UV triangle is negatively oriented
   std::vector<std::size_t> zero_area_faces;///< `FOLD_OVERS`: the faces whose UV triangle has zero area (all of them, when one has two corners at one UV point)
 };
@@ -57,7 +59,9 @@ struct Quad_valences
  * (each flipped triangle winds its corners back by 360 degrees in all), which no quad mesh has, and a quad extractor
  * that trusts it leaves holes. A zero-area UV triangle whose three corners are distinct (collinear) is counted as the
  * limit of a thin positively oriented triangle (its middle corner 180 degrees, its others 0), as
- * `extract_quad_mesh()` collapses it onto its longest side; one with two corners at one UV point is refused too.
+ * `extract_quad_mesh()` collapses it onto its longest side; where that side is a border edge, the middle vertex is a
+ * border point of the quad mesh (in `border`, its valence that of a border fan); one with two corners at one UV point
+ * is refused too.
  * So is an interior vertex of valence 1 (an angle sum of 90 degrees: a cone of the map's own, or a cone of 5 quarter
  * turns that the map winds back to 1): no quad mesh has it. `extract_quad_mesh()` refuses the same maps.
  *
@@ -101,7 +105,7 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
   }
   const internal::Quad_valence_result q = internal::quad_valences(cm);
   for(int v = 0; v < cm.n_vertices; ++v)
-    if(q.valence[std::size_t(v)] == 1 && !cm.vertex_on_border[std::size_t(v)]) {
+    if(q.valence[std::size_t(v)] == 1 && !q.on_border[std::size_t(v)]) {
       r.status = INVALID_INPUT;
       r.message = "vertex " + std::to_string(v) + " has a UV angle sum of 1 quarter turn (a cone of valence 1): the quad "
                   "there would have its two sides at the cone on one edge, a corner twice; no quad mesh has it "

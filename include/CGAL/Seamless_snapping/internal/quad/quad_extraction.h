@@ -68,7 +68,9 @@ struct Quad_extraction
 inline Map_facts map_facts(const Corner_mesh& cm)
 {
   Map_facts facts;
-  facts.valence = quad_valences(cm).valence;
+  Quad_valence_result q = quad_valences(cm);
+  facts.valence.swap(q.valence);
+  facts.on_border.swap(q.on_border);
   facts.twice_area = twice_uv_area(cm);
   std::vector<char> used(std::size_t(cm.n_vertices), 0);
   for(int h = 0; h < cm.n_halfedges; ++h)
@@ -76,7 +78,7 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   std::size_t vertices = 0;
   for(int v = 0; v < cm.n_vertices; ++v) {
     vertices += used[std::size_t(v)];
-    facts.cones += !cm.vertex_on_border[v] && used[std::size_t(v)] && facts.valence[std::size_t(v)] != 4 ? 1 : 0;
+    facts.cones += !facts.on_border[std::size_t(v)] && used[std::size_t(v)] && facts.valence[std::size_t(v)] != 4 ? 1 : 0;
   }
   std::vector<char> walked(std::size_t(cm.n_halfedges), 0);
   for(int h = 0; h < cm.n_halfedges; ++h) {
@@ -143,16 +145,17 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
          "that point (libQEx merges such pairs too), or choose integer translations that keep the cones apart";
 }
 
-// Every interior vertex of quad valence other than 4 must lie on an integer point (a field cone does in an IGM;
-// a vertex of 8 quarter turns need not) and must not be of valence 1 (its cell would have a corner twice). Where
-// such a vertex lies next to a collapsed cone pair, the message says so; a cone of valence 1 in a map where no vertex
-// winds twice is most likely the map's own singularity, and the message says that instead.
-inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<int>& edge_k,
-                          std::string& message)
+// Every vertex inside the quad mesh (not `on_border`, quad_valences()) of quad valence other than 4 must lie on an
+// integer point (a field cone does in an IGM; a vertex of 8 quarter turns need not) and must not be of valence 1 (its
+// cell would have a corner twice). Where such a vertex lies next to a collapsed cone pair, the message says so; a cone
+// of valence 1 in a map where no vertex winds twice is most likely the map's own singularity, and the message says
+// that instead.
+inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<char>& on_border,
+                          const std::vector<int>& edge_k, std::string& message)
 {
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h], q = valence[std::size_t(v)];
-    if(cm.is_border_halfedge(h) || cm.vertex_on_border[v] || q == 4) continue;
+    if(cm.is_border_halfedge(h) || on_border[std::size_t(v)] || q == 4) continue;
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
     if(on_integer && q != 1) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
@@ -211,7 +214,7 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   r.input_boundary_loops = facts.boundary_loops;
   r.cones = facts.cones;
   r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
-  return check_cones(cm, facts.valence, edge_k, r.message);
+  return check_cones(cm, facts.valence, facts.on_border, edge_k, r.message);
 }
 
 // The 3D point of an integer point p: the combination of the vertices of its edge or face with the

@@ -51,7 +51,8 @@ struct Map_facts
   std::size_t boundary_loops = 0;
   CGAL::Mpzf twice_area = 0;         // twice the UV area in grid units, exact
   std::vector<int> valence;          // per vertex: quad_valences()
-  std::size_t cones = 0;             // interior vertices of valence other than 4
+  std::vector<char> on_border;       // per vertex: quad_valences()
+  std::size_t cones = 0;             // vertices inside the quad mesh (not on_border) of valence other than 4
 };
 
 inline void analyze_quad_soup(const std::vector<std::array<int, 4> >& quads, Quad_mesh_report& r, std::string& first)

@@ -37,7 +37,11 @@
 // no quad mesh has (quad_valences() refuses such maps). A zero-area triangle with three distinct
 // corners is taken as the limit of a thin positive one (as the quad extraction collapses it,
 // quad/collapsed_faces.h): its middle corner turns by +180 degrees, which crosses exactly 2 quadrant
-// boundaries from any direction, its two others by 0.
+// boundaries from any direction, its two others by 0. Where its long side is a border edge, the face folds onto the
+// border and its middle vertex, interior in the mesh, is a border point of the quad mesh (on_border): the rest of its fan
+// is a border fan, whose first edge runs along the long side: its middle corner counts 1 if the long side is
+// axis-parallel, else 0 (counted 2, a point of a straight axis-parallel border was called valence 4 where the quad mesh has 3, and
+// the extraction's own check failed on it, 2026-11-30).
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
@@ -61,7 +65,9 @@ inline int valence_of_rotation_sum(int K, bool six)
 struct Quad_valence_result
 {
   std::vector<int> valence;          // per vertex (Corner_mesh numbering)
-  std::vector<int> border;           // border vertices
+  std::vector<char> on_border;       // per vertex: on the border of the quad mesh (a border vertex of the mesh, or the
+                                     // middle vertex of a zero-area face whose long side is a border edge)
+  std::vector<int> border;           // the vertices with on_border
 };
 
 // q(b - a): the quadrant of the vector from a to b (-1 if a == b)
@@ -111,6 +117,7 @@ inline Quad_valence_result quad_valences(const Corner_mesh& cm)
 {
   Quad_valence_result r;
   r.valence.assign(cm.n_vertices, 0);
+  r.on_border = cm.vertex_on_border;
   for(int h = 0; h < cm.n_halfedges; ++h) {
     if(cm.is_border_halfedge(h)) continue;
     const int v = cm.target[h];
@@ -118,14 +125,20 @@ inline Quad_valence_result quad_valences(const Corner_mesh& cm)
     if(!corner_quarter_crossings(cm, h, c)) {        // the middle corner of collinear ones (no zero-length edge)
       CGAL_assertion((cm.u[h] != cm.u[cm.next[h]] || cm.v[h] != cm.v[cm.next[h]]) &&
                      (cm.u[h] != cm.u[cm.prev[h]] || cm.v[h] != cm.v[cm.prev[h]]));
-      c = 2;
+      const int l = cm.prev[h];                      // the long side
+      if(cm.is_border_halfedge(cm.opp[l])) {
+        r.on_border[std::size_t(v)] = 1;
+        c = cm.u[l] == cm.u[cm.prev[l]] || cm.v[l] == cm.v[cm.prev[l]] ? 1 : 0;
+      } else {
+        c = 2;
+      }
     }
     r.valence[v] += c;
     const int a = cm.next[h];                        // v -> target(a): the first edge of a border fan
     if(cm.is_border_halfedge(cm.opp[a]) && (cm.u[a] == cm.u[h] || cm.v[a] == cm.v[h])) ++r.valence[v];
   }
   for(int v = 0; v < cm.n_vertices; ++v)
-    if(cm.vertex_on_border[v]) r.border.push_back(v);
+    if(r.on_border[std::size_t(v)]) r.border.push_back(v);
   return r;
 }
 
