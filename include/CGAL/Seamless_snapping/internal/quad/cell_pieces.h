@@ -37,6 +37,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -199,6 +201,15 @@ inline void add_face_pieces(const Corner_mesh& cm, int f, int h0, const std::vec
     }
 }
 
+inline Status out_of_memory(std::size_t candidates, Cell_pieces& out, std::string& message)
+{
+  out = Cell_pieces();
+  message = "the faces' UV bounding boxes hold " + std::to_string(candidates) + " unit cells of the integer grid, more " +
+            "than this machine's memory can hold (about 290 bytes per quad); use a smaller grid_scale, or a smaller " +
+            "max_grid_cells to be told so before any memory is taken";
+  return RANGE_EXCEEDED;
+}
+
 // Collects the pieces of every face but the collapsed ones. Preconditions: the map is fold-free (its zero-area
 // faces collapsed), its UVs are in grid units with |u|, |v| < 2^30. RANGE_EXCEEDED (nothing collected) when the
 // bounding boxes of the faces hold more than `max_candidates` cells in all (grid points for the collapsed faces).
@@ -212,29 +223,37 @@ inline Status collect_cell_pieces(const Corner_mesh& cm, const std::vector<int>&
     const int h0 = face_halfedge[std::size_t(f)];
     const Uv_point t[3] = {corner_point(cm, h0), corner_point(cm, cm.next[h0]), corner_point(cm, cm.prev[h0])};
     std::int64_t i0, i1, j0, j1;
+    std::size_t n;                                // at most 2^62 (|u|, |v| < 2^30)
     if(collapsed[std::size_t(f)]) {               // the grid points of the box, which add_collapsed_aliases() visits
       box_grid_points(t, i0, i1, j0, j1);
-      candidates += std::size_t((std::max)(i1 - i0 + 1, std::int64_t(0))) * std::size_t((std::max)(j1 - j0 + 1, std::int64_t(0)));
+      n = std::size_t((std::max)(i1 - i0 + 1, std::int64_t(0))) * std::size_t((std::max)(j1 - j0 + 1, std::int64_t(0)));
     } else {
       candidate_cells(t, i0, i1, j0, j1);
-      candidates += std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
+      n = std::size_t(i1 - i0 + 1) * std::size_t(j1 - j0 + 1);
     }
-    if(candidates > max_candidates) {
+    // (compared before the sum: with max_candidates near 2^64 the sum wrapped around to 0 and passed)
+    if(n > max_candidates - candidates || (candidates += n) > max_candidates) {
       message = "the faces' UV bounding boxes hold more than " + std::to_string(max_candidates) + " unit cells of the " +
                 "integer grid (max_grid_cells; reached at face " + std::to_string(f) + "): the quad mesh would be too " +
                 "large; use a smaller grid_scale, or a larger max_grid_cells (about 290 bytes of memory per quad)";
       return RANGE_EXCEEDED;
     }
   }
-  out.first.reserve(std::size_t(cm.n_faces) + 1);
-  out.cell.reserve(candidates); out.face.reserve(candidates); out.corner.reserve(candidates); out.cut.reserve(candidates);
-  out.glue.reserve(candidates);
-  std::vector<unsigned char> mask;
-  for(int f = 0; f < cm.n_faces; ++f) {
+  try {                                         // a max_grid_cells beyond the memory (e.g. 2^62 cells)
+    out.first.reserve(std::size_t(cm.n_faces) + 1);
+    out.cell.reserve(candidates); out.face.reserve(candidates); out.corner.reserve(candidates); out.cut.reserve(candidates);
+    out.glue.reserve(candidates);
+    std::vector<unsigned char> mask;
+    for(int f = 0; f < cm.n_faces; ++f) {
+      out.first.push_back(out.cell.size());
+      if(!collapsed[std::size_t(f)]) add_face_pieces(cm, f, face_halfedge[std::size_t(f)], collapsed, out, mask);
+    }
     out.first.push_back(out.cell.size());
-    if(!collapsed[std::size_t(f)]) add_face_pieces(cm, f, face_halfedge[std::size_t(f)], collapsed, out, mask);
+  } catch(const std::bad_alloc&) {
+    return out_of_memory(candidates, out, message);
+  } catch(const std::length_error&) {
+    return out_of_memory(candidates, out, message);
   }
-  out.first.push_back(out.cell.size());
   return SUCCESS;
 }
 
