@@ -316,8 +316,9 @@ r = json.load(open(late))
 check(rc == 1 and not os.path.exists(vout) and r["status"] != "SUCCESS" and r["output"] is None,
       "--vval in a missing directory: exit 1, no OUT, the report says why: %d %s %s" % (rc, text, r["status"]))
 # --quantize with align edges: the cube in the usual cross layout (its edges as features, --sharp-angle 60) scaled by 1.3,
-# near no integer-grid map: the quantization puts the cones of one aligned edge on different isolines; INFEASIBLE with
-# that said (it named a row of the node system and nothing else), nothing written
+# near no integer-grid map: at grid scale 8 the quantization put the two cones of one aligned edge on different isolines
+# (INFEASIBLE, a row of the node system named); now each cone takes a point on the isolines of the chains through it:
+# an exact map of a box, fold-free, written
 cube = os.path.join(work, "cube13.obj")
 with open(cube, "w") as f:
     for x, y, z in [(-1, -1, 1), (1, -1, 1), (-1, 1, 1), (1, 1, 1), (-1, 1, -1), (1, 1, -1), (-1, -1, -1), (1, -1, -1)]:
@@ -329,12 +330,21 @@ with open(cube, "w") as f:
                  "1/9 8/8 2/10", "2/2 8/11 4/4", "4/4 8/11 6/12", "7/13 1/1 5/14", "5/14 1/1 3/3"]:
         f.write("f %s\n" % face)
 cube_out, cube_report = os.path.join(work, "cube13_snapped.obj"), os.path.join(work, "cube13.json")
-rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--sharp-angle", "60", "--report", cube_report)
+rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--sharp-angle", "60", "--grid-scale", "8", "--report",
+               cube_report)
 report = json.load(open(cube_report))
-check(rc == 1 and report["status"] == "INFEASIBLE" and report["quantized"] and "align edges" in report["message"] and
-      not os.path.exists(cube_out), "--quantize with align edges: INFEASIBLE, said why: %d %s" % (rc, text))
+check(rc == 0 and report["status"] == "SUCCESS" and report["quantized"] and report["align_edges"] == 12 and
+      report["flips_after_repair"] == 0 and report["degenerate_after_repair"] == 0 and os.path.exists(cube_out),
+      "--quantize with align edges: an exact box: %d %s" % (rc, text))
+# its 8 vertices are cones: each corner on an integer point of the grid at scale 8, exactly
+check(all((8 * Fraction(float(c))).denominator == 1 for row in records(cube_out, "vt") for c in row),
+      "the quantized box: every corner UV on an integer point at grid scale 8")
 rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--report", cube_report)
 check(rc == 0 and json.load(open(cube_report))["status"] == "SUCCESS", "the cube quantized without features: %d %s" % (rc, text))
+for bad in ["3", "0", "nan"]:   # not a power of two: a command-line error (it was exit 1 from the snap), also without --integer-grid
+    rc, text = run(src, os.path.join(work, "bad_scale.obj"), "--grid-scale", bad)
+    check(rc == 2 and "power of two" in text and not os.path.exists(os.path.join(work, "bad_scale.obj")),
+          "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 

@@ -152,8 +152,7 @@ check(rc == 0 and "verified" in text and os.path.exists(out) and rep.get("snap",
 # 2. refusals: exit 1, nothing written, the reason on stderr (and in the report)
 folds = os.path.join(work, "folds.obj")
 write_fold_over_grid(folds)
-for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, ["--no-untangle"], "FOLD_OVERS", "quad_mesh"),
-                                 (parallelogram, ["--grid-scale", "3"], "power of two", "snap")]:
+for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, ["--no-untangle"], "FOLD_OVERS", "quad_mesh")]:
     out = os.path.join(work, "refused.obj")
     rc, text = run(src, out, "--report", report, *args)
     check(rc == 1 and words in text and not os.path.exists(out), "refused (%s): exit %d %s" % (words, rc, text))
@@ -162,6 +161,13 @@ for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, 
     check(r[where]["status"] != "SUCCESS", "refused (%s): the report says so" % words)
     if words == "FOLD_OVERS":
         check(len(r["quad_mesh"]["fold_overs"]) > 0, "FOLD_OVERS: the report lists the fold-overs")
+
+# a grid scale that is not a power of two is a command-line error (exit 2, as a value that is not a number; it was
+# exit 1, refused by the snap), nothing written
+for bad in ["3", "0", "-1", "nan", "inf"]:
+    out = os.path.join(work, "refused.obj")
+    rc, text = run(parallelogram, out, "--grid-scale", bad)
+    check(rc == 2 and "power of two" in text and not os.path.exists(out), "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))
 
 # the fold-over grid untangled (the default): a valid quad mesh of the 3 x 3 grid, 9 quads, 16 vertices
 out = os.path.join(work, "untangled.obj")

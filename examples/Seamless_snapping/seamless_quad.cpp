@@ -175,8 +175,10 @@ int main(int argc, char** argv)
     else if(a == "--quantize") quantize = true;
     else if(a == "--grid-scale") {
       char* end = nullptr;
-      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
-        std::cerr << "seamless_quad: --grid-scale needs a number\n" << usage_text; return 2;
+      int exponent;
+      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !SS::internal::grid_scale_exponent(grid_scale, exponent)) {
+        std::cerr << "seamless_quad: --grid-scale needs a power of two (1, 2, 4, 0.5, ...)\n" << usage_text; return 2;
       }
       ++i;
     }

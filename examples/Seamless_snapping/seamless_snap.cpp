@@ -97,7 +97,8 @@ static const char* help_text =
   "                       other around a vertex, or when a cone's fixed point is not an integer\n"
   "                       point. The result is checked with is_exact_integer_grid_map().\n"
   "  --grid-scale S       the map's integer grid is at multiples of 1/S in UV (S a power of two,\n"
-  "                       applied exactly); with --integer-grid\n"
+  "                       applied exactly); with --integer-grid, and the grid cell that\n"
+  "                       --max-untangle-change and the report's changes in cells are measured in\n"
   "  --features FILE      feature edges to align (made exactly parallel to the u or v axis; with\n"
   "                       --integer-grid on integer isolines): one edge per line, two vertex indices\n"
   "                       separated by blanks, 0-based in the order of the mesh's vertices (the file's\n"
@@ -639,8 +640,10 @@ int main(int argc, char** argv)
     }
     else if(a == "--grid-scale") {
       char* end = nullptr;
-      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0')) {
-        std::cerr << "seamless_snap: --grid-scale needs a number\n" << usage_text; return 2;
+      int exponent;
+      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
+         !SS::internal::grid_scale_exponent(grid_scale, exponent)) {
+        std::cerr << "seamless_snap: --grid-scale needs a power of two (1, 2, 4, 0.5, ...)\n" << usage_text; return 2;
       }
       ++i;
     }
