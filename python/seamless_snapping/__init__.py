@@ -4,7 +4,7 @@ Satisfaction for Truly Seamless Parametrization"), Python bindings of the C++/CG
 Matrices follow libigl's convention: V (#V x 3 float), F (#F x 3 int, counter-clockwise),
 UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
 
-    V, F, UV, FUV = seamless_snapping.read_obj("in.obj")    # weld=True for cut meshes
+    V, F, UV, FUV = seamless_snapping.read_obj("in.obj")    # weld=True: the rows of a cut mesh's seams merged
     UV2, FUV2, report = seamless_snapping.snap(V, F, UV, FUV)
     d = seamless_snapping.diagnose_seamlessness(V, F, UV, FUV)           # where the input is not seamless, exactly
     seamless_snapping.write_obj("out.obj", V, F, UV2, FUV2)
@@ -12,6 +12,10 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
     graph = seamless_snapping.motorcycle_graph(V, F, UV2, FUV2)   # exact isoline tracing (Sec. 6.2)
     QV, QF, report = seamless_snapping.extract_quad_mesh(V, F, UV3, FUV3)   # the quad mesh of an exact integer-grid map
     valence, report = seamless_snapping.quad_valences(V, F, UV3, FUV3)     # per vertex, e.g. for libQEx: write_vval()
+
+The functions that read a mesh (V, F, UV, FUV) weld a cut mesh by default (weld=None: is_cut_mesh(), the border edges
+in pairs at bit-identical 3D points, as libigl and Directional write their maps; its seams would otherwise be borders),
+as the command line does; weld=True / False weld or not.
 
 snap, project, extract_quad_mesh and quad_valences return new arrays only when they succeed (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
@@ -82,6 +86,30 @@ def _mesh_arrays(V, F, UV, FUV):
             np.ascontiguousarray(UV, dtype=np.float64), _integer_array(FUV, "FUV", "row indices of UV"))
 
 
+def is_cut_mesh(V, F):
+    """True iff two or more border edges of (V, F) lie on other border edges at bit-identical 3D points: a cut mesh
+    (libigl and Directional write their parametrizations so, the vertices duplicated along the seams), whose seams
+    are borders unless its vertices are welded (the C++ IO::cut_mesh_test(); -0 and 0 differ, as in the weld)."""
+    V = np.ascontiguousarray(V, dtype=np.float64)
+    F = _integer_array(F, "F", "row indices of V")
+    if F.size == 0 or V.ndim != 2 or V.shape[1] != 3 or F.ndim != 2 or F.shape[1] != 3 or F.min() < 0 or F.max() >= len(V):
+        return False
+    position = np.unique(V.view(np.uint64), axis=0, return_inverse=True)[1].reshape(-1)   # per row of V, its point
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    rows, count = np.unique(edges, axis=0, return_counts=True)
+    border = np.sort(position[rows[count == 1]], axis=1)            # the border edges, by their points
+    if len(border) < 2:
+        return False
+    count = np.unique(border, axis=0, return_counts=True)[1]
+    return int(count[count > 1].sum()) >= 2
+
+
+def _weld(arrays, weld):
+    """The weld of the functions that read a mesh (V, F, ...): weld=None (their default) welds a cut mesh
+    (is_cut_mesh()), as the command line does; True / False weld or not."""
+    return is_cut_mesh(arrays[0], arrays[1]) if weld is None else bool(weld)
+
+
 def read_obj(path, *, weld=False, threads=1):
     """Reads an OBJ file with per-corner texture coordinates (`f v/vt ...`, triangles) with the package's reader.
 
@@ -108,7 +136,7 @@ def write_obj(path, V, F, UV, FUV):
     return _core.write_obj(os.fspath(path), Vc, Fc, UVc, FUVc)
 
 
-def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, use_reduced_system=True,
+def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, use_reduced_system=True,
          rotation_tolerance=1.0, alignment_tolerance=1e-3, minimal_change=True, integer_grid_map=False,
          grid_scale=1.0, untangle=None, max_untangle_change=float("inf"), merge_cone_pairs=False,
          separate_cone_pairs=False, quantize=False, threads=1, raise_on_failure=True):
@@ -116,7 +144,9 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
 
     Returns (UV_out, FUV_out, report): FUV_out equals FUV and UV_out equals UV except for the moved rows
     (rows shared by corners that were snapped apart are split; see the C++ reference). `report` is the
-    C++ Snap_report as a dict. `weld=True` merges bit-identical vertices first (cut meshes).
+    C++ Snap_report as a dict. `weld=True` merges bit-identical vertices first; the default (None) welds a cut mesh
+    (is_cut_mesh(): its seams would otherwise be borders, and the map be called "already exactly seamless" with no cut
+    edge), as the command line does, and report["welded_automatically"] says so; weld=False never welds.
     `minimal_change=False` snaps the input itself (the paper's point) instead of the L2-closest point of the
     constraints; `integer_grid_map=True` snaps to an exact integer-grid map (integer translations, cones on
     integer points, aligned edges on integer isolines) whose grid is at multiples of 1/`grid_scale` (a power of 2).
@@ -147,34 +177,45 @@ def snap(V, F, UV, FUV, *, weld=False, repair_flips=True, align_boundary=True, u
     (report["quantized"]); the map moves by up to a few grid cells, so choose a grid_scale whose cells are smaller than
     the distances between the cones. `threads=2` (or more; 0 = the machine's cores) runs the steps
     that do not depend on each other on two threads (the C++ number_of_threads): the same results, bit for bit.
+    `quantize`, `merge_cone_pairs` and `separate_cone_pairs` without `integer_grid_map` raise ValueError (as the
+    command line refuses them: they act on integer translations only; the C++ function ignores them).
     """
+    for name, value in (("quantize", quantize), ("merge_cone_pairs", merge_cone_pairs),
+                        ("separate_cone_pairs", separate_cone_pairs)):
+        if value and not integer_grid_map:
+            raise ValueError("%s=True needs integer_grid_map=True (it acts on the integer translations of an "
+                             "integer-grid map); without it nothing would change" % name)
     if untangle is None:
         untangle = integer_grid_map
-    uv, fuv, text = _core.snap(*_mesh_arrays(V, F, UV, FUV), weld, repair_flips, align_boundary,
+    arrays = _mesh_arrays(V, F, UV, FUV)
+    welded_automatically = weld is None and _weld(arrays, None)
+    uv, fuv, text = _core.snap(*arrays, _weld(arrays, weld) if weld is not None else welded_automatically,
+                               repair_flips, align_boundary,
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
                                bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
                                float(max_untangle_change), bool(merge_cone_pairs), bool(separate_cone_pairs),
                                bool(quantize), _thread_count(threads))
     report = json.loads(text)
+    report["welded_automatically"] = welded_automatically
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return uv, fuv, report
 
 
-def is_exactly_seamless(V, F, UV, FUV, *, weld=False):
+def is_exactly_seamless(V, F, UV, FUV, *, weld=None):
     """True iff every seam transition of the corner map is a rotation by k*90 degrees plus a translation,
     exactly (rational arithmetic), and aligned boundaries are axis-parallel exactly."""
-    return bool(_core.is_exactly_seamless(*_mesh_arrays(V, F, UV, FUV), weld))
+    return bool(_core.is_exactly_seamless(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld)))
 
 
-def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=False, grid_scale=1.0):
+def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=None, grid_scale=1.0):
     """True iff the corner map is exactly seamless, every cut edge has an integer translation, every cone
     sits on an integer point and aligned edges lie on integer isolines, all exactly (rational arithmetic),
     after multiplying the UVs by `grid_scale` (a power of 2)."""
-    return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), weld, float(grid_scale)))
+    return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), float(grid_scale)))
 
 
-def diagnose_seamlessness(V, F, UV, FUV, *, weld=False, align_boundary=True, rotation_tolerance=1.0,
+def diagnose_seamlessness(V, F, UV, FUV, *, weld=None, align_boundary=True, rotation_tolerance=1.0,
                           alignment_tolerance=1e-3, integer_grid_map=False, grid_scale=1.0):
     """Checks the map, as it is, against exactly the constraint rows that snap() with the same keywords would enforce
     (rotations k fitted to it, transitions (Eq. 4), boundary alignment (Eq. 5), with integer_grid_map the integer
@@ -188,7 +229,7 @@ def diagnose_seamlessness(V, F, UV, FUV, *, weld=False, align_boundary=True, rot
     "transition or alignment", "connection"), "edge" (its two rows of V; None for a connection row), "corners"
     ([row of F, corner 0-2] per sector of the row), "residual" (a fractions.Fraction, exact, in UV units) and
     "residual_double". With weld=True the rows of V at one position are one vertex (cut meshes)."""
-    d = _core.diagnose_seamlessness(*_mesh_arrays(V, F, UV, FUV), bool(weld), bool(align_boundary),
+    d = _core.diagnose_seamlessness(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), bool(align_boundary),
                                     float(rotation_tolerance), float(alignment_tolerance), bool(integer_grid_map),
                                     float(grid_scale))
     if "residual" in d:
@@ -289,7 +330,7 @@ def _exact_polyline(trace):
     return trace
 
 
-def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_tolerance=1.0, exact_uv=True):
+def motorcycle_graph(V, F, UV, FUV, *, weld=None, max_faces=0, rotation_tolerance=1.0, exact_uv=True):
     """The motorcycle graph of the per-corner UV map (UV, FUV) of (V, F) (Sec. 6.2 of the paper): the
     separatrices from every cone of n quarter turns (its n axis rays) and from every border corner (the axis
     rays strictly inside its fan), traced exactly (rational arithmetic) and together in exact time (unit speed in
@@ -319,7 +360,8 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
     separatrices' "uv_exact" (their "uv" stays): on the 302K-face map of ../shared/large, 535K Fractions that take
     about 1.6 s to make.
     """
-    d = _core.motorcycle_graph(*_mesh_arrays(V, F, UV, FUV), bool(weld), _bounded_index(max_faces, "max_faces", 0, 2 ** 62),
+    d = _core.motorcycle_graph(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld),
+                               _bounded_index(max_faces, "max_faces", 0, 2 ** 62),
                                _tolerance(rotation_tolerance, "rotation_tolerance"),
                                bool(exact_uv))
     if exact_uv:
@@ -328,7 +370,7 @@ def motorcycle_graph(V, F, UV, FUV, *, weld=False, max_faces=0, rotation_toleran
     return d
 
 
-def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_faces=0, rotation_tolerance=1.0):
+def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_faces=0, rotation_tolerance=1.0):
     """Traces one isoline exactly from the vertex F[face, corner], along `direction` ("+u", "+v", "-u", "-v",
     or 0..3) in the UV chart of `face` (the sector of that corner), until a cone, the border, a closed loop,
     the face limit, or an inconsistency of the map. A face that is not a row of F, a corner other than 0, 1, 2 or
@@ -345,14 +387,15 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=False, max_fac
       "points": (#segments + 1, 3) the polyline in 3D (exact barycentric coordinates, rounded to doubles).
     """
     d = _core.trace_isoline(*_mesh_arrays(V, F, UV, FUV), _bounded_index(face, "face", -2 ** 62, 2 ** 62),
-                            _bounded_index(corner, "corner", -2 ** 31, 2 ** 31 - 1), _direction(direction), bool(weld),
+                            _bounded_index(corner, "corner", -2 ** 31, 2 ** 31 - 1), _direction(direction),
+                            _weld((V, F), weld),
                             _bounded_index(max_faces, "max_faces", 0, 2 ** 62), _tolerance(rotation_tolerance, "rotation_tolerance"))
     if d["status"] == "SUCCESS":
         _exact_polyline(d)
     return d
 
 
-def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cells=None, raise_on_failure=True):
+def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cells=None, raise_on_failure=True):
     """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
     snap(..., integer_grid_map=True)): its vertices are the integer points of the map (UV times `grid_scale`, a
     power of 2), its edges the unit segments of the integer isolines, its faces the unit cells, all decided exactly.
@@ -386,7 +429,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cel
     n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
     if not 0 <= n < 2**64:
         raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
-    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), bool(weld), float(grid_scale), n)
+    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), float(grid_scale), n)
     report = json.loads(text)
     report.update(origins)
     if "patches" in report:
@@ -396,7 +439,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=False, grid_scale=1.0, max_grid_cel
     return QV, QF, report
 
 
-def quad_valences(V, F, UV, FUV, *, weld=False, raise_on_failure=True):
+def quad_valences(V, F, UV, FUV, *, weld=None, raise_on_failure=True):
     """Per row of V, the number of integer-grid directions (the axis directions of the charts) that leave its vertex
     into the surface, decided exactly (C++ quad_valences()): the valence of the vertex in the quad mesh of an
     integer-grid map wherever it is an integer point (extract_quad_mesh()): at an interior vertex its UV angle sum in
@@ -417,7 +460,7 @@ def quad_valences(V, F, UV, FUV, *, weld=False, raise_on_failure=True):
     zero-area triangle with three distinct collinear corners counts as the limit of a thin positive one, as
     extract_quad_mesh() collapses it.
     """
-    report = _core.quad_valences(*_mesh_arrays(V, F, UV, FUV), bool(weld))
+    report = _core.quad_valences(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld))
     valence = report.pop("valence", None)
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

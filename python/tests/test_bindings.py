@@ -1011,6 +1011,67 @@ def test_quantize_aligned_side_between_isolines():
     assert len(set(right.tolist())) == 1 and right[0] in (8.0, 9.0)
 
 
+def test_cut_mesh_welded_by_default():
+    # a cut mesh (the faces above the cut with their own copies of the vertices, bit-identical positions, as libigl and
+    # Directional write maps): read without welding its seam was a border, and snap() said SUCCESS, "already exactly
+    # seamless" with 0 cut edges; now welded by default (weld=None), as the command line does
+    n = 8
+    V, F, UV, FUV = cut_grid(n=n, noise=1e-9)
+    Vc, Fc = np.vstack([V, V]), F.copy()
+    Fc[len(F) // 2:] += len(V)                            # the faces of rows j >= n / 2
+    assert ss.is_cut_mesh(Vc, Fc) and not ss.is_cut_mesh(V, F)
+    UV2, FUV2, r = ss.snap(Vc, Fc, UV, FUV)
+    _, _, r1 = ss.snap(V, F, UV, FUV)                       # the mesh itself: not a cut mesh, nothing welded
+    assert r["welded_automatically"] and not r1["welded_automatically"] and r["cut_edges"] == r1["cut_edges"] > n
+    assert ss.is_exactly_seamless(Vc, Fc, UV2, FUV2) and not ss.is_exactly_seamless(Vc, Fc, UV, FUV)
+    _, _, r0 = ss.snap(Vc, Fc, UV, FUV, weld=False)         # asked not to weld: the seam is a border
+    assert not r0["welded_automatically"] and r0["cut_edges"] < r1["cut_edges"]
+    assert r0["cut_edges"] + n == r1["cut_edges"]             # (every edge between two faces' own UV rows is a cut edge)
+
+
+def test_collapsed_face_on_border():
+    # the square [0, 2] x [0, 1] as 4 triangles, an interior vertex (1) at the UV point (1, 0) of the border edge 0-2:
+    # the face (1, 0, 2) has zero UV area and its long side on the border, so the quad mesh has vertex 1 on its border
+    # with degree 3. quad_valences() said 4 (the middle corner counted as 180 degrees inside) and the extraction's own
+    # check refused the map with EXACTNESS_CHECK_FAILED ("internal error")
+    F = np.array([[0, 1, 4], [1, 3, 4], [1, 2, 3], [1, 0, 2]])
+    V = np.array([[0, 0, 0], [1, 0, -0.3], [2, 0, 0], [2, 1, 0], [0, 1, 0]], float)
+    QV, QF, r = ss.extract_quad_mesh(V, F, V[:, :2], F)
+    check_quad_mesh(V, F, V[:, :2], F, QV, QF, r, closed=False)
+    valence, _ = check_valences_against_quads(V, F, V[:, :2], F, QF, r)
+    assert len(QF) == 2 and valence[1] == 3
+
+
+def test_max_grid_cells_near_2_64():
+    # faces whose UV boxes hold 2^62 cells each: with max_grid_cells = 2^64 - 1 their count wrapped around to 0 and
+    # passed, and the allocation threw (MemoryError / ValueError); now RANGE_EXCEEDED, nothing returned
+    a = 2.0 ** 30 - 0.5
+    V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+    UV = np.array([[-a, -a], [a, -a], [a, a], [-a, a]])
+    F1 = np.array([[0, 1, 2], [0, 2, 3]])
+    for copies in (2, 1):                                  # 2^64 cells (the sum), 2^63 (beyond any memory)
+        F = np.vstack([F1 + 4 * i for i in range(copies)])
+        QV, QF, r = ss.extract_quad_mesh(np.vstack([V + 5 * i for i in range(copies)]), F, np.vstack([UV] * copies), F,
+                                         max_grid_cells=2 ** 64 - 1, raise_on_failure=False)
+        assert r["status"] == "RANGE_EXCEEDED" and QV is None and QF is None
+
+
+def test_integer_grid_options_need_integer_grid_map():
+    # quantize, merge_cone_pairs and separate_cone_pairs act on integer translations: without integer_grid_map they
+    # changed nothing and the report said nothing (SUCCESS, quantized False); refused like the command line's flags
+    n = 4
+    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
+    UV = np.array([[1.7 * i, 1.7 * j] for j in range(n) for i in range(n)])
+    F = np.array([f for j in range(n - 1) for i in range(n - 1) for a in [j * n + i]
+                  for f in ([a, a + 1, a + n + 1], [a, a + n + 1, a + n])])
+    before = UV.copy()
+    for name in ("quantize", "merge_cone_pairs", "separate_cone_pairs"):
+        with pytest.raises(ValueError, match=name + "=True needs integer_grid_map=True"):
+            ss.snap(V, F, UV, F, **{name: True})
+        assert np.array_equal(UV, before)
+        assert ss.snap(V, F, UV, F, **{"integer_grid_map": True, "quantize": True, name: True})[2]["quantized"]
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
