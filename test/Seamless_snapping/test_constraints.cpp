@@ -73,6 +73,7 @@
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
+#include <CGAL/Seamless_snapping/internal/surface/isoline_classes.h>
 #include <CGAL/Seamless_snapping/internal/untangling/region_problem.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangler.h>
 #include <CGAL/Seamless_snapping/internal/untangling/untangling_energy.h>
@@ -746,6 +747,48 @@ static void check_quad_valences(const Mesh& m, UV_map uv, const SS::Snap_report&
 // cut a part off its root: INFEASIBLE, the translations around vertex 4211 composing to (1, 1). The result also has
 // zero-length cut edges at half-integer points, which is_exact_integer_grid_map() must read with the rotations that
 // leave their interior ends regular (test_zero_length_cut_edge())
+// The classes of the integer-grid rows (isoline_classes.h): x = +-x' + c along the links, a cycle that fixes a class
+// (x = -x + c: c / 2) or contradicts it (x = x + c, c != 0; an odd c; two fixed values), and rollback() undoing every
+// change of a tentative row, path compression included
+static void test_isoline_classes()
+{
+  using CGAL::Seamless_snapping::internal::Isoline_classes;
+  auto value = [](Isoline_classes& c, std::size_t a, long& x) {   // the value of a where its class is fixed
+    const Isoline_classes::Relation r = c.find(a);
+    long root;
+    if(!c.fixed(r.root, root)) return false;
+    x = r.sign * root + r.offset;
+    return true;
+  };
+  Isoline_classes c(6);
+  c.relate(1, -1, 0, 5);                   // x1 = -x0 + 5
+  c.relate(2, 1, 1, -2);                   // x2 = x1 - 2 = -x0 + 3
+  c.relate(3, 1, 2, 0);                    // x3 = x2
+  long x;
+  assert(!c.conflict() && !value(c, 3, x));
+  c.relate(0, 1, 3, 7);                    // x0 = x3 + 7 = -x0 + 10: x0 = 5, x3 = -2
+  assert(!c.conflict() && value(c, 0, x) && x == 5 && value(c, 3, x) && x == -2 && value(c, 1, x) && x == 0);
+  c.checkpoint();                          // a tentative row that contradicts the class: x3 = 4
+  c.relate(4, 1, 3, 6);                    // x4 = x3 + 6 = 4 (joins 4 to the fixed class)
+  c.relate(4, 1, 5, 0);
+  c.relate(5, -1, 3, 1);                   // x5 = -x3 + 1 = 3, but x5 = x4 = 4
+  assert(c.conflict());
+  c.rollback();                            // as before the checkpoint: 4 and 5 alone, no conflict
+  assert(!c.conflict() && !value(c, 4, x) && !value(c, 5, x) && value(c, 2, x) && x == -2);
+  c.relate(4, 1, 4, 0);                    // x4 = x4: holds for every value
+  assert(!c.conflict() && !value(c, 4, x));
+  c.relate(4, -1, 5, 3);
+  c.relate(5, -1, 4, 3);                   // the same row the other way round
+  assert(!c.conflict() && !value(c, 4, x));
+  c.relate(5, 1, 4, 0);                    // x4 = -x4 + 3: 3 / 2, not an integer
+  assert(c.conflict() && !c.range_exceeded());
+  Isoline_classes d(2);
+  d.relate(0, 1, 1, 1);
+  d.relate(1, 1, 0, 1);                    // x0 = x0 + 2
+  assert(d.conflict() && d.conflict_a() == 1 && d.conflict_b() == 0);
+  std::cout << "isoline classes: relations, fixed cycles, contradictions, rollback\n";
+}
+
 static void test_quantized_cut_cycles()
 {
   Mesh m;
@@ -1660,6 +1703,7 @@ int main(int argc, char** argv)
   test_pinned_corners_data();
   if(!sanitizer_subset()) test_integer_grid_orbifold();
   test_integer_grid_data();
+  test_isoline_classes();
   test_quantization();
   test_untangling_energy();
   test_untangling_step_bound();

@@ -344,7 +344,8 @@ namespace Seamless_snapping {
  *                           to the end and takes the point that the others' rounding gives it. Then the integer-grid snap
  *                           runs as for any other integer translations, with the untangling (default) and its exact checks:
  *                           a choice that contradicts itself around a vertex is refused (`INFEASIBLE`), fold-overs left
- *                           are reported. The cones move by less than a grid cell in each coordinate, the map by up to a
+ *                           are reported. The cones move by less than a grid cell in each coordinate (up to 2 in a
+ *                           coordinate that an aligned chain fixes), the map by up to a
  *                           few cells where the rounding adds up, and a coarse grid puts cones onto one point: choose a
  *                           `grid_scale` whose cells are smaller than the distances between the cones (`retinal_miq` of
  *                           ../shared/data, an MIQ map before its integer rounding: a verified quad mesh at every grid

@@ -204,9 +204,9 @@ inline bool align_edges_near_isolines(const Corner_mesh& cm, const Seam_topology
                                       const std::vector<double>& x, double tolerance, int exponent)
 {
   for(int e : al.edges) {
-    const int g = al.halfedge[std::size_t(e)], c = al.component[std::size_t(e)];
-    const double a = std::ldexp(x[2 * std::size_t(st.sector_of[cm.prev[g]]) + std::size_t(c)], exponent);
-    const double b = std::ldexp(x[2 * std::size_t(st.sector_of[g]) + std::size_t(c)], exponent), r = std::nearbyint(a);
+    std::size_t ia, ib;
+    align_edge_ends(cm, st, al, e, ia, ib);
+    const double a = std::ldexp(x[ia], exponent), b = std::ldexp(x[ib], exponent), r = std::nearbyint(a);
     if(!(std::fabs(r) < 0x1p52 && std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) return false;
   }
   return true;
@@ -390,45 +390,48 @@ inline bool integer_cone_point(const Corner_mesh& cm, const Seam_topology& st, c
   return true;
 }
 
-// Checks the rounded translations `t` (round_translations(), possibly changed by cone_merging.h) around every
-// vertex (see the header comment) and appends the integer-grid rows to `rows`.
-// `ubar`: the input sector values in grid units; the right-hand sides are the integers times
-// 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
-// grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): the vertices of the paths along
-// which cone_separation.h moved cones (its ends, and cones on the point that it passes): their input position is not
-// compared with the point the translations force. `grid_scale` (> 0: the caller's): a cone or align edge refused names a
-// finer grid scale at which every translation, cone and align edge is near an integer, if there is one
-// (finer_grid_advice()).
-// On failure nothing is appended.
-inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
-                                    int rhs_shift, double tolerance, Constraint_rows& rows,
-                                    Integer_grid_rows_result& result, std::string& message,
-                                    const std::vector<char>& moved_cones = std::vector<char>(), double grid_scale = 0)
+// The isoline of each align edge (`isoline`, per edge) from its class (isoline_classes.h): the align edges that share a
+// corner's variable (the edges of one straight side in one chart) or that the cut edges join across the charts (with
+// the translations t) lie on one isoline, that of the cones on them (their integer points) where there are, else the
+// integer nearest the mean of their ends (in the coordinate of the class's root). Rounded edge by edge, the first end
+// of each, the edges of a quantized side at u = 8.5 (+- 1e-9) went to the isolines 8 and 9, rows that contradict each
+// other; rounded per chart, the cube with its edges as features, quantized, put the cones of one edge on two isolines.
+// INFEASIBLE where the translations and the align edges contradict each other (no isoline fits a class), INVALID_INPUT
+// where an edge's ends are farther than `tolerance` from its isoline (not for the classes of cones that
+// cone_separation.h moved, `moved_cones`), RANGE_EXCEEDED beyond 2^52.
+inline Status align_isolines(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const Align_edges& al,
+                             const std::vector<double>& ubar, const std::vector<long>& t, double tolerance,
+                             const std::vector<char>& moved_cones, double grid_scale, std::vector<long>& isoline,
+                             std::string& message)
 {
-  result = Integer_grid_rows_result();
-  // The isoline of each align edge from its class (isoline_classes.h): the align edges that share a corner's variable
-  // (the edges of one straight side in one chart) or that the cut edges join across the charts (with these translations)
-  // lie on one isoline, that of the cones on them (their integer points) where there are, else the integer nearest the
-  // mean of their ends (in the coordinate of the class's root). Rounded edge by edge, the first end of each, the edges
-  // of a quantized side at u = 8.5 (+- 1e-9) went to the isolines 8 and 9, rows that contradict each other; rounded
-  // per chart, the cube with its edges as features, quantized, put the cones of one edge on two isolines (INFEASIBLE)
-  Isoline_classes classes(al.edges.empty() ? 0 : 2 * std::size_t(st.n_sectors));
+  isoline.assign(std::size_t(cm.n_edges), 0);
+  if(al.edges.empty()) return SUCCESS;
+  Isoline_classes classes(2 * std::size_t(st.n_sectors));
+  relate_align_edges(cm, st, al, classes);
+  for(int e : st.cut_edges) relate_cut_edge(cm, st, rot, t, cm.edge_halfedge[e], classes);
+  if(classes.conflict()) {
+    const std::size_t x = classes.conflict_a();
+    const int v = st.sector_vertex(cm, int(x / 2));
+    message = classes.range_exceeded()
+      ? "the isolines of the align edges through vertex " + std::to_string(v) + ", composed across the cut edges' " +
+        "translations, reach 2^62 grid units; scale the map down (grid_scale / --grid-scale); nothing was written"
+      : "the integer translations and the align edges contradict each other at vertex " + std::to_string(v) + " (" +
+        (x % 2 == 0 ? "u" : "v") + "): an aligned chain through it, followed across the cut edges, would lie on two " +
+        "isolines at once (it joins cones at different isolines, or returns onto another isoline); nothing was written";
+    return classes.range_exceeded() ? RANGE_EXCEEDED : INFEASIBLE;
+  }
   std::vector<double> root_sum(classes.size(), 0.), root_ends(classes.size(), 0.);
-  if(!al.edges.empty()) {
-    relate_align_edges(cm, st, al, classes);
-    for(int e : st.cut_edges) relate_cut_edge(cm, st, rot, t, cm.edge_halfedge[e], classes);
-    for(int e : al.edges) {
-      std::size_t ends[2];
-      align_edge_ends(cm, st, al, e, ends[0], ends[1]);
-      for(std::size_t x : ends) {
-        const Isoline_classes::Relation r = classes.find(x);
-        root_sum[r.root] += double(r.sign) * (ubar[x] - double(r.offset));
-        root_ends[r.root] += 1;
-      }
+  std::vector<char> moved(classes.size(), 0);                    // per root: a class of a moved cone
+  for(int e : al.edges) {
+    std::size_t ends[2];
+    align_edge_ends(cm, st, al, e, ends[0], ends[1]);
+    for(std::size_t x : ends) {
+      const Isoline_classes::Relation r = classes.find(x);
+      root_sum[r.root] += double(r.sign) * (ubar[x] - double(r.offset));
+      root_ends[r.root] += 1;
+      if(!moved_cones.empty() && moved_cones[std::size_t(st.sector_vertex(cm, int(x / 2)))]) moved[r.root] = 1;
     }
   }
-  std::vector<long> isoline(cm.n_edges, 0);
   for(int e : al.edges) {
     const int g = al.halfedge[e], c = al.component[e];
     std::size_t ia, ib;
@@ -447,20 +450,40 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
                 "down (grid_scale / --grid-scale)";
       return RANGE_EXCEEDED;
     }
-    if(!(std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
+    if(!moved[root.root] && !(std::fabs(a - r) <= tolerance && std::fabs(b - r) <= tolerance)) {
       const bool ends_near = std::fabs(a - std::nearbyint(a)) <= tolerance && std::fabs(b - std::nearbyint(b)) <= tolerance;
       message = "the input is not near an integer-grid map: " + where() +
                 (!ends_near ? ", farther than " + format_double(tolerance) + " from an integer"
                  : std::nearbyint(a) != std::nearbyint(b) ? ", its ends on two different integer isolines (an align edge runs along one)"
                  : ", near the integer " + format_double(std::nearbyint(a)) + " but not near the isoline " + format_double(r) +
-                   " of the aligned chain it belongs to (the mean of the chain's ends, rounded)") +
+                   " of the aligned chain it belongs to (one isoline for the chain, the chains that the cut edges join with "
+                   "it and the cones on them)") +
                 finer_grid_advice(cm, st, rot, &al, ubar, tolerance, grid_scale, "; scale the map (grid_scale / --grid-scale)") +
                 ", or snap without integer_grid_map (--integer-grid)";
       return INVALID_INPUT;
     }
-    isoline[e] = long(r);
+    isoline[std::size_t(e)] = long(r);
   }
+  return SUCCESS;
+}
 
+// Checks the rounded translations `t` (round_translations(), possibly changed by cone_merging.h) around every
+// vertex (see the header comment) and appends the integer-grid rows to `rows`.
+// `ubar`: the input sector values in grid units; the right-hand sides are the integers times
+// 2^rhs_shift (rhs_shift >= 0: the corner mesh is in units of 2^-rhs_shift grid units, finer than the
+// grid when corners are pinned, pinned_corners.h). `moved_cones` (per vertex, or empty): the vertices of the paths along
+// which cone_separation.h moved cones (its ends, and cones on the point that it passes): their input position is not
+// compared with the point the translations force. `grid_scale` (> 0: the caller's): a cone or align edge refused names a
+// finer grid scale at which every translation, cone and align edge is near an integer, if there is one
+// (finer_grid_advice()).
+// On failure nothing is appended.
+inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
+                                    const Align_edges& al, const std::vector<double>& ubar, const std::vector<long>& t,
+                                    int rhs_shift, double tolerance, Constraint_rows& rows,
+                                    Integer_grid_rows_result& result, std::string& message,
+                                    const std::vector<char>& moved_cones = std::vector<char>(), double grid_scale = 0)
+{
+  result = Integer_grid_rows_result();
   // the rotations and rounded translations composed around every interior vertex with cut edges
   const std::vector<int> corner_of = first_corners(cm);
   for(int v = 0; v < cm.n_vertices; ++v) {
@@ -504,17 +527,9 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     result.cones.push_back(v);
   }
 
-  if(classes.conflict()) {
-    const std::size_t x = classes.conflict_a();
-    const int v = st.sector_vertex(cm, int(x / 2));
-    message = classes.range_exceeded()
-      ? "the isolines of the align edges through vertex " + std::to_string(v) + ", composed across the cut edges' " +
-        "translations, reach 2^62 grid units; scale the map down (grid_scale / --grid-scale); nothing was written"
-      : "the integer translations and the align edges contradict each other at vertex " + std::to_string(v) + " (" +
-        (x % 2 == 0 ? "u" : "v") + "): an aligned chain through it, followed across the cut edges, would lie on two " +
-        "isolines at once (it joins cones at different isolines, or returns onto another isoline); nothing was written";
-    return classes.range_exceeded() ? RANGE_EXCEEDED : INFEASIBLE;
-  }
+  std::vector<long> isoline;
+  const Status aligned = align_isolines(cm, st, rot, al, ubar, t, tolerance, moved_cones, grid_scale, isoline, message);
+  if(aligned != SUCCESS) return aligned;
 
   // the right-hand sides in corner-mesh units, |b| < 2^62
   long max_abs = 0;
@@ -534,8 +549,9 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
       rows.add({ {2 * sj + c, 1}, {2 * si + R.col[c], -R.sign[c]} }, e, t[2 * h + c] * (1L << rhs_shift));
   }
   for(int e : al.edges) {
-    const int g = al.halfedge[e];
-    rows.add({ {2 * st.sector_of[cm.prev[g]] + al.component[e], 1} }, e, isoline[e] * (1L << rhs_shift));
+    std::size_t a, b;
+    align_edge_ends(cm, st, al, e, a, b);
+    rows.add({ {int(a), 1} }, e, isoline[std::size_t(e)] * (1L << rhs_shift));
   }
   return SUCCESS;
 }

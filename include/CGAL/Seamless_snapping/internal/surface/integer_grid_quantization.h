@@ -13,7 +13,8 @@
 // Quantization (quantize(true), beyond the paper): integer translations for the cut edges of a seamless map that is
 // not near an integer-grid map (a map whose translations were never made integers, e.g. Directional's rot-seamless
 // output), chosen so that around every interior vertex the transitions compose to the identity where it is not a cone,
-// and to a rotation about an integer point next to the cone (within a grid cell of it in each coordinate) where it is one.
+// and to a rotation about an integer point next to the cone (within a grid cell of it in each coordinate, or 2 in a
+// coordinate that an aligned chain through it fixes: aligned_candidates()) where it is one.
 //
 // The cut graph is peeled from its leaves: an interior vertex all of whose cut edges but one have their translations
 // determines that one from its own condition (the composition around it is linear in that translation, through a
@@ -144,7 +145,10 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
 
 // Where the classes (isoline_classes.h) fix a coordinate of the cone's coordinates x_a, x_a + 1 (input position x, an
 // aligned chain through it reaching a placed cone or closing a cycle), the points with that coordinate and the other
-// floor or ceiling of x, after the four of diffuse_rounding() in p[4..7], those within 2 grid cells of x; their number
+// floor or ceiling of x, after the four of diffuse_rounding() in p[4..7], those within 2 grid cells of x; their number.
+// Without them (the four only), the cubes with features of test_quad scaled by 1.3 / 1.7 (2 and 3 squares per side)
+// and libigl's scaled by 1.3 (grid scales 1, 2) and 1.7 (grid scale 1) were INFEASIBLE. (collides()' search reaches
+// vertices within quantization_cone_reach of the point: for these farther points it may miss a cone on it.)
 inline int aligned_candidates(Isoline_classes& classes, bool aligned, int a, const double x[2], long p[8][2])
 {
   if(!aligned) return 0;

@@ -64,7 +64,7 @@ public:
       const std::size_t x = path_[i], p = parent_[x];
       if(p == r) continue;
       const __int128 o = __int128(sign_[x]) * offset_[p] + offset_[x];
-      if(!fits(o)) { range_exceeded_ = conflict_ = true; return {r, 1, 0}; }
+      if(!fits(o)) { fail(a, a, true); return {r, 1, 0}; }      // (offsets stay near the UVs' size: not reached)
       save(x);
       offset_[x] = long(o);
       sign_[x] *= sign_[p];
@@ -148,14 +148,6 @@ private:
   bool recording_ = false, conflict_ = false, range_exceeded_ = false, saved_conflict_ = false, saved_range_ = false;
   std::size_t conflict_a_ = 0, conflict_b_ = 0;
 };
-
-// the coordinates of the two ends of align edge e (its constant component)
-inline void align_edge_ends(const Corner_mesh& cm, const Seam_topology& st, const Align_edges& al, int e,
-                            std::size_t& a, std::size_t& b)
-{
-  a = 2 * std::size_t(st.sector_of[cm.prev[al.halfedge[std::size_t(e)]]]) + std::size_t(al.component[std::size_t(e)]);
-  b = 2 * std::size_t(st.sector_of[al.halfedge[std::size_t(e)]]) + std::size_t(al.component[std::size_t(e)]);
-}
 
 inline void relate_align_edges(const Corner_mesh& cm, const Seam_topology& st, const Align_edges& al, Isoline_classes& classes)
 {

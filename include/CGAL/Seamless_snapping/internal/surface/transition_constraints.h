@@ -83,6 +83,14 @@ struct Align_edges
   std::vector<int> halfedge;      // per edge: the halfedge g whose face the row uses (-1 if none)
 };
 
+// the coordinates of the two ends of align edge e (its constant component)
+inline void align_edge_ends(const Corner_mesh& cm, const Seam_topology& st, const Align_edges& al, int e,
+                            std::size_t& a, std::size_t& b)
+{
+  a = 2 * std::size_t(st.sector_of[cm.prev[al.halfedge[std::size_t(e)]]]) + std::size_t(al.component[std::size_t(e)]);
+  b = 2 * std::size_t(st.sector_of[al.halfedge[std::size_t(e)]]) + std::size_t(al.component[std::size_t(e)]);
+}
+
 // the corner of vertex w in the face used by align edge e
 inline int align_corner(const Corner_mesh& cm, const Align_edges& al, int e, int w)
 {
@@ -145,8 +153,9 @@ inline void add_transition_rows(const Corner_mesh& cm, const Seam_topology& st, 
 inline void add_alignment_row(const Corner_mesh& cm, const Seam_topology& st, const Align_edges& al,
                               int e, Constraint_rows& rows)
 {
-  const int g = al.halfedge[e], c = al.component[e];
-  rows.add({ {2 * st.sector_of[cm.prev[g]] + c, 1}, {2 * st.sector_of[g] + c, -1} }, e);
+  std::size_t a, b;
+  align_edge_ends(cm, st, al, e, a, b);
+  rows.add({ {int(a), 1}, {int(b), -1} }, e);
 }
 
 inline void build_full_system(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
