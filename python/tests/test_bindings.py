@@ -1042,6 +1042,18 @@ def test_collapsed_face_on_border():
     assert len(QF) == 2 and valence[1] == 3
 
 
+def test_collapsed_face_ear():
+    # an ear: the zero-area face (1, 0, 2) with its long side 0-2 and its short side 1-2 on the border, its middle vertex 1
+    # a border vertex of the mesh at a corner of the quad: valence 2. quad_valences() said 4 (3 with the rule for an
+    # interior middle vertex) and the extraction's own check failed
+    F = np.array([[0, 1, 4], [1, 3, 4], [1, 0, 2]])
+    V = np.array([[0, 0, 0], [1, 0, -0.3], [2, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+    QV, QF, r = ss.extract_quad_mesh(V, F, V[:, :2], F)
+    check_quad_mesh(V, F, V[:, :2], F, QV, QF, r, closed=False)
+    valence, _ = check_valences_against_quads(V, F, V[:, :2], F, QF, r)
+    assert len(QF) == 1 and valence[1] == 2
+
+
 def test_max_grid_cells_near_2_64():
     # faces whose UV boxes hold 2^62 cells each: with max_grid_cells = 2^64 - 1 their count wrapped around to 0 and
     # passed, and the allocation threw (MemoryError / ValueError); now RANGE_EXCEEDED, nothing returned

@@ -44,7 +44,7 @@ struct Quad_mesh_report
   std::size_t faces = 0;                       ///< faces of the map
   int input_euler_characteristic = 0;          ///< V - E + F of the map
   std::size_t input_boundary_loops = 0;        ///< border loops of the map
-  std::size_t cones = 0;                       ///< interior vertices whose quad valence (`quad_valences()`) is not 4
+  std::size_t cones = 0;                       ///< vertices inside the quad mesh (not in `Quad_valences::border`) whose quad valence (`quad_valences()`) is not 4
   std::vector<std::size_t> fold_overs;         ///< `FOLD_OVERS`: faces whose UV triangle is negatively oriented
   std::vector<std::size_t> zero_area_faces;    ///< faces whose UV triangle has zero area: with `FOLD_OVERS` all of them, on `SUCCESS` those collapsed onto their longest side (three distinct collinear corners)
   CGAL::Gmpq uv_area;                          ///< the exact UV area of the map in grid units (sum of its triangles)

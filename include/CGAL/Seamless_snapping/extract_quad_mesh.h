@@ -73,8 +73,10 @@ struct Quad_vertex_origin
  *   corners are cones that the constraints put onto collinear integer points, is the limit of a thin positive
  *   triangle: it is collapsed onto its longest side, where the faces on its two sides meet (the cells its long side
  *   runs through are glued across it and cover it, `Quad_mesh_report::zero_area_faces` lists it, and its middle
- *   corner counts 180 degrees in `quad_valences()`);
- * - every interior vertex whose quad valence (`quad_valences()`) is not 4 must lie on an integer point (the cones of
+ *   corner counts 180 degrees in `quad_valences()`; where its long side is a border edge, its middle vertex is a border
+ *   point of the quad mesh, in `Quad_valences::border`);
+ * - every vertex inside the quad mesh (not in `Quad_valences::border`) whose quad valence (`quad_valences()`) is not 4
+ *   must lie on an integer point (the cones of
  *   the field do in an integer-grid map; a vertex with an angle sum of 8 quarter turns might not), and no cone may
  *   have valence 1 (a 90-degree cone: the cell at it would have two sides glued into one edge, which no polygon mesh
  *   has), else `INVALID_INPUT`;

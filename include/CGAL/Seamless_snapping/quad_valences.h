@@ -48,7 +48,8 @@ struct Quad_valences
  * valence of the vertex in the quad mesh of an integer-grid map (`extract_quad_mesh()`) wherever the vertex is an
  * integer point: at an interior vertex its UV angle sum in quarter turns (4 at a regular vertex, 3 and 5 at cones
  * of -90 and +90 degrees), at a border vertex the axis directions in its closed fan (3 on a straight border along
- * an isoline, 2 at a convex right-angle corner). Quad extractors that guess it from floating-point angle sums can be
+ * an isoline, 2 at a convex right-angle corner); the same at a vertex that a zero-area triangle folds onto the border
+ * (below). Quad extractors that guess it from floating-point angle sums can be
  * told it instead; libQEx reads it from a VVAL file (`IO::write_VVAL()`).
  *
  * It is computed with exact sign tests only: per corner, the signed number of quadrant boundaries that the
@@ -62,7 +63,7 @@ struct Quad_valences
  * `extract_quad_mesh()` collapses it onto its longest side; where that side is a border edge, the middle vertex is a
  * border point of the quad mesh (in `border`, its valence that of a border fan); one with two corners at one UV point
  * is refused too.
- * So is an interior vertex of valence 1 (an angle sum of 90 degrees: a cone of the map's own, or a cone of 5 quarter
+ * So is a vertex inside the quad mesh of valence 1 (an angle sum of 90 degrees: a cone of the map's own, or a cone of 5 quarter
  * turns that the map winds back to 1): no quad mesh has it. `extract_quad_mesh()` refuses the same maps.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only

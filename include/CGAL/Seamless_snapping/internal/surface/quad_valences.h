@@ -38,10 +38,12 @@
 // corners is taken as the limit of a thin positive one (as the quad extraction collapses it,
 // quad/collapsed_faces.h): its middle corner turns by +180 degrees, which crosses exactly 2 quadrant
 // boundaries from any direction, its two others by 0. Where its long side is a border edge, the face folds onto the
-// border and its middle vertex, interior in the mesh, is a border point of the quad mesh (on_border): the rest of its fan
-// is a border fan, whose first edge runs along the long side: its middle corner counts 1 if the long side is
-// axis-parallel, else 0 (counted 2, a point of a straight axis-parallel border was called valence 4 where the quad mesh has 3, and
-// the extraction's own check failed on it, 2026-11-30).
+// border and its middle vertex is a border point of the quad mesh (on_border). Interior in the mesh, the rest of its
+// fan is a border fan whose first edge runs along the long side: its middle corner counts 1 if the long side is
+// axis-parallel, else 0; a border vertex of the mesh (an ear: a short side on the border too) has its border fan's
+// first edge counted already, and the corner counts 0. (Counted 2, a point of a straight axis-parallel border was called
+// valence 4 where the quad mesh has 3, an ear's corner 4 where it has 2, and the extraction's own check failed on
+// them, 2026-11-30.)
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 
@@ -126,9 +128,9 @@ inline Quad_valence_result quad_valences(const Corner_mesh& cm)
       CGAL_assertion((cm.u[h] != cm.u[cm.next[h]] || cm.v[h] != cm.v[cm.next[h]]) &&
                      (cm.u[h] != cm.u[cm.prev[h]] || cm.v[h] != cm.v[cm.prev[h]]));
       const int l = cm.prev[h];                      // the long side
-      if(cm.is_border_halfedge(cm.opp[l])) {
+      if(cm.is_border_halfedge(cm.opp[l])) {        // (a border vertex: its own first edge counted already, below)
+        c = !cm.vertex_on_border[v] && (cm.u[l] == cm.u[cm.prev[l]] || cm.v[l] == cm.v[cm.prev[l]]) ? 1 : 0;
         r.on_border[std::size_t(v)] = 1;
-        c = cm.u[l] == cm.u[cm.prev[l]] || cm.v[l] == cm.v[cm.prev[l]] ? 1 : 0;
       } else {
         c = 2;
       }
