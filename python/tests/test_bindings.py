@@ -491,6 +491,27 @@ def flat_torus(n=4, noise=0.0, seed=2):
     return np.array(V), np.array(F), np.array(UV), np.array(FUV)
 
 
+def test_motorcycle_graph_flat_cylinder():
+    # a flat cylinder (wrapping in u, straight aligned borders at v = 0 and v = 3): no cone and no border corner, so four
+    # seeded traces. They started at the first corner of the mesh, a border vertex, where the -v ray leaves the surface:
+    # invalid_start, one failed trace on an exact map; now they start at an interior vertex
+    n, m = 4, 3
+    V = np.array([[float(i), float(j), 0.0] for j in range(m + 1) for i in range(n)])
+    F, FUV, UV = [], [], []
+    for j in range(m):
+        for i in range(n):
+            I, J = (i, i + 1, i + 1, i), (j, j, j + 1, j + 1)
+            for tri in ((0, 1, 2), (0, 2, 3)):
+                F.append([J[c] * n + I[c] % n for c in tri])
+                FUV.append(list(range(len(UV), len(UV) + 3)))
+                UV.extend([[float(I[c]), float(J[c])] for c in tri])
+    F, UV, FUV = np.array(F), np.array(UV), np.array(FUV)
+    assert ss.is_exactly_seamless(V, F, UV, FUV)
+    g = ss.motorcycle_graph(V, F, UV, FUV)
+    assert g["seeded"] and g["counts"]["separatrices"] == 4 and g["counts"]["failed"] == 0
+    assert all(V[s["start"]][1] not in (0, m) for s in g["separatrices"]) and g["layout"]["valid"]
+
+
 def test_motorcycle_graph_flat_torus():
     V, F, UV, FUV = flat_torus()
     assert ss.is_exactly_seamless(V, F, UV, FUV)

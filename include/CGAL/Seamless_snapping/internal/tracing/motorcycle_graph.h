@@ -17,8 +17,8 @@
 // passed there earlier (T-junction); traces that reach a point at the same time: head-on both stop, at
 // right angles the one heading a quarter turn counter-clockwise from the other goes on. The result depends
 // neither on the triangulation nor on the numbering.
-// A map without cones and border corners (a torus) gets four seeded traces, +u, +v, -u and -v, from the
-// first corner of the first vertex: with all four the seed is a node with right angles only (with two,
+// A map without cones and border corners (a torus, a cylinder) gets four seeded traces, +u, +v, -u and -v, from the
+// first corner of the first interior vertex: with all four the seed is a node with right angles only (with two,
 // the angle between +v and +u the other way round would be a 270 degree patch corner).
 
 #include <CGAL/Seamless_snapping/internal/tracing/isoline_tracer.h>
@@ -72,12 +72,14 @@ inline Separatrix_seeds separatrix_seeds(const Tracing_map& map)
     if(!border && rays != map.st.quarter_turns[v]) ++S.cones_with_wrong_ray_count;
   }
   if(S.cones == 0 && S.border_corners == 0) {
+    // the first corner of an interior vertex (from a border vertex, e.g. the first corner of a cylinder, a ray leaves
+    // the surface: invalid_start, one failed trace on an exact map); the first corner where every vertex is on the border
     S.seeded = true;
-    for(int h = 0; h < cm.n_halfedges; ++h)
-      if(!cm.is_border_halfedge(h)) {
-        for(int m : {0, 1, 2, 3}) { S.corner.push_back(h); S.m.push_back(m); S.source_kind.push_back(2); }
-        break;
-      }
+    int seed = -1;
+    for(int h = 0; h < cm.n_halfedges && (seed < 0 || cm.vertex_on_border[cm.target[seed]]); ++h)
+      if(!cm.is_border_halfedge(h) && (seed < 0 || !cm.vertex_on_border[cm.target[h]])) seed = h;
+    if(seed >= 0)
+      for(int m : {0, 1, 2, 3}) { S.corner.push_back(seed); S.m.push_back(m); S.source_kind.push_back(2); }
   }
   return S;
 }
