@@ -35,7 +35,7 @@ import numpy as np
 from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
-           "diagnose_seamlessness",
+           "diagnose_seamlessness", "is_cut_mesh",
            "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
            "quad_layout", "quad_valences", "write_vval",
            "DIRECTIONS", "SnapError", "InputError",
@@ -89,25 +89,19 @@ def _mesh_arrays(V, F, UV, FUV):
 def is_cut_mesh(V, F):
     """True iff two or more border edges of (V, F) lie on other border edges at bit-identical 3D points: a cut mesh
     (libigl and Directional write their parametrizations so, the vertices duplicated along the seams), whose seams
-    are borders unless its vertices are welded (the C++ IO::cut_mesh_test(); -0 and 0 differ, as in the weld)."""
-    V = np.ascontiguousarray(V, dtype=np.float64)
-    F = _integer_array(F, "F", "row indices of V")
-    if F.size == 0 or V.ndim != 2 or V.shape[1] != 3 or F.ndim != 2 or F.shape[1] != 3 or F.min() < 0 or F.max() >= len(V):
-        return False
-    position = np.unique(V.view(np.uint64), axis=0, return_inverse=True)[1].reshape(-1)   # per row of V, its point
-    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-    rows, count = np.unique(edges, axis=0, return_counts=True)
-    border = np.sort(position[rows[count == 1]], axis=1)            # the border edges, by their points
-    if len(border) < 2:
-        return False
-    count = np.unique(border, axis=0, return_counts=True)[1]
-    return int(count[count > 1].sum()) >= 2
+    are borders unless its vertices are welded (the C++ IO::cut_mesh_test(); -0 and 0 differ, as in the weld).
+    False for arrays that do not form a triangle mesh as they are."""
+    return bool(_core.cut_mesh_test(np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V"))[0])
 
 
-def _weld(arrays, weld):
-    """The weld of the functions that read a mesh (V, F, ...): weld=None (their default) welds a cut mesh
-    (is_cut_mesh()), as the command line does; True / False weld or not."""
-    return is_cut_mesh(arrays[0], arrays[1]) if weld is None else bool(weld)
+def _weld(mesh, weld):
+    """The weld of the functions that read a mesh (V, F, ...): weld=None (their default) welds as the command line
+    does (IO::read_welding_cut_meshes()): a cut mesh (is_cut_mesh()), or a mesh refused as it is but not welded (a
+    cut mesh with a hole at a seam); True / False weld or not."""
+    if weld is not None:
+        return bool(weld)
+    return bool(_core.cut_mesh_test(np.ascontiguousarray(mesh[0], dtype=np.float64),
+                                    _integer_array(mesh[1], "F", "row indices of V"))[1])
 
 
 def read_obj(path, *, weld=False, threads=1):
@@ -130,9 +124,12 @@ def write_obj(path, V, F, UV, FUV):
     of UV, one `f v/vt v/vt v/vt` per face, each number the shortest decimal that reads back to the same double
     (read_obj reads them bit for bit).
     Atomic: the text goes to a temporary file that is then renamed. Raises InputError (nothing written) for arrays
-    of the wrong shape, an index out of range, a value that is not finite, or a place that cannot be written.
-    Returns the writer's one-line summary."""
+    of the wrong shape, an index out of range, a value that is not finite, no face (read_obj refuses such a file),
+    or a place that cannot be written. Returns the writer's one-line summary."""
     Vc, Fc, UVc, FUVc = _mesh_arrays(V, F, UV, FUV)
+    if Fc.size == 0:
+        raise InputError("F has no face: the file would hold no mesh (read_obj refuses a file without faces); "
+                         "nothing written")
     return _core.write_obj(os.fspath(path), Vc, Fc, UVc, FUVc)
 
 
@@ -173,7 +170,8 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
     not near an integer-grid map at `grid_scale` (its translations were never made integers, e.g. Directional's
     rot-seamless output or a map before MIQ's integer rounding) integer translations chosen for it instead of
     refusing it: each cone onto an integer point next to it (of the four around it, the one that keeps the translations
-    nearest the map's), the translations from those along the cut graph, rounded where it leaves a choice
+    nearest the map's; with align edges, one on the isolines of the aligned chains through it, up to 2 grid cells
+    away), the translations from those along the cut graph, rounded where it leaves a choice
     (report["quantized"]); the map moves by up to a few grid cells, so choose a grid_scale whose cells are smaller than
     the distances between the cones. `threads=2` (or more; 0 = the machine's cores) runs the steps
     that do not depend on each other on two threads (the C++ number_of_threads): the same results, bit for bit.
@@ -189,7 +187,7 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
         untangle = integer_grid_map
     arrays = _mesh_arrays(V, F, UV, FUV)
     welded_automatically = weld is None and _weld(arrays, None)
-    uv, fuv, text = _core.snap(*arrays, _weld(arrays, weld) if weld is not None else welded_automatically,
+    uv, fuv, text = _core.snap(*arrays, bool(weld) or welded_automatically,
                                repair_flips, align_boundary,
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
                                bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
@@ -450,7 +448,8 @@ def quad_valences(V, F, UV, FUV, *, weld=None, raise_on_failure=True):
 
     Returns (valence, report): valence #V int64 (0 for a row no face uses; with weld=True the rows at one position
     are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
-    vertex is on the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
+    vertex is on the border of the quad mesh: a border vertex, or one that a zero-area triangle whose long side is a
+    border edge folds onto the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
     valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
     be multiples of 90 degrees: snap() it first; or the arrays do not form a triangle mesh; or an interior vertex has
     valence 1, a cone of 90 degrees or a cone of 5 quarter turns that the map winds back to 1, which no quad mesh has:
@@ -458,7 +457,8 @@ def quad_valences(V, F, UV, FUV, *, weld=None, raise_on_failure=True):
     oriented UV triangle, or a zero-area one with two corners at one point, listed: there the angle sum is a signed
     winding number that no quad mesh has; snap(..., untangle=True) removes fold-overs where the constraints allow). A
     zero-area triangle with three distinct collinear corners counts as the limit of a thin positive one, as
-    extract_quad_mesh() collapses it.
+    extract_quad_mesh() collapses it (its middle corner 180 degrees, or, where its long side is a border edge, its
+    middle vertex a border point).
     """
     report = _core.quad_valences(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld))
     valence = report.pop("valence", None)
@@ -535,7 +535,10 @@ def patch_vertex_grids(QF, report):
     patches = report["patches"] if "patches" in report and isinstance(report["patches"], dict) else report
     if patches["status"] != "SUCCESS":
         raise SnapError(patches)
-    QF = np.asarray(QF)
+    QF = _integer_array(QF, "QF", "rows of QV")
+    if QF.ndim != 2 or QF.shape[1] != 4 or len(QF) != len(report["QF_patch"]):
+        raise InputError("QF must be the %d x 4 quads that gave the report (it is %s): the report is of another "
+                         "quad mesh" % (len(report["QF_patch"]), " x ".join(map(str, QF.shape))))
     grids = [None if w == 0 else np.full((h + 1, w + 1), -1, dtype=np.int64) for w, h in patches["sizes"]]
     offsets = ((0, 0), (1, 0), (1, 1), (0, 1))                 # the cell's corners, counter-clockwise from (i, j)
     for q, (p, (i, j), k) in enumerate(zip(report["QF_patch"], report["QF_patch_cell"], report["QF_patch_corner"])):

@@ -9,6 +9,7 @@
 #include <CGAL/Seamless_snapping/Exact_constraint_projection.h>
 #include <CGAL/Seamless_snapping/IO/OBJ_matrices.h>
 #include <CGAL/Seamless_snapping/IO/VVAL.h>
+#include <CGAL/Seamless_snapping/IO/cut_mesh.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/diagnose_seamlessness.h>
 #include <CGAL/Seamless_snapping/extract_quad_mesh.h>
@@ -112,6 +113,24 @@ bool is_exactly_seamless(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR
   return SS::is_exactly_seamless(V, F, UV, FUV, SS::parameters::weld_vertices(weld));
 }
 
+// (IO::cut_mesh_test() of the mesh of (V, F) as it is, whether to weld it as the command-line programs decide,
+// IO::read_welding_cut_meshes(): a cut mesh, or a mesh refused as it is but not welded)
+py::tuple cut_mesh_test(const MatrixXdR& V, const MatrixXlR& F)
+{
+  py::gil_scoped_release release;
+  const MatrixXdR UV = MatrixXdR::Zero(1, 2);                 // the UVs play no part: one row for every corner
+  const MatrixXlR FUV = MatrixXlR::Zero(F.rows(), 3);
+  SS::internal::Matrix_mesh_with_uv m;
+  std::string message;
+  bool cut = false, weld = false;
+  if(SS::internal::mesh_from_matrices(V, F, UV, FUV, false, m, message) == SS::SUCCESS)
+    weld = cut = SS::IO::cut_mesh_test(m.mesh).is_cut_mesh();
+  else
+    weld = SS::internal::mesh_from_matrices(V, F, UV, FUV, true, m, message) == SS::SUCCESS;
+  py::gil_scoped_acquire acquire;
+  return py::make_tuple(cut, weld);
+}
+
 bool is_exact_integer_grid_map(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV,
                                bool weld, double grid_scale)
 {
@@ -172,17 +191,20 @@ typedef SS::internal::Matrix_mesh Mesh;
 typedef SS::Isoline_tracer<Mesh, SS::internal::Matrix_uv_map> Tracer;
 typedef SS::Isoline_trace<Mesh> Trace;
 
-// mesh vertex -> a row of V, mesh face -> its row of F (through the corners of the conversion)
+// mesh vertex -> a row of V, mesh face -> its row of F, corner (halfedge) -> the row of V that F has there (welded, a
+// vertex has several rows; a trace's start is named by the row of its start corner) (through the corners of the conversion)
 struct Row_maps
 {
-  std::vector<long long> vertex_row, face_row;
+  std::vector<long long> vertex_row, face_row, corner_row;
   Row_maps(const SS::internal::Matrix_mesh_with_uv& m, const MatrixXlR& F)
-    : vertex_row(m.mesh.number_of_vertices(), -1), face_row(m.mesh.number_of_faces(), -1)
+    : vertex_row(m.mesh.number_of_vertices(), -1), face_row(m.mesh.number_of_faces(), -1),
+      corner_row(m.mesh.number_of_halfedges(), -1)
   {
     for(std::size_t f = 0; f < m.corner.size(); ++f)
       for(int k = 0; k < 3; ++k) {
         const Mesh::Halfedge_index h = m.corner[f][std::size_t(k)];
         const std::size_t v = std::size_t(m.mesh.target(h));
+        if(std::size_t(h) < corner_row.size()) corner_row[std::size_t(h)] = F(Eigen::Index(f), k);
         if(v < vertex_row.size() && vertex_row[v] < 0) vertex_row[v] = F(Eigen::Index(f), k);
         const std::size_t fi = std::size_t(m.mesh.face(h));
         if(fi < face_row.size()) face_row[fi] = (long long)(f);
@@ -204,7 +226,9 @@ py::dict trace_dict(const Trace& t, const Mesh& mesh, const Row_maps& rows, bool
   d["end"] = SS::trace_end_name(t.end);
   d["failure"] = SS::is_failure(t.end);
   d["message"] = t.message;
-  d["start"] = t.has_start_vertex ? rows.vertex_row[std::size_t(t.start_vertex)] : -1LL;
+  d["start"] = t.has_start_corner && std::size_t(t.start_corner) < rows.corner_row.size()
+                   && rows.corner_row[std::size_t(t.start_corner)] >= 0 ? rows.corner_row[std::size_t(t.start_corner)]
+               : t.has_start_vertex ? rows.vertex_row[std::size_t(t.start_vertex)] : -1LL;
   long long start_face = -1, start_corner = -1;
   if(t.has_start_corner) {
     start_face = rows.face_row[std::size_t(mesh.face(t.start_corner))];
@@ -635,6 +659,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("rotation_tolerance"), py::arg("alignment_tolerance"), py::arg("minimal_change"),
         py::arg("integer_grid_map"), py::arg("grid_scale"), py::arg("untangle"), py::arg("max_untangle_change"),
         py::arg("merge_cone_pairs"), py::arg("separate_cone_pairs"), py::arg("quantize"), py::arg("threads"));
+  m.def("cut_mesh_test", &cut_mesh_test, py::arg("V"), py::arg("F"));
   m.def("is_exactly_seamless", &is_exactly_seamless, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
         py::arg("weld"));
   m.def("is_exact_integer_grid_map", &is_exact_integer_grid_map, py::arg("V"), py::arg("F"), py::arg("UV"),

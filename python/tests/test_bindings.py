@@ -715,7 +715,30 @@ def test_obj_errors(tmp_path):
         ss.write_obj(out, V, Fo, UV, FUV)
     with pytest.raises(ss.InputError, match="cannot"):
         ss.write_obj(tmp_path / "no_such_dir" / "out.obj", V, F, UV, FUV)
+    with pytest.raises(ss.InputError, match="F has no face"):   # it wrote a file that read_obj refuses
+        ss.write_obj(out, V, F[:0], UV, FUV[:0])
     assert not out.exists() and list(tmp_path.iterdir()) == [bad]          # nothing written, no temporary left
+
+
+def test_obj_text_after_coordinates(tmp_path):
+    # only numbers may follow a record's coordinates (w, a color); other text was ignored, and a file with carriage
+    # returns alone as line ends was read as one line: its first vertex, the rest ignored
+    tail = "vt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"
+    ok = tmp_path / "ok.obj"
+    ok.write_text("v 0 0 0 1 0.5 0.25  # a color\nv 1 0 0 1\nv 0 1 0\n" + tail)
+    V, F, UV, FUV = ss.read_obj(ok)
+    assert V.tolist() == [[0, 0, 0], [1, 0, 0], [0, 1, 0]] and len(F) == 1
+    junk = tmp_path / "junk.obj"
+    junk.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0 junk\n" + tail)
+    with pytest.raises(ss.InputError, match=r"junk.obj:3: unexpected text 'junk' after the coordinates of a 'v' record"):
+        ss.read_obj(junk)
+    cr = tmp_path / "cr.obj"
+    cr.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r").encode())
+    with pytest.raises(ss.InputError, match=r"cr.obj:1: unexpected text 'v' .*carriage return alone"):
+        ss.read_obj(cr)
+    crlf = tmp_path / "crlf.obj"
+    crlf.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r\n").encode())
+    assert np.array_equal(ss.read_obj(crlf)[0], V)
 
 
 def test_index_arrays_must_hold_integers():
@@ -853,6 +876,8 @@ def test_quad_mesh_patches_standalone():
     g = ss.patch_vertex_grids(grid, r)                      # the grid's vertices, row by row, up to the patch's frame
     assert len(g) == 1 and g[0].shape == (n + 1, n + 1) and sorted(g[0].ravel()) == list(range((n + 1) ** 2))
     assert any(np.array_equal(np.rot90(g[0], t), np.arange((n + 1) ** 2).reshape(n + 1, n + 1)) for t in range(4))
+    with pytest.raises(ss.InputError, match="the report is of another quad mesh"):   # was a raw IndexError
+        ss.patch_vertex_grids(grid[:5], r)
     # the quad mesh of an extracted map: rectangles covering it, as in extract_quad_mesh()'s report
     V, F, UV, FUV = flat_torus(n=4)
     QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
@@ -1048,6 +1073,10 @@ def test_cut_mesh_welded_by_default():
     _, _, r0 = ss.snap(Vc, Fc, UV, FUV, weld=False)         # asked not to weld: the seam is a border
     assert not r0["welded_automatically"] and r0["cut_edges"] < r1["cut_edges"]
     assert r0["cut_edges"] + n == r1["cut_edges"]             # (every edge between two faces' own UV rows is a cut edge)
+    # a trace from a corner of the copy: its start is the row F has there (it was the first row of the vertex, 16 less)
+    f = len(Fc) - 1
+    t = ss.trace_isoline(Vc, Fc, UV2, FUV2, f, 0, "+u")
+    assert t["status"] == "SUCCESS" and t["start"] == Fc[f, 0] >= len(V)
 
 
 def test_collapsed_face_on_border():

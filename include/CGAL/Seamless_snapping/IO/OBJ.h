@@ -214,9 +214,8 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
   std::size_t& max_v_line = state.max_v_line;
   std::size_t& max_vt_line = state.max_vt_line;
 
-  // Reads `required` doubles; extra numbers (v: w or r g b; vt: w) are ignored. False after fail().
-  auto read_numbers = [&](const char*& p, const char* end, std::size_t lineno, double* out, int required,
-                          const char* what) -> bool {
+  auto read_required_numbers = [&](const char*& p, const char* end, std::size_t lineno, double* out, int required,
+                                   const char* what) -> bool {
     for(int k = 0; k < required; ++k) {
       skip_spaces(p, end);
       bool oor = false;
@@ -236,6 +235,29 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
         return fail(lineno, std::string("non-finite coordinate (NaN or Inf) in a '") + what + "' record");
     }
     return true;
+  };
+
+  // Reads `required` doubles; extra numbers (v: w or r g b; vt: w) are ignored, other text after them is refused (it was
+  // ignored: "v 0 1 0 junk" read as a vertex, and a file with CR-only line ends, read as one line, as its first vertex
+  // with the rest of the file ignored). False after fail().
+  auto read_numbers = [&](const char*& p, const char* end, std::size_t lineno, double* out, int required,
+                          const char* what) -> bool {
+    if(!read_required_numbers(p, end, lineno, out, required, what)) return false;
+    for(;;) {
+      skip_spaces(p, end);
+      if(p == end) return true;
+      const char* start = p;
+      double extra;
+      bool oor = false;
+      if(parse_double(p, end, extra, oor) && (p == end || is_space(*p))) continue;
+      const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
+      const char* cr = static_cast<const char*>(std::memchr(start, '\r', std::size_t(end - start)));
+      return fail(lineno, "unexpected text " + quote_token(start, tok_end) + " after the coordinates of a '" + what +
+                          "' record (only numbers may follow them: w, or a color)" +
+                          (cr != nullptr && cr + 1 != end ? "; the line holds a carriage return in its middle: line ends "
+                                                            "of a carriage return alone (classic Mac OS) are not line "
+                                                            "breaks here; convert the file to LF or CRLF line ends" : ""));
+    }
   };
 
   // One face record after its tag: the corners "v/vt", "v/vt/vn"; only triangles.
