@@ -341,7 +341,7 @@ check(all((8 * Fraction(float(c))).denominator == 1 for row in records(cube_out,
       "the quantized box: every corner UV on an integer point at grid scale 8")
 rc, text = run(cube, cube_out, "--integer-grid", "--quantize", "--report", cube_report)
 check(rc == 0 and json.load(open(cube_report))["status"] == "SUCCESS", "the cube quantized without features: %d %s" % (rc, text))
-for bad in ["3", "0", "nan"]:   # not a power of two: a command-line error (it was exit 1 from the snap), also without --integer-grid
+for bad in ["3", "0", "-1", "nan", "inf"]:   # not a power of two: a command-line error (it was exit 1 from the snap), also without --integer-grid
     rc, text = run(src, os.path.join(work, "bad_scale.obj"), "--grid-scale", bad)
     check(rc == 2 and "power of two" in text and not os.path.exists(os.path.join(work, "bad_scale.obj")),
           "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))

@@ -226,6 +226,15 @@ for opt in ["--weld", "--no-weld", "--grid-scale", "--quantize", "--no-untangle"
             "--help"]:
     check(rc == 0 and opt in text, "--help lists " + opt)
 
+# OUT or --report naming the input: the map would be replaced by the quad mesh (it was): exit 2, the input unchanged
+copy = os.path.join(work, "input_copy.obj")
+shutil.copyfile(parallelogram, copy)
+before = open(copy, "rb").read()
+for args in [[copy], [os.path.join(work, "out_in.obj"), "--report", copy]]:
+    rc, text = run(copy, *args, "--grid-scale", "4")
+    check(rc == 2 and "name one file" in text and open(copy, "rb").read() == before,
+          "an output naming IN: exit 2, IN unchanged: %d %s" % (rc, text))
+
 # OUT and --layout naming one file: the layout would replace the quad mesh, and the run would still say both were
 # written: refused (exit 2), nothing written
 clash = os.path.join(work, "clash.obj")

@@ -213,7 +213,9 @@ int main(int argc, char** argv)
   }
   if(in.empty() || out.empty()) { std::cerr << usage_text << "(--help for details)\n"; return 2; }
   if(weld && no_weld) { std::cerr << "seamless_quad: --weld and --no-weld exclude each other\n" << usage_text; return 2; }
-  const std::string same = SS::IO::internal::same_output_file({{"OUT", out}, {"--report", report_file}, {"--layout", layout_file}});
+  // (IN too: `seamless_quad IN IN` replaced the map with its quad mesh)
+  const std::string same = SS::IO::internal::same_output_file({{"IN", in}, {"OUT", out}, {"--report", report_file},
+                                                               {"--layout", layout_file}});
   if(!same.empty()) { std::cerr << "seamless_quad: " << same << "\n" << usage_text; return 2; }
   const std::string format = extension_of(out);
   if(format != "obj" && format != "off" && format != "ply") {

@@ -107,8 +107,9 @@ int main(int argc, char** argv)
     std::cerr << "seamless_trace: " << (in.empty() ? "no input file" : "--weld and --no-weld exclude each other") << "\n" << usage;
     return 2;
   }
-  const std::string same = SS::IO::internal::same_output_file({{"--json", json}, {"--svg", svg}, {"--layout-obj", layout_obj},
-                                                               {"--layout-ply", layout_ply}});
+  // (IN too: an output naming the input replaced the map)
+  const std::string same = SS::IO::internal::same_output_file({{"IN", in}, {"--json", json}, {"--svg", svg},
+                                                               {"--layout-obj", layout_obj}, {"--layout-ply", layout_ply}});
   if(!same.empty()) { std::cerr << "seamless_trace: " << same << "\n" << usage; return 2; }
 
   // a cut mesh (vertices duplicated along the seams, as libigl/Directional write them) is welded unless --no-weld
