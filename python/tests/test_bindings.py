@@ -1041,15 +1041,20 @@ def test_quantize():
     assert not r3["quantized"] and UV3.tobytes() == UV4.tobytes()
 
 
+def flat_grid_scaled(n, scale=1.7):
+    """A flat grid of n x n vertices, its UVs (i, j) times `scale`, one UV row per vertex: (V, F, UV)."""
+    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
+    F = np.array([f for j in range(n - 1) for i in range(n - 1) for a in [j * n + i]
+                  for f in ([a, a + 1, a + n + 1], [a, a + n + 1, a + n])])
+    return V, F, scale * V[:, :2]
+
+
 def test_quantize_aligned_side_between_isolines():
     # a flat 6 x 6 grid of squares, UV = 1.7 (i, j): its right side lies at u = 8.5, half-way between two isolines, and
     # its corner vertex 1e-9 beyond. The border edges of a side share their ends' variables, so they lie on one isoline;
     # rounded edge by edge (each at its first end), the side went to u = 8 and u = 9 at once: INFEASIBLE
     n = 6
-    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
-    UV = np.array([[1.7 * i, 1.7 * j] for j in range(n) for i in range(n)])
-    F = np.array([f for j in range(n - 1) for i in range(n - 1) for a in [j * n + i]
-                  for f in ([a, a + 1, a + n + 1], [a, a + n + 1, a + n])])
+    V, F, UV = flat_grid_scaled(n)
     UV[n - 1, 0] += 1e-9
     UV2, FUV2, r = ss.snap(V, F, UV, F, integer_grid_map=True, quantize=True)
     assert r["quantized"] and ss.is_exact_integer_grid_map(V, F, UV2, FUV2)
@@ -1079,29 +1084,21 @@ def test_cut_mesh_welded_by_default():
     assert t["status"] == "SUCCESS" and t["start"] == Fc[f, 0] >= len(V)
 
 
-def test_collapsed_face_on_border():
-    # the square [0, 2] x [0, 1] as 4 triangles, an interior vertex (1) at the UV point (1, 0) of the border edge 0-2:
-    # the face (1, 0, 2) has zero UV area and its long side on the border, so the quad mesh has vertex 1 on its border
-    # with degree 3. quad_valences() said 4 (the middle corner counted as 180 degrees inside) and the extraction's own
-    # check refused the map with EXACTNESS_CHECK_FAILED ("internal error")
-    F = np.array([[0, 1, 4], [1, 3, 4], [1, 2, 3], [1, 0, 2]])
-    V = np.array([[0, 0, 0], [1, 0, -0.3], [2, 0, 0], [2, 1, 0], [0, 1, 0]], float)
+# Zero-area faces (1, 0, 2) whose long side 0-2 is a border edge, their middle vertex 1 at (1, 0) lifted in 3D: the quad
+# mesh has vertex 1 on its border. quad_valences() counted the middle corner as 180 degrees inside (valence 4) and the
+# extraction's own check refused the maps with EXACTNESS_CHECK_FAILED ("internal error").
+# - the square [0, 2] x [0, 1] as 4 triangles, vertex 1 interior in the mesh: a point of a straight border, degree 3;
+# - an ear (its short side 1-2 on the border too), vertex 1 a border vertex of the mesh at a corner of the quad: degree 2
+#   (3 with the first version of the rule for an interior middle vertex)
+@pytest.mark.parametrize("F,top,quads,degree", [([[0, 1, 4], [1, 3, 4], [1, 2, 3], [1, 0, 2]], [2, 1, 0], 2, 3),
+                                                ([[0, 1, 4], [1, 3, 4], [1, 0, 2]], [1, 1, 0], 1, 2)])
+def test_collapsed_face_on_border(F, top, quads, degree):
+    F = np.array(F)
+    V = np.array([[0, 0, 0], [1, 0, -0.3], [2, 0, 0], top, [0, 1, 0]], float)
     QV, QF, r = ss.extract_quad_mesh(V, F, V[:, :2], F)
     check_quad_mesh(V, F, V[:, :2], F, QV, QF, r, closed=False)
     valence, _ = check_valences_against_quads(V, F, V[:, :2], F, QF, r)
-    assert len(QF) == 2 and valence[1] == 3
-
-
-def test_collapsed_face_ear():
-    # an ear: the zero-area face (1, 0, 2) with its long side 0-2 and its short side 1-2 on the border, its middle vertex 1
-    # a border vertex of the mesh at a corner of the quad: valence 2. quad_valences() said 4 (3 with the rule for an
-    # interior middle vertex) and the extraction's own check failed
-    F = np.array([[0, 1, 4], [1, 3, 4], [1, 0, 2]])
-    V = np.array([[0, 0, 0], [1, 0, -0.3], [2, 0, 0], [1, 1, 0], [0, 1, 0]], float)
-    QV, QF, r = ss.extract_quad_mesh(V, F, V[:, :2], F)
-    check_quad_mesh(V, F, V[:, :2], F, QV, QF, r, closed=False)
-    valence, _ = check_valences_against_quads(V, F, V[:, :2], F, QF, r)
-    assert len(QF) == 1 and valence[1] == 2
+    assert len(QF) == quads and valence[1] == degree
 
 
 def test_max_grid_cells_near_2_64():
@@ -1122,10 +1119,7 @@ def test_integer_grid_options_need_integer_grid_map():
     # quantize, merge_cone_pairs and separate_cone_pairs act on integer translations: without integer_grid_map they
     # changed nothing and the report said nothing (SUCCESS, quantized False); refused like the command line's flags
     n = 4
-    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
-    UV = np.array([[1.7 * i, 1.7 * j] for j in range(n) for i in range(n)])
-    F = np.array([f for j in range(n - 1) for i in range(n - 1) for a in [j * n + i]
-                  for f in ([a, a + 1, a + n + 1], [a, a + n + 1, a + n])])
+    V, F, UV = flat_grid_scaled(n)
     before = UV.copy()
     for name in ("quantize", "merge_cone_pairs", "separate_cone_pairs"):
         with pytest.raises(ValueError, match=name + "=True needs integer_grid_map=True"):
