@@ -687,6 +687,12 @@ static void test_integer_grid_analytic()
       const SS::Snap_report d = SS::snap_seamless_parameterization(c, cuv, SS::parameters::grid_scale(S));
       assert(d.status == SS::SUCCESS && d.align_edges == 8 && d.near_integer_grid_map == (S == 4));
     }
+    // its border edges as constrained edges of the checker: on the isolines 0.25 / 1.25 at grid scale 1, 1 / 5 at grid
+    // scale 4 (constrained border edges were never checked: true at both)
+    auto border = m.add_property_map<Mesh::Edge_index, bool>("e:border", false).first;
+    for(Mesh::Edge_index e : m.edges()) put(border, e, m.is_border(e));
+    assert(!SS::is_exact_integer_grid_map(m, uv, SS::parameters::edge_is_constrained_map(border)) &&
+           SS::is_exact_integer_grid_map(m, uv, SS::parameters::edge_is_constrained_map(border).grid_scale(4.)));
     std::cout << "integer grid: a finer grid scale named for align edges: " << r.message << "\n";
   }
   // the same cone near an integer point (apex (1 + 1e-9, -2e-9)): pinned exactly to (1, 0)

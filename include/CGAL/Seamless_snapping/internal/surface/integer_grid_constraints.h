@@ -603,8 +603,8 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
     K[cm.target[h]] -= k;     // k(opposite(h)) = -k, seen from the other end
   };
   for(int e = 0; e < cm.n_edges; ++e) {
-    if(cm.is_border_edge(e)) continue;
     const int h = cm.edge_halfedge[e], o = cm.opp[h];
+    // (before the border test: constrained border edges were never checked, and a border edge on v = 0.5 passed)
     if(!aligned.empty() && aligned[e]) {
       const int g = cm.is_border_halfedge(h) ? o : h;
       const int c = cm.u[g] == cm.u[cm.prev[g]] ? 0 : 1;   // exactly axis-parallel (checked above)
@@ -612,6 +612,7 @@ inline bool is_exact_integer_grid_map_impl(const Corner_mesh& cm, const std::vec
         return fail("constrained edge " + vertex_pair_name(cm, h) + " lies on the isoline " + (c == 0 ? "u" : "v") +
                     " = " + format_double(std::ldexp(U(g, c), scale_exponent), 17) + " in grid units, not an integer one");
     }
+    if(cm.is_border_edge(e)) continue;
     const bool continuous = same_uv(cm, h, cm.prev[o]) && same_uv(cm, cm.prev[h], o);
     const bool seam = (!seam_override.empty() && seam_override[e] >= 0) ? seam_override[e] != 0 : !continuous;
     if(!seam) continue;
