@@ -361,7 +361,8 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
                        int corner, int direction, bool weld, std::size_t max_faces, double rotation_tolerance)
 {
   if(face < 0 || face >= (long long)(F.rows()))
-    throw Input_error("face " + std::to_string(face) + " is not a row of F (0.." + std::to_string(F.rows() - 1) + ")");
+    throw Input_error("face " + std::to_string(face) + " is not a row of F (" +
+                      (F.rows() == 0 ? std::string("F has none") : "0.." + std::to_string(F.rows() - 1)) + ")");
   if(corner < 0 || corner > 2) throw Input_error("corner " + std::to_string(corner) + " is not 0, 1 or 2");
   if(direction < 0 || direction > 3)
     throw Input_error("direction " + std::to_string(direction) + " is not 0 (+u), 1 (+v), 2 (-u) or 3 (-v)");

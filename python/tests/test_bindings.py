@@ -546,6 +546,9 @@ def test_motorcycle_graph_flat_torus():
     assert t["end"] == "closed_loop" and len(t["faces"]) == 4 and np.array_equal(t["points"][0], t["points"][-1])
     t = ss.trace_isoline(V, F, UV, FUV, 0, 0, "+u", max_faces=2)
     assert t["end"] == "length_limit" and not t["failure"] and len(t["faces"]) < 4
+    assert t["message"] == "stopped after 2 face crossings, the limit (max_faces)"       # (it was empty)
+    with pytest.raises(ss.InputError, match=r"face 0 is not a row of F \(F has none\)"):   # (it said "0..-1")
+        ss.trace_isoline(V, F[:0], UV, FUV[:0], 0, 0, "+u")
     g = ss.motorcycle_graph(V, F, UV, FUV, max_faces=1)   # the seeds meet head-on after 2 faces: cut off before
     assert g["ends"]["length_limit"] >= 1 and g["ends"]["closed_loop"] == 0
     # with noise the seams are inexact and the tracer notices; snapped, it is exact again

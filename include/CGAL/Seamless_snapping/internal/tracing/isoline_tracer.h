@@ -153,6 +153,12 @@ public:
 
   explicit Isoline_stepper(const Tracing_map& m) : map(m), max_steps(std::size_t(20) * m.cm.n_faces + 100) {}
 
+  // the message of a trace stopped at the face limit (it was empty)
+  std::string length_limit_message() const
+  {
+    return "stopped after " + std::to_string(max_steps) + " face crossings, the limit (max_faces)";
+  }
+
   const Corner_mesh& cm() const { return map.cm; }
 
   void finish(Trace_run& r, Trace_end e, const std::string& detail) const
@@ -349,7 +355,7 @@ public:
     if(tr.kind == TRANSFER_VERTEX) { r.face_h = tr.corner; return arrive_at_vertex(r, tr.corner, tr.m); }
     r.face_h = o;
     r.loc = Raw_point{ON_EDGE, o, tr.point};
-    if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
+    if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, length_limit_message());
   }
 
   // A face of zero UV area with three distinct corners (collinear: the limit of a thin positive triangle, the face
@@ -616,7 +622,7 @@ private:
     r.along_border = arrived_along_border;
     if(v == r.start_vertex && r.face_h == r.start_corner && r.m == r.start_m)
       return finish(r, Trace_end::CLOSED_LOOP, "vertex " + std::to_string(v));
-    if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, "");
+    if(r.steps >= max_steps) finish(r, Trace_end::LENGTH_LIMIT, length_limit_message());
   }
 
 };
