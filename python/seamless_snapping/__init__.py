@@ -222,8 +222,8 @@ def diagnose_seamlessness(V, F, UV, FUV, *, weld=None, align_boundary=True, rota
 
     Returns a dict: "status" ("SUCCESS" when the rows could be built; otherwise the snap's own refusal, e.g.
     "NOT_QUARTER_TURN_SEAMLESS" or, with integer_grid_map, "INVALID_INPUT" for a map not near an integer-grid map,
-    with "message"), "exact" (every row holds exactly), "rows", "violated_rows", "violated_connections", and when a
-    row is violated the worst one (the largest exact |C_i u - b_i|): "row", "kind" ("transition", "alignment",
+    with "message"), "exact" (every row holds exactly; None where the rows could not be built: not evaluated),
+    "rows", "violated_rows", "violated_connections", and when a row is violated the worst one (the largest exact |C_i u - b_i|): "row", "kind" ("transition", "alignment",
     "transition or alignment", "connection"), "edge" (its two rows of V; None for a connection row), "corners"
     ([row of F, corner 0-2] per sector of the row), "residual" (a fractions.Fraction, exact, in UV units) and
     "residual_double". With weld=True the rows of V at one position are one vertex (cut meshes)."""

@@ -491,7 +491,8 @@ py::dict diagnose_seamlessness(const MatrixXdR& V, const MatrixXlR& F, const Mat
                                                     .integer_grid_map(integer_grid_map).grid_scale(grid_scale));
   }
   py::dict d = failed_dict(r.status, r.message);
-  d["exact"] = r.exact;
+  if(r.status == SS::SUCCESS) d["exact"] = r.exact;               // the rows were evaluated
+  else d["exact"] = py::none();
   d["rows"] = r.rows;
   d["violated_rows"] = r.violated_rows;
   d["violated_connections"] = r.violated_connections;

@@ -164,6 +164,7 @@ def test_diagnose_seamlessness():
     assert d["status"] == "SUCCESS" and not d["exact"] and 0 < d["violated_rows"] <= d["rows"]
     assert d["kind"] == "transition" and isinstance(d["residual"], Fraction)
     assert 0 < abs(d["residual"]) <= 4e-12 and d["residual_double"] == float(d["residual"])
+    assert "residual 0.000000" not in d["message"] and "UV units (exactly " in d["message"]   # (it printed 6 decimals)
     # recomputed here in Fractions: the worst residual is the largest mismatch of an edge's transition at its two ends,
     # over the edges whose two faces give different UVs (the upper corners are perturbed one by one, so the upper
     # half's edges are cut edges too), with the quarter turn that maps one side onto the other
@@ -199,7 +200,7 @@ def test_diagnose_seamlessness():
     assert d4["status"] == "SUCCESS" and d4["exact"] and d4["rows"] > ss.diagnose_seamlessness(Vc, Fc, UV3, FUV3)["rows"]
     assert not ss.diagnose_seamlessness(Vc, Fc, UVc, FUVc, integer_grid_map=True)["exact"]
     bad = ss.diagnose_seamlessness(V, F[:, :2], UV, FUV)
-    assert bad["status"] == "INVALID_INPUT" and "3 columns" in bad["message"] and not bad["exact"] and bad["rows"] == 0
+    assert bad["status"] == "INVALID_INPUT" and "3 columns" in bad["message"] and bad["exact"] is None and bad["rows"] == 0
 
 
 def orientations(F, UV, FUV):

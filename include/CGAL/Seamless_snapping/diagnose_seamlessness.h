@@ -135,8 +135,8 @@ Seamless_diagnosis<TriangleMesh> diagnose_seamlessness(const TriangleMesh& tm, H
   d.residual = os.str();
   d.residual_double = CGAL::to_double(residual);
   d.message = std::to_string(d.violated_rows) + " of " + std::to_string(d.rows) + " constraint rows are violated; worst: row " +
-              std::to_string(d.row) + " (" + d.kind + ", " + where + "), residual " + std::to_string(d.residual_double) +
-              " UV units";
+              std::to_string(d.row) + " (" + d.kind + ", " + where + "), residual " +
+              internal::format_double(d.residual_double, 6) + " UV units (exactly " + d.residual + ")";
   return d;
 }
 
