@@ -202,14 +202,16 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
 
 def is_exactly_seamless(V, F, UV, FUV, *, weld=None):
     """True iff every seam transition of the corner map is a rotation by k*90 degrees plus a translation,
-    exactly (rational arithmetic), and aligned boundaries are axis-parallel exactly."""
+    exactly (rational arithmetic). Border edges are not checked for alignment here (diagnose_seamlessness() checks the
+    rows snap() enforces, the aligned border included; the C++ function takes the edges to check)."""
     return bool(_core.is_exactly_seamless(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld)))
 
 
 def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=None, grid_scale=1.0):
-    """True iff the corner map is exactly seamless, every cut edge has an integer translation, every cone
-    sits on an integer point and aligned edges lie on integer isolines, all exactly (rational arithmetic),
-    after multiplying the UVs by `grid_scale` (a power of 2)."""
+    """True iff the corner map is exactly seamless, every cut edge has an integer translation and every cone
+    sits on an integer point, all exactly (rational arithmetic), after multiplying the UVs by `grid_scale` (a power
+    of 2). Border edges are not checked (diagnose_seamlessness(..., integer_grid_map=True) checks the aligned border
+    on integer isolines; the C++ function takes the edges to check)."""
     return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), float(grid_scale)))
 
 
@@ -240,7 +242,9 @@ def project(C, b, xbar, *, delta_margin_bits=1, force_multiprecision=False, rais
     """Exact projection: doubles x near xbar with C x = b exactly (integer C and b; Sec. 4 of the paper).
 
     C: a scipy.sparse matrix (any format) or a 2-D array of integers; b: integers, one per row of C;
-    xbar: floats, one per column. Returns (x, report).
+    xbar: floats, one per column. Returns (x, report): report as the C++ Projection_report, with "large_change" (the
+    result is exact but moved x̄ by far more than x̄ violated the rows), "input_violation", "per_row_grids" and
+    "minimal_change".
     """
     if hasattr(C, "tocoo"):
         coo = C.tocoo()

@@ -146,6 +146,10 @@ std::string projection_report_json(const SS::Projection_report& r, const SS::Irr
   o << "{\"status\": " << quoted(SS::status_name(r.status)) << ", \"message\": " << quoted(r.message)
     << ", \"delta_exponent\": " << r.delta_exponent << ", \"quantum\": " << r.quantum
     << ", \"max_abs_change\": " << r.max_abs_change << ", \"changed_variables\": " << r.changed_variables
+    << ", \"input_violation\": " << SS::IO::internal::json_number(r.input_violation)
+    << ", \"large_change\": " << (r.large_change ? "true" : "false")
+    << ", \"per_row_grids\": " << (r.per_row_grids ? "true" : "false")
+    << ", \"minimal_change\": " << (r.minimal_change ? "true" : "false")
     << ", \"rank\": " << st.rank << ", \"free_variables\": " << st.free_variables
     << ", \"implied_variables\": " << st.implied_variables << ", \"irref_nonzeros\": " << st.irref_nonzeros
     << ", \"integer_type\": " << quoted(st.integer_type()) << ", \"initialize_ms\": " << st.initialize_ms

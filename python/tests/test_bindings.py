@@ -357,6 +357,7 @@ def test_project_unsigned_beyond_int64():
             ss.project(np.array(C, dtype=np.uint64), np.array(b, dtype=np.uint64), [0.0, 0.0, 0.0])
     x, r = ss.project(np.array([[3, 1, 0]], dtype=np.uint64), np.array([5], dtype=np.uint64), [1.0, 1.0, 1.0])
     assert r["status"] == "SUCCESS" and 3 * Fraction(x[0]) + Fraction(x[1]) == 5
+    assert r["minimal_change"] and not r["large_change"] and not r["per_row_grids"] and r["input_violation"] > 0
 
 
 def test_project_infeasible_and_bad_input():

@@ -37,8 +37,10 @@ struct Projection_options
   /// projections (e.g. the node system and the propagation of Sec. 5.3) share one grid `F_delta`.
   /// Whether given or taken from x̄, `K` must lie in [-1022, 1023] (delta a normal double, the quantum
   /// `2^(K-52)` at least the smallest subnormal): otherwise `project()` returns `RANGE_EXCEEDED`.
-  /// Within this range the projection is scale covariant: for `b = 0`, x̄ scaled by `2^j` gives `x`
-  /// scaled by `2^j`, bit for bit.
+  /// Within this range the projection with `minimal_change = false` is scale covariant: for `b = 0`, x̄ scaled by
+  /// `2^j` gives `x` scaled by `2^j`, bit for bit; with `minimal_change` (the default) too while the nonzero |x̄_i| stay
+  /// within about `2^-800 .. 2^800` (the floating-point least-squares step over- or underflows near the ends of the
+  /// double range: at `K = 1016` or `-998` the results differ, found by a sweep; `fuzz_projection` checks that range).
   /// An input that already satisfies every row exactly is then returned unchanged only if its
   /// constrained values lie on that grid.
   std::optional<int> delta_exponent;
