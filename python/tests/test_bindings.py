@@ -741,6 +741,13 @@ def test_obj_text_after_coordinates(tmp_path):
     cr.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r").encode())
     with pytest.raises(ss.InputError, match=r"cr.obj:1: unexpected text 'v' .*carriage return alone"):
         ss.read_obj(cr)
+    cr.write_bytes(("# an exporter's header\nv 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r").encode())
+    with pytest.raises(ss.InputError, match=r"cr.obj: empty mesh: no face in 1 lines .*carriage return alone"):
+        ss.read_obj(cr)                                                    # (the whole file a comment: no hint)
+    huge = tmp_path / "huge.obj"
+    huge.write_text("v 0 0 0 1e999\nv 1 0 0\nv 0 1 0\n" + tail)
+    with pytest.raises(ss.InputError, match=r"huge.obj:1: number '1e999' after .* outside the range of double"):
+        ss.read_obj(huge)
     crlf = tmp_path / "crlf.obj"
     crlf.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r\n").encode())
     assert np.array_equal(ss.read_obj(crlf)[0], V)

@@ -147,6 +147,13 @@ inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c ==
 
 inline void skip_spaces(const char*& p, const char* end) { while(p != end && is_space(*p)) ++p; }
 
+// the end of the messages on a file whose line ends are carriage returns alone
+inline std::string cr_line_ends_hint()
+{
+  return "line ends of a carriage return alone (classic Mac OS) are not line breaks here; convert the file to LF or "
+         "CRLF line ends";
+}
+
 // A token of the file for a message, quoted: at most 60 characters of it, then "..." and its
 // length, so that a huge unparsable token does not end up whole in the message.
 inline std::string quote_token(const char* begin, const char* end)
@@ -191,6 +198,7 @@ struct Obj_soup
 struct Obj_parse_state
 {
   std::size_t lines = 0;
+  bool first_line_has_cr = false;   // a carriage return inside the first line (line ends of a carriage return alone)
   long long max_v = 0, max_vt = 0;
   std::size_t max_v_line = 0, max_vt_line = 0;
 };
@@ -252,11 +260,13 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
       if(parse_double(p, end, extra, oor) && (p == end || is_space(*p))) continue;
       const char* tok_end = start; while(tok_end != end && !is_space(*tok_end)) ++tok_end;
       const char* cr = static_cast<const char*>(std::memchr(start, '\r', std::size_t(end - start)));
+      if(oor)
+        return fail(lineno, "number " + quote_token(start, tok_end) + " after the coordinates of a '" + what +
+                            "' record is outside the range of double");
       return fail(lineno, "unexpected text " + quote_token(start, tok_end) + " after the coordinates of a '" + what +
                           "' record (only numbers may follow them: w, or a color)" +
-                          (cr != nullptr && cr + 1 != end ? "; the line holds a carriage return in its middle: line ends "
-                                                            "of a carriage return alone (classic Mac OS) are not line "
-                                                            "breaks here; convert the file to LF or CRLF line ends" : ""));
+                          (cr != nullptr && cr + 1 != end ? "; the line holds a carriage return in its middle: " +
+                                                            cr_line_ends_hint() : ""));
     }
   };
 
@@ -325,6 +335,7 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
   const std::size_t lines = for_each_line(is, [&](const char* p, const char* end, std::size_t lineno) -> bool {
     // a UTF-8 byte-order mark at the start of the file is not part of the first record
     if(whole && lineno == 1 && end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;
+    if(whole && lineno == 1 && end - p >= 2) state.first_line_has_cr = std::memchr(p, '\r', std::size_t(end - p - 1)) != nullptr;
     // A '#' starts a comment anywhere on the line (also covers "#scale_uv" and friends).
     if(const void* hash = std::memchr(p, '#', std::size_t(end - p)))   // from p: after a byte-order mark too
       end = static_cast<const char*>(hash);
@@ -386,7 +397,8 @@ inline Status finish_obj(const Obj_soup& soup, const Obj_parse_state& state, con
   }
   if(soup.face_v.empty()) {
     message = where + ": empty mesh: no face in " + std::to_string(lineno) + " lines (" +
-              std::to_string(soup.points.size()) + " vertices)";
+              std::to_string(soup.points.size()) + " vertices)" +
+              (lineno == 1 && state.first_line_has_cr ? "; its one line holds carriage returns: " + cr_line_ends_hint() : "");
     return INVALID_INPUT;
   }
   return SUCCESS;
