@@ -345,6 +345,14 @@ for bad in ["3", "0", "-1", "nan", "inf"]:   # not a power of two: a command-lin
     rc, text = run(src, os.path.join(work, "bad_scale.obj"), "--grid-scale", bad)
     check(rc == 2 and "power of two" in text and not os.path.exists(os.path.join(work, "bad_scale.obj")),
           "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))
+# a report or VVAL file naming the input: the map was replaced by JSON (exit 0); now exit 2, the input unchanged
+copy = os.path.join(work, "input_copy.obj")
+shutil.copyfile(src, copy)
+before = open(copy, "rb").read()
+for args in [["--report", copy], ["--integer-grid", "--vval", copy]]:
+    rc, text = run(copy, os.path.join(work, "over_input.obj"), *args)
+    check(rc == 2 and "name one file" in text and open(copy, "rb").read() == before,
+          "%s naming IN: exit 2, IN unchanged: %d %s" % (args[-2], rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
 

@@ -689,6 +689,10 @@ int main(int argc, char** argv)
   const std::string same = SS::IO::internal::same_output_file({{"OUT", out}, {"--report", report_file}, {"--vval", vval_file},
                                                                {"--summary", summary_file}});
   if(!same.empty()) { std::cerr << "seamless_snap: " << same << "\n" << usage_text; return 2; }
+  // a report or VVAL file naming the input replaced the map (OUT = IN snaps the file in place: allowed)
+  const std::string over_input = SS::IO::internal::same_output_file({{"IN", in}, {"--report", report_file},
+                                                                     {"--vval", vval_file}});
+  if(!over_input.empty()) { std::cerr << "seamless_snap: " << over_input << "\n" << usage_text; return 2; }
   if(untangle == 2) { std::cerr << "seamless_snap: --untangle and --no-untangle exclude each other\n" << usage_text; return 2; }
   if(o.merge_cone_pairs && !integer_grid) {
     std::cerr << "seamless_snap: --merge-cone-pairs needs --integer-grid (cones are merged on integer points)\n" << usage_text;
