@@ -13,9 +13,10 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
     QV, QF, report = seamless_snapping.extract_quad_mesh(V, F, UV3, FUV3)   # the quad mesh of an exact integer-grid map
     valence, report = seamless_snapping.quad_valences(V, F, UV3, FUV3)     # per vertex, e.g. for libQEx: write_vval()
 
-The functions that read a mesh (V, F, UV, FUV) weld a cut mesh by default (weld=None: is_cut_mesh(), the border edges
-in pairs at bit-identical 3D points, as libigl and Directional write their maps; its seams would otherwise be borders),
-as the command line does; weld=True / False weld or not.
+The functions that read a mesh (V, F, UV, FUV) weld as the command line does by default (weld=None): a cut mesh
+(is_cut_mesh(): the border edges in pairs at bit-identical 3D points, as libigl and Directional write their maps; its
+seams would otherwise be borders), or a mesh refused as it is but valid welded (a cut mesh with a hole at a seam);
+weld=True / False weld or not.
 
 snap, project, extract_quad_mesh and quad_valences return new arrays only when they succeed (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
@@ -143,7 +144,8 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
     (rows shared by corners that were snapped apart are split; see the C++ reference). `report` is the
     C++ Snap_report as a dict. `weld=True` merges bit-identical vertices first; the default (None) welds a cut mesh
     (is_cut_mesh(): its seams would otherwise be borders, and the map be called "already exactly seamless" with no cut
-    edge), as the command line does, and report["welded_automatically"] says so; weld=False never welds.
+    edge) or a mesh refused as it is but valid welded, as the command line does, and report["welded_automatically"]
+    says so; weld=False never welds.
     `minimal_change=False` snaps the input itself (the paper's point) instead of the L2-closest point of the
     constraints; `integer_grid_map=True` snaps to an exact integer-grid map (integer translations, cones on
     integer points, aligned edges on integer isolines) whose grid is at multiples of 1/`grid_scale` (a power of 2).

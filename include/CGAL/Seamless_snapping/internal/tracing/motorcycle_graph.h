@@ -18,7 +18,7 @@
 // right angles the one heading a quarter turn counter-clockwise from the other goes on. The result depends
 // neither on the triangulation nor on the numbering.
 // A map without cones and border corners (a torus, a cylinder) gets four seeded traces, +u, +v, -u and -v, from the
-// first corner of the first interior vertex: with all four the seed is a node with right angles only (with two,
+// first corner (in halfedge order) whose vertex is interior: with all four the seed is a node with right angles only (with two,
 // the angle between +v and +u the other way round would be a 270 degree patch corner).
 
 #include <CGAL/Seamless_snapping/internal/tracing/isoline_tracer.h>
