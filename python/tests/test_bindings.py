@@ -733,23 +733,22 @@ def test_obj_text_after_coordinates(tmp_path):
     ok.write_text("v 0 0 0 1 0.5 0.25  # a color\nv 1 0 0 1\nv 0 1 0\n" + tail)
     V, F, UV, FUV = ss.read_obj(ok)
     assert V.tolist() == [[0, 0, 0], [1, 0, 0], [0, 1, 0]] and len(F) == 1
-    junk = tmp_path / "junk.obj"
-    junk.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0 junk\n" + tail)
-    with pytest.raises(ss.InputError, match=r"junk.obj:3: unexpected text 'junk' after the coordinates of a 'v' record"):
-        ss.read_obj(junk)
-    cr = tmp_path / "cr.obj"
-    cr.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r").encode())
-    with pytest.raises(ss.InputError, match=r"cr.obj:1: unexpected text 'v' .*carriage return alone"):
-        ss.read_obj(cr)
-    cr.write_bytes(("# an exporter's header\nv 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r").encode())
-    with pytest.raises(ss.InputError, match=r"cr.obj: empty mesh: no face in 1 lines .*carriage return alone"):
-        ss.read_obj(cr)                                                    # (the whole file a comment: no hint)
-    huge = tmp_path / "huge.obj"
-    huge.write_text("v 0 0 0 1e999\nv 1 0 0\nv 0 1 0\n" + tail)
-    with pytest.raises(ss.InputError, match=r"huge.obj:1: number '1e999' after .* outside the range of double"):
-        ss.read_obj(huge)
+    lines = "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail
+    cr = lambda text: text.replace("\n", "\r")                 # carriage returns alone as line ends
+    for name, text, refusal in [
+            ("junk.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0 junk\n" + tail,
+             r"junk.obj:3: unexpected text 'junk' after the coordinates of a 'v' record"),
+            ("cr.obj", cr(lines), r"cr.obj:1: unexpected text 'v' .*carriage return alone"),
+            # the whole file one comment (it had no hint)
+            ("cr_comment.obj", cr("# an exporter's header\n" + lines),
+             r"cr_comment.obj: empty mesh: no face in 1 lines .*carriage return alone"),
+            ("huge.obj", "v 0 0 0 1e999\n" + lines[8:],
+             r"huge.obj:1: number '1e999' after .* outside the range of double")]:
+        (tmp_path / name).write_bytes(text.encode())
+        with pytest.raises(ss.InputError, match=refusal):
+            ss.read_obj(tmp_path / name)
     crlf = tmp_path / "crlf.obj"
-    crlf.write_bytes(("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tail).replace("\n", "\r\n").encode())
+    crlf.write_bytes(lines.replace("\n", "\r\n").encode())
     assert np.array_equal(ss.read_obj(crlf)[0], V)
 
 
