@@ -345,6 +345,12 @@ for bad in ["3", "0", "-1", "nan", "inf"]:   # not a power of two: a command-lin
     rc, text = run(src, os.path.join(work, "bad_scale.obj"), "--grid-scale", bad)
     check(rc == 2 and "power of two" in text and not os.path.exists(os.path.join(work, "bad_scale.obj")),
           "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))
+# counts and numbers are read whole: " -1" threads wrapped around to ULLONG_MAX in std::strtoul (then refused only by
+# the range), "2x" or an empty value must not read as a prefix
+for opt, bad in [("--threads", " -1"), ("--threads", "2x"), ("--threads", ""), ("--threads", "1025"),
+                 ("--max-untangle-change", "1 "), ("--sharp-angle", "")]:
+    rc, text = run(src, os.path.join(work, "bad_value.obj"), opt, bad)
+    check(rc == 2 and not os.path.exists(os.path.join(work, "bad_value.obj")), "%s %r: exit 2: %d %s" % (opt, bad, rc, text))
 # a report or VVAL file naming the input: the map was replaced by JSON (exit 0); now exit 2, the input unchanged
 copy = os.path.join(work, "input_copy.obj")
 shutil.copyfile(src, copy)

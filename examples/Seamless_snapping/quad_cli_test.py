@@ -169,6 +169,11 @@ for bad in ["3", "0", "-1", "nan", "inf"]:
     rc, text = run(parallelogram, out, "--grid-scale", bad)
     check(rc == 2 and "power of two" in text and not os.path.exists(out), "--grid-scale %s: exit 2: %d %s" % (bad, rc, text))
 
+for opt, bad in [("--threads", " -1"), ("--threads", "+2"), ("--max-grid-cells", "-5"), ("--max-grid-cells", "1e3")]:
+    out = os.path.join(work, "refused.obj")
+    rc, text = run(parallelogram, out, opt, bad)
+    check(rc == 2 and not os.path.exists(out), "%s %r: exit 2: %d %s" % (opt, bad, rc, text))
+
 # the fold-over grid untangled (the default): a valid quad mesh of the 3 x 3 grid, 9 quads, 16 vertices
 out = os.path.join(work, "untangled.obj")
 rc, text = run(folds, out, "--report", report)

@@ -21,6 +21,7 @@
 #include <CGAL/Seamless_snapping/quad_mesh_patches.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
 #include <CGAL/Seamless_snapping/version.h>
+#include <CGAL/Seamless_snapping/internal/io/command_line.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
@@ -148,14 +149,6 @@ static std::string extension_of(const std::string& file)
   return e;
 }
 
-// `text` as a whole decimal count in [0, largest] (no sign, nothing after it; an overflow reads as ULLONG_MAX)
-static bool parse_count(const char* text, unsigned long long largest, unsigned long long& n)
-{
-  char* end = nullptr;
-  n = std::strtoull(text, &end, 10);
-  return end != text && *end == '\0' && text[0] != '-' && n <= largest;
-}
-
 int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
@@ -174,17 +167,14 @@ int main(int argc, char** argv)
     else if(a == "--keep-cone-pairs") merge = false;
     else if(a == "--quantize") quantize = true;
     else if(a == "--grid-scale") {
-      char* end = nullptr;
-      int exponent;
-      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !SS::internal::grid_scale_exponent(grid_scale, exponent)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_grid_scale(argv[i + 1], grid_scale)) {
         std::cerr << "seamless_quad: --grid-scale needs a power of two (1, 2, 4, 0.5, ...)\n" << usage_text; return 2;
       }
       ++i;
     }
     else if(a == "--max-grid-cells") {
       unsigned long long n = 0;
-      if(i + 1 >= argc || !parse_count(argv[i + 1], ULLONG_MAX - 1, n)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_count(argv[i + 1], ULLONG_MAX - 1, n)) {
         std::cerr << "seamless_quad: --max-grid-cells needs a number of cells\n" << usage_text; return 2;
       }
       max_grid_cells = std::size_t(n);
@@ -192,7 +182,7 @@ int main(int argc, char** argv)
     }
     else if(a == "--threads") {
       unsigned long long n = 0;
-      if(i + 1 >= argc || !parse_count(argv[i + 1], 1024, n)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_count(argv[i + 1], 1024, n)) {
         std::cerr << "seamless_quad: --threads needs a number of threads in [0, 1024]\n" << usage_text; return 2;
       }
       threads = unsigned(n);

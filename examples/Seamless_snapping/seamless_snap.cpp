@@ -24,6 +24,7 @@
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/quad_valences.h>
 #include <CGAL/Seamless_snapping/snap_seamless_parameterization.h>
+#include <CGAL/Seamless_snapping/internal/io/command_line.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 #include <CGAL/Seamless_snapping/internal/threads.h>
@@ -602,18 +603,15 @@ int main(int argc, char** argv)
     else if(a == "--separate-cone-pairs") o.separate_cone_pairs = true;
     else if(a == "--quantize") o.quantize = true;
     else if(a == "--max-untangle-change") {
-      char* end = nullptr;
-      if(i + 1 >= argc || (max_untangle_change = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !(max_untangle_change >= 0)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_number(argv[i + 1], max_untangle_change) || !(max_untangle_change >= 0)) {
         std::cerr << "seamless_snap: --max-untangle-change needs a number of grid cells >= 0\n" << usage_text; return 2;
       }
       ++i;
     }
     else if(a == "--vt-per-corner") vt_per_corner = true;
     else if(a == "--threads") {
-      char* end = nullptr;
-      const unsigned long n = i + 1 < argc ? std::strtoul(argv[i + 1], &end, 10) : 0;
-      if(i + 1 >= argc || end == argv[i + 1] || *end != '\0' || argv[i + 1][0] == '-' || n > 1024) {
+      unsigned long long n = 0;
+      if(i + 1 >= argc || !SS::IO::internal::parse_count(argv[i + 1], 1024, n)) {
         std::cerr << "seamless_snap: --threads needs a number of threads in [0, 1024]\n" << usage_text; return 2;
       }
       o.threads = unsigned(n);
@@ -632,18 +630,13 @@ int main(int argc, char** argv)
       features_file = argv[++i];
     }
     else if(a == "--sharp-angle") {
-      char* end = nullptr;
-      if(i + 1 >= argc || (sharp_angle = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !(sharp_angle >= 0 && sharp_angle <= 180)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_number(argv[i + 1], sharp_angle) || !(sharp_angle >= 0 && sharp_angle <= 180)) {
         std::cerr << "seamless_snap: --sharp-angle needs an angle in degrees in [0, 180]\n" << usage_text; return 2;
       }
       ++i;
     }
     else if(a == "--grid-scale") {
-      char* end = nullptr;
-      int exponent;
-      if(i + 1 >= argc || (grid_scale = std::strtod(argv[i + 1], &end), end == argv[i + 1] || *end != '\0') ||
-         !SS::internal::grid_scale_exponent(grid_scale, exponent)) {
+      if(i + 1 >= argc || !SS::IO::internal::parse_grid_scale(argv[i + 1], grid_scale)) {
         std::cerr << "seamless_snap: --grid-scale needs a power of two (1, 2, 4, 0.5, ...)\n" << usage_text; return 2;
       }
       ++i;
