@@ -542,11 +542,11 @@ inline Status add_integer_grid_rows(const Corner_mesh& cm, const Seam_topology& 
     return RANGE_EXCEEDED;
   }
   for(int e : st.cut_edges) {
-    const int h = cm.edge_halfedge[e], o = cm.opp[h];
-    const int si = st.sector_of[cm.prev[h]], sj = st.sector_of[o];
+    const int h = cm.edge_halfedge[e];
+    const Cut_edge_ends s = cut_edge_ends(cm, st, h);
     const Quarter_turn R(rot.k[h]);
     for(int c = 0; c < 2; ++c)
-      rows.add({ {2 * sj + c, 1}, {2 * si + R.col[c], -R.sign[c]} }, e, t[2 * h + c] * (1L << rhs_shift));
+      rows.add({ {2 * s.j[0] + c, 1}, {2 * s.i[0] + R.col[c], -R.sign[c]} }, e, t[2 * h + c] * (1L << rhs_shift));
   }
   for(int e : al.edges) {
     std::size_t a, b;

@@ -156,12 +156,12 @@ inline int aligned_candidates(Isoline_classes& classes, bool aligned, int a, con
   for(int c = 0; c < 2; ++c) {
     const Isoline_classes::Relation r = classes.find(std::size_t(a + c));
     long value;
-    if(classes.fixed(r.root, value) && std::fabs(double(r.sign) * double(value) + double(r.offset) - x[c]) <= 2)
-      want[c] = {r.sign * value + r.offset};
-    else if(classes.fixed(r.root, value))
-      return 0;                                                   // beyond 2 cells: none
-    else
+    if(!classes.fixed(r.root, value))
       want[c] = {long(std::floor(x[c])), long(std::ceil(x[c]))};
+    else if(std::fabs(double(r.sign) * double(value) + double(r.offset) - x[c]) <= 2)
+      want[c] = {r.sign * value + r.offset};
+    else
+      return 0;                                                   // beyond 2 cells: none
   }
   if(want[0].size() == 2 && want[1].size() == 2) return 0;      // nothing fixed: the four of diffuse_rounding()
   int n = 0;

@@ -163,12 +163,11 @@ inline void relate_align_edges(const Corner_mesh& cm, const Seam_topology& st, c
 inline void relate_cut_edge(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                             const std::vector<long>& t, int h, Isoline_classes& classes)
 {
-  const int o = cm.opp[h];
   const Quarter_turn R(rot.k[h]);
-  const int ends[2][2] = {{st.sector_of[cm.prev[h]], st.sector_of[o]}, {st.sector_of[h], st.sector_of[cm.prev[o]]}};
-  for(const auto& end : ends)
+  const Cut_edge_ends s = cut_edge_ends(cm, st, h);
+  for(int m = 0; m < 2; ++m)
     for(int c = 0; c < 2; ++c)
-      classes.relate(2 * std::size_t(end[1]) + std::size_t(c), R.sign[c], 2 * std::size_t(end[0]) + std::size_t(R.col[c]),
+      classes.relate(2 * std::size_t(s.j[m]) + std::size_t(c), R.sign[c], 2 * std::size_t(s.i[m]) + std::size_t(R.col[c]),
                      t[2 * std::size_t(h) + std::size_t(c)]);
 }
 

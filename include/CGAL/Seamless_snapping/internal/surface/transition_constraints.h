@@ -136,17 +136,30 @@ inline Status find_align_edges(const Corner_mesh& cm, const Seam_topology& st, b
   return SUCCESS;
 }
 
+// The sectors at the two ends of a cut edge, given by its halfedge h: at end m (0: the source of h, 1: its target)
+// i[m] in the chart of h's face and j[m] in the chart of the opposite face; the transition of h maps each i[m] to
+// j[m] (the rows of Eq. (4) below, the integer translations of add_integer_grid_rows(), relate_cut_edge())
+struct Cut_edge_ends
+{
+  int i[2], j[2];
+};
+
+inline Cut_edge_ends cut_edge_ends(const Corner_mesh& cm, const Seam_topology& st, int h)
+{
+  const int o = cm.opp[h];
+  return {{st.sector_of[cm.prev[h]], st.sector_of[h]}, {st.sector_of[o], st.sector_of[cm.prev[o]]}};
+}
+
 // Eq. (4): the two rows of the cut edge e (component c = 0, 1)
 inline void add_transition_rows(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                                 int e, Constraint_rows& rows)
 {
-  const int h = cm.edge_halfedge[e], o = cm.opp[h];
-  const int ai = st.sector_of[cm.prev[h]], bi = st.sector_of[h];
-  const int aj = st.sector_of[o], bj = st.sector_of[cm.prev[o]];
+  const int h = cm.edge_halfedge[e];
+  const Cut_edge_ends s = cut_edge_ends(cm, st, h);
   const Quarter_turn R(rot.k[h]);
   for(int c = 0; c < 2; ++c)
-    rows.add({ {2 * ai + R.col[c], R.sign[c]}, {2 * bi + R.col[c], -R.sign[c]},
-               {2 * aj + c, -1}, {2 * bj + c, 1} }, e);
+    rows.add({ {2 * s.i[0] + R.col[c], R.sign[c]}, {2 * s.i[1] + R.col[c], -R.sign[c]},
+               {2 * s.j[0] + c, -1}, {2 * s.j[1] + c, 1} }, e);
 }
 
 // Eq. (5): the row of the align edge e
