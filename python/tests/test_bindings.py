@@ -435,6 +435,36 @@ def test_trace_isoline_cut_grid():
     assert ss.trace_isoline(V, F, bad, FUV2, 0, 0, "+u")["status"] == "INVALID_INPUT"
 
 
+
+def test_trace_isoline_through_collapsed_face():
+    # A flat 3 x 3 grid, UV = (x, y), whose triangle (1, 6, 5) is split at m = (1.5, 1), lifted in 3D, on its side 5-6:
+    # the zero-area face (5, m, 6) with three distinct corners, its long side 5-6, the limit of a thin positive
+    # triangle whose middle corner m lies just below that side. From m, -u ended with folded_face (the ray along the
+    # line was given to the zero-area face) while +u ended at the border; +v crossed the face without a segment, so
+    # its polyline started on the long side, not at m; from the face's end corners 5 (+u) and 6 (-u) the end depended
+    # on the corner given (folded_face from the corner whose wedge is next to the face's wedge of zero width).
+    V, F, UV = flat_grid_scaled(4, scale=1.0)
+    m = len(V)
+    V = np.vstack([V, [1.5, 1.0, 0.3]])
+    UV = np.vstack([UV, [1.5, 1.0]])
+    F = np.vstack([[f for f in F if sorted(f) != [1, 5, 6]], [[1, 6, m], [1, m, 5], [5, m, 6]]])
+    assert ss.is_exactly_seamless(V, F, UV, F)
+    ends = {}
+    for v, direction in [(m, d) for d in range(4)] + [(5, 0), (6, 2)]:
+        for f, c in zip(*np.nonzero(F == v)):              # every corner of v gives the same trace
+            t = ss.trace_isoline(V, F, UV, F, f, c, direction)
+            key = (v, direction)
+            got = (t["end"], t["message"], list(t["faces"]), t["points"].tolist())
+            assert ends.setdefault(key, got) == got, (key, f, c)
+            assert not t["failure"] and t["end"] == "border"
+            assert len(t["faces"]) == t["faces_crossed"] and np.array_equal(t["points"][0], V[v])
+    # along the line from m both ways through the positive faces beside it, to the border vertices (0, 1) and (3, 1)
+    assert ends[(m, 2)][3] == [[1.5, 1.0, 0.3], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+    assert ends[(m, 0)][3] == [[1.5, 1.0, 0.3], [2.0, 1.0, 0.0], [3.0, 1.0, 0.0]]
+    # across the line: the first segment crosses the zero-area face, from m to the point (1.5, 1) of its long side
+    up = ends[(m, 1)]
+    assert up[2][0] == len(F) - 1 and up[3][:2] == [[1.5, 1.0, 0.3], [1.5, 1.0, 0.0]] and up[3][-1] == [1.5, 3.0, 0.0]
+
 def test_keyword_values_out_of_range():
     # values the C++ types cannot take, or NaN tolerances: InputError naming the keyword (a TypeError of the bindings
     # before, and rotation_tolerance=nan made an exact map "not quarter-turn seamless")

@@ -32,7 +32,7 @@ enum class Trace_end
   NO_CONTINUATION_AT_VERTEX,     ///< no outgoing sector continues the isoline at a regular vertex (Fig. 3b)
   SEVERAL_CONTINUATIONS_AT_VERTEX,///< more than one sector continues it (Fig. 3b)
   FELL_OFF_BORDER,               ///< a trace running along the border left the mesh (Fig. 3c)
-  FOLDED_FACE,                   ///< entered a face whose UV triangle is flipped or degenerate (not locally injective); a zero-area triangle with three distinct (collinear) corners is crossed instead, as the limit of a thin positive one, unless the trace runs along its line
+  FOLDED_FACE,                   ///< entered a face whose UV triangle is flipped or degenerate (not locally injective); a zero-area triangle with three distinct (collinear) corners is crossed instead, as the limit of a thin positive one (a segment of zero UV length), unless the trace runs along its line (a ray along its line from a vertex of it leaves by a positive face beside it)
   DEGENERATE_VERTEX,             ///< passed a vertex with a zero-length UV edge (no direction)
   INVALID_START                  ///< the start location is not on the surface, or no sector contains the start direction; or the start, the direction or the target of `Trace_options` is none of the mesh the tracer read (`message` says which)
 };

@@ -71,7 +71,8 @@ struct Trace_segment
 /*!
  * \ingroup PkgSeamlessSnappingRef
  * The result of tracing one isoline: the polyline as segments (consecutive segments meet in the same
- * surface point, each given in the chart of its own face) and how it ended.
+ * surface point, each given in the chart of its own face; the crossing of a zero-area triangle with three distinct
+ * corners is a segment of zero UV length between two different surface points) and how it ended.
  */
 template <class TriangleMesh>
 struct Isoline_trace
@@ -327,10 +328,13 @@ private:
     // barycentric coordinates w.r.t. the targets of halfedge(f), next, next-next
     const halfedge_descriptor hf = halfedge(out.face, tm_);
     const int c[3] = {index(hf), index(next(hf, tm_)), index(next(next(hf, tm_), tm_))};
-    if(internal::tracing::face_orientation(map_.cm, c[0]) != 0) {
-      internal::tracing::FT b[3] = {internal::tracing::zero_rational(), internal::tracing::zero_rational(),
-                                    internal::tracing::zero_rational()};
-      if(!place_weights(p, c, b)) {
+    internal::tracing::FT b[3] = {internal::tracing::zero_rational(), internal::tracing::zero_rational(),
+                                  internal::tracing::zero_rational()};
+    // a zero-area face has no barycentric coordinates of its own; the ends of the segment crossing it (a corner or a
+    // point of a side) still have theirs, read off their place
+    const bool placed = place_weights(p, c, b);
+    if(placed || internal::tracing::face_orientation(map_.cm, c[0]) != 0) {
+      if(!placed) {
         Exact_uv cuv[3];
         for(int i = 0; i < 3; ++i) cuv[i] = internal::tracing::corner_uv(map_, c[i]);
         internal::tracing::barycentric(cuv, p.uv, b);

@@ -117,7 +117,7 @@ struct Trace_run
   Exact_uv p;
   int m = 0;
   Raw_point loc;              // where p is
-  bool at_start = true;       // no segment yet
+  bool at_start = true;       // no segment yet, or only the crossing of a zero-area face (pass_collapsed_face())
   bool along_border = false;  // left the last vertex along a border edge
   int start_vertex = -1, start_corner = -1, start_m = 0, start_face = -1;
   Exact_uv start_p;
@@ -180,10 +180,15 @@ public:
     // the ray along d_m: on the first edge of the start corner (lifted 0), else the first one
     // counter-clockwise from it (lifted 8); on an open fan also the one clockwise from it (lifted 0)
     // A ray along an edge is taken, as in a vertex passage, in the wedge where it is e_b (so that a
-    // closed loop comes back to the same corner and direction).
+    // closed loop comes back to the same corner and direction), past the wedges of zero width (the end corners of
+    // zero-area triangles along the ray), which contain no ray in a vertex passage either.
     std::vector<int> found;
     if(fan.wedges[fan.start].La == 0) {
-      const int i = fan.closed ? int(fan.wedges.size()) - 1 : fan.start - 1;
+      const int n = int(fan.wedges.size());
+      int i = fan.start;
+      do i = fan.closed ? (i + n - 1) % n : i - 1;
+      while(i >= 0 && i != fan.start && fan.wedges[i].La == fan.wedges[i].Lb);
+      if(i == fan.start) i = -1;
       if(i >= 0) { depart(r, fan.wedges[i].corner, ray_direction(fan.wedges[i], fan.wedges[i].Lb)); found.push_back(i); }
       else { depart(r, fan.wedges[fan.start].corner, fan.wedges[fan.start].m); found.push_back(fan.start); }
     } else {
@@ -360,10 +365,14 @@ public:
 
   // A face of zero UV area with three distinct corners (collinear: the limit of a thin positive triangle, the face
   // beyond its long side on one side of its line, those beyond its short sides on the other, as the quad extraction
-  // collapses it) is crossed without advancing: from r.p on its line through the side that holds r.p inside and has
-  // the direction on its outer side (not the side the trace came in through), or, arrived at its middle corner, on
-  // from that vertex. False (nothing done) where that does not apply: a side of length zero, a direction along the
-  // line, no such side.
+  // collapses it) is crossed without advancing in UV: from r.p on its line through the side that holds r.p inside and
+  // has the direction on its outer side (not the side the trace came in through), or, arrived at its middle corner, on
+  // from that vertex. The crossing is a segment of zero UV length all the same: its ends are different points of the
+  // surface (of two sides, or a side and the middle vertex), so the polyline stays connected in 3D. It takes no time
+  // (parametric length), so a trace that started at the middle corner is still at its start beyond it: the rays that
+  // leave a cone there across the line (two where the line is not an axis) reach the long side together and do not
+  // meet there. False (nothing done) where that does not apply: a side of length zero, a direction along the line, no
+  // such side.
   bool pass_collapsed_face(Trace_run& r) const
   {
     const Corner_mesh& M = cm();
@@ -372,6 +381,7 @@ public:
       if(corner_uv(map, c[i]) == corner_uv(map, c[(i + 1) % 3])) return false;
     const int entry = r.loc.kind == ON_EDGE ? r.loc.h : -1;
     const Exact_uv d = advance(Exact_uv{FT(0), FT(0)}, r.m, FT(1));
+    auto lay = [&](const Raw_point& to) { push_segment(r, M.face[r.face_h], to); ++r.steps; };
     for(int g : c) {                               // the side of g: from corner prev(g) to corner g
       const Exact_uv& A = corner_uv(map, M.prev[g]);
       const Exact_uv& B = corner_uv(map, g);
@@ -379,13 +389,13 @@ public:
       const FT lambda = lerp_parameter(A, B, r.p);
       if(!(CGAL::is_positive(lambda) && lambda < FT(1))) continue;
       if(!CGAL::is_negative((B.u - A.u) * d.v - (B.v - A.v) * d.u)) continue;   // not to the right of A -> B
-      ++r.steps;
+      lay(Raw_point{ON_EDGE, g, r.p});
       cross_edge(r, g, r.p, lambda);
       return true;
     }
     if(entry >= 0)
       for(int g : c)
-        if(corner_uv(map, g) == r.p) { ++r.steps; r.face_h = g; arrive_at_vertex(r, g, r.m); return true; }
+        if(corner_uv(map, g) == r.p) { lay(Raw_point{AT_VERTEX, g, r.p}); r.face_h = g; arrive_at_vertex(r, g, r.m); return true; }
     return false;
   }
 

@@ -23,8 +23,9 @@
 // the jump of the code of the shared edge between the two charts (0 on an exactly seamless map).
 // Lifted values count eighths of the codes' circle: 2 = one quarter turn, 8 = a full turn.
 // A ray at lifted value T lies in the wedge with L_a < T <= L_b (half-open: a ray along an edge is
-// counted once). Passing a regular vertex, the trace arrives with the back ray at 4 and leaves at
-// 8 = straight on: exactly one wedge on an exactly seamless map, none or several on an inexact one.
+// counted once; the sides of the middle corner of a zero-area triangle count as turned inwards, vertex_fan()).
+// Passing a regular vertex, the trace arrives with the back ray at 4 and leaves at 8 = straight on:
+// exactly one wedge on an exactly seamless map, none or several on an inexact one.
 
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
@@ -92,9 +93,26 @@ inline Vertex_fan vertex_fan(const Corner_mesh& cm, const Cut_rotations& rot, in
     h = cm.prev[o];
     if(h == first || int(fan.wedges.size()) > cm.n_halfedges) break;
   }
-  // shift so that L_a(start) is its code in [0, 8)
+  // The middle corner of a zero-area triangle with three distinct corners spans exactly a half turn. The triangle is
+  // the limit of a thin positive one (as the quad extraction collapses it), whose sides at that corner turn towards
+  // its inside: a side along an axis counts as just inside the wedge, in the wedge and in its neighbour across that
+  // side alike. So a ray along the triangle's line leaves the middle corner by the positive face beyond the side at
+  // either end (the half-open rule would give the ray at e_b to the zero-area face, which a trace cannot run along),
+  // and only the ray across the line enters the face.
+  const int n = int(fan.wedges.size()), La_start = fan.wedges[fan.start].La;
+  std::vector<int> straight;
+  for(int i = 0; i < n; ++i)
+    if(fan.wedges[i].Lb - fan.wedges[i].La == 4 && face_orientation(cm, fan.wedges[i].corner) == 0) straight.push_back(i);
+  for(int i : straight) {
+    Fan_wedge& w = fan.wedges[i];
+    const int before = i > 0 ? i - 1 : fan.closed ? n - 1 : -1, after = i + 1 < n ? i + 1 : fan.closed ? 0 : -1;
+    if(w.La % 2 == 0) { ++w.La; if(before >= 0) ++fan.wedges[before].Lb; }
+    if(w.Lb % 2 == 0) { --w.Lb; if(after >= 0) --fan.wedges[after].La; }
+  }
+  // shift so that L_a(start) is its code in [0, 8) (turned inwards as above)
   const Fan_wedge& s = fan.wedges[fan.start];
-  const int shift = code_of_edge(cm, s.m, s.corner, cm.next[s.corner]) - s.La;
+  const int code = code_of_edge(cm, s.m, s.corner, cm.next[s.corner]) + s.La - La_start;
+  const int shift = (code + 8) % 8 - s.La;
   for(Fan_wedge& w : fan.wedges) { w.La += shift; w.Lb += shift; }
   return fan;
 }
