@@ -405,6 +405,20 @@ void test_inhomogeneous_and_invalid()
   // range, not "no solution" (it was INFEASIBLE)
   expect_status("2^62 (x0 + x1 + x2) = 2^63 - 1", small_system(3, Rows{ { { 0, 1L << 62 }, { 1, 1L << 62 }, { 2, 1L << 62 } } },
                                                                { std::numeric_limits<long>::max() }), { 1., 1., 1. }, SS::RANGE_EXCEEDED);
+  // no solution in doubles whatever x̄: INFEASIBLE also where x̄ asks for a grid on which b is not (it was
+  // RANGE_EXCEEDED: the grid checks came first)
+  expect_status("3x = 1, x̄ = 1e90", small_system(1, Rows{ { { 0, 3 } } }, { 1 }), { 1e90 }, SS::INFEASIBLE);
+  expect_status("3x = 1, x̄ = 5e-320", small_system(1, Rows{ { { 0, 3 } } }, { 1 }), { 5e-320 }, SS::INFEASIBLE);
+  expect_status("9x0 + 15x1 = 1, x̄ = 1e200", small_system(2, Rows{ { { 0, 9 }, { 1, 15 } } }, { 1 }), { 1e200, 1. }, SS::INFEASIBLE);
+  // a unit pivot with a constant part beyond the range where the implied value is small: solved on x̄'s own grid (it
+  // was refused there and solved on the coarse grid of b, x = (0, 2^60): a change of 1.15e18)
+  {
+    const Linear_system big_b = small_system(2, Rows{ { { 0, 1L << 60 }, { 1, 1 } } }, { 1L << 60 });
+    expect_status("2^60 x0 + x1 = 2^60", big_b, { 1., 0.5 }, SS::SUCCESS);
+    const Outcome o = run(big_b, { 1., 0.5 });
+    // x1 = 2^60 (1 - x0): x0 = 1 is the nearest double to x̄0 with x1 near 0.5 (the next, 1 - 2^-53, gives x1 = 128)
+    assert(o.report.status == SS::SUCCESS && o.x[0] == 1. && o.x[1] == 0. && o.report.max_abs_change == 0.5);
+  }
   expect_status("2x0 + 2x1 = 1 (far)", small_system(2, Rows{ { { 0, 2 }, { 1, 2 } } }, { 1 }), { 0.1, 0.1 }, SS::SUCCESS);
   expect_status("9x0 + 14x1 = 1", small_system(2, Rows{ { { 0, 9 }, { 1, 14 } } }, { 1 }), { 0.1, 1. / 140 }, SS::SUCCESS);
   expect_status("9x0 + 14x1 = 1 (near -3, 2)", small_system(2, Rows{ { { 0, 9 }, { 1, 14 } } }, { 1 }), { -3. + 1e-9, 2. }, SS::SUCCESS);

@@ -78,8 +78,9 @@ namespace Seamless_snapping {
  * values and implied variables absorb the whole change, often several times the smallest one.
  *
  * \warning For `b != 0` a system may have no solution in doubles (e.g. `3 x = 1`: no dyadic solution): `INFEASIBLE`
- * is then reported, never a wrong answer; where dyadic solutions exist but only on a grid finer than the fixed-point
- * range allows (e.g. `2^62 (x0 + x1 + x2) = 2^63 - 1`), `RANGE_EXCEEDED`.
+ * is then reported, whatever x̄ (also where x̄ alone would ask for a grid that `b` does not fit), never a wrong answer;
+ * where dyadic solutions exist but only on a grid finer than the fixed-point range allows
+ * (e.g. `2^62 (x0 + x1 + x2) = 2^63 - 1`), `RANGE_EXCEEDED`.
  */
 class Exact_constraint_projection
 {

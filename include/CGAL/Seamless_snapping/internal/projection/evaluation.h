@@ -301,12 +301,26 @@ Row_failure evaluate_implied_rows(const Irref<Int>& ir, const std::vector<CGAL::
                                                + " violates its divisibility congruence (Eq. 2')");
       }
       c0 = Integer_ops<CGAL::Gmpz>::exact_div(c0, pz);   // c0 may share B[j]'s representation: no in-place write
+      // c0 may lie outside the range where the implied value does not (2^60 x0 + x1 = 2^60 at x0 = 1: c0 = 2^60 grid
+      // units, the value 0): it enters the safe dot as q copies of 2^51 grid units and the rest r in [0, 2^51), each
+      // a grid integer, and the safe dot decides on the sum (refused alone, such a row moved the map to a coarser
+      // grid, with a change of 1e18 in that example)
       std::int64_t c064;
-      if(!Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) || c064 > Fixed_point_grid::max_integer() || c064 < -Fixed_point_grid::max_integer()) {
-        return fail(j, RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
-                                       + " is outside the fixed-point range (Eq. 2', Sec. 7)");
+      if(Integer_ops<CGAL::Gmpz>::to_int64(c0, c064) && c064 <= Fixed_point_grid::max_integer() && c064 >= -Fixed_point_grid::max_integer()) {
+        terms.push_back(std::make_pair(Ops::from_int64(1), c064));
+      } else {
+        constexpr int split = 51;
+        CGAL::Gmpz q, rest;
+        mpz_fdiv_q_2exp(q.mpz(), c0.mpz(), split);
+        mpz_fdiv_r_2exp(rest.mpz(), c0.mpz(), split);
+        std::int64_t q64 = 0, rest64 = 0;
+        if(!Integer_ops<CGAL::Gmpz>::to_int64(q, q64) || !Integer_ops<CGAL::Gmpz>::to_int64(rest, rest64)) {
+          return fail(j, RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
+                                         + " is outside the fixed-point range by more than 2^63 times (Eq. 2', Sec. 7)");
+        }
+        terms.push_back(std::make_pair(Ops::from_int64(q64), std::int64_t(1) << split));
+        if(rest64 != 0) terms.push_back(std::make_pair(Ops::from_int64(1), rest64));
       }
-      terms.push_back(std::make_pair(Ops::from_int64(1), c064));
     }
     double r = 0;
     const Safe_dot_result sr = safe_dot(terms, grid, r, ws);
@@ -477,6 +491,24 @@ void evaluate_on_common_grid(const Irref<Int>& ir, const Integer_system& sys, co
   else report.message += " (also with delta = 2^" + std::to_string(g2.K) + " from |b̂_j / p_j|: " + second.message + ")";
 }
 
+// A RANGE_EXCEEDED of b != 0 with non-unit pivots may hide a system without any solution in doubles (3 x = 1 at
+// x̄ = 1e90: b̂ is not on the grid that x̄ asks for, which is checked first): the divisibility congruences on the
+// unit grid (B = b̂) decide that whatever the grid, since their solvability modulo the odd parts of the pivots does
+// not change when B is scaled by a power of two (solve_divisibility_congruences()); INFEASIBLE then, with its message
+template <typename Int>
+void refine_range_failure(const Irref<Int>& ir, Projection_report& report)
+{
+  if(report.status != RANGE_EXCEEDED || ir.homogeneous || ir.unit_pivots) return;
+  std::vector<CGAL::Gmpz> B(ir.rank());
+  for(std::size_t j = 0; j < B.size(); ++j) B[j] = to_gmpz(ir.rhs[j]);
+  std::map<std::uint32_t, CGAL::Gmpz> z0;
+  std::string message;
+  if(solve_divisibility_congruences(ir, B, z0, message) == INFEASIBLE) {
+    report.status = INFEASIBLE;
+    report.message = message;
+  }
+}
+
 // Alg. 3 driver: evaluates on the common grid (given in the options, or chosen from x̄), and flags a
 // change that is huge relative to the input's violation (Projection_report::large_change).
 // Without a given grid, b = 0, and a large change or RANGE_EXCEEDED, the evaluation with one quantum
@@ -501,10 +533,12 @@ void evaluate(const Irref<Int>& ir, const Integer_system& sys, const std::vector
     evaluate_on_grid(ir, sys, xbar, Fixed_point_grid(*options.delta_exponent), x, report, options.minimal_change, -1,
                      resolve_number_of_threads(options.number_of_threads));
     flag_first(report);
+    refine_range_failure(ir, report);
     return;
   }
   evaluate_on_common_grid(ir, sys, xbar, options, x, report);
   flag_first(report);
+  refine_range_failure(ir, report);
   // a large change or no room on one grid: one quantum per IRREF row (b = 0, row_grids.h), kept if
   // it is exact and moves x̄ less
   // (not when the common grid itself lies outside the doubles: that refusal keeps the scale covariance)
