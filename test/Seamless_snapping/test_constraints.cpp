@@ -635,15 +635,29 @@ static void test_integer_grid_analytic()
     const SS::Snap_report rb = SS::snap_seamless_parameterization(big, uvb, SS::parameters::integer_grid_map(true));
     assert(rb.status == SS::RANGE_EXCEEDED && rb.message.find("2^52 or more") != std::string::npos);
     assert(rb.message.find("nan") == std::string::npos);
-    // a grid scale of 2^-1074: the corner mesh in grid units (subnormal UVs), a fixed-point grid below the doubles'
-    // range, refused as such (the message said "too large", with numbers inside the limits it named)
+    // a grid scale of 2^-1074: the corner mesh in grid units (subnormal UVs), a map far within one grid cell, refused
+    // as such before its fixed-point grid (below the doubles' range: RANGE_EXCEEDED, whose message said "too large"
+    // with numbers inside the limits it named) is reached; that grid's own refusal: test_projection
     Mesh tiny; UV_map uvt;
     make_flat_torus(tiny, uvt, 3, 3);
     const std::vector<std::uint64_t> tiny_bits = uv_bits(tiny, uvt);
     const SS::Snap_report rt = SS::snap_seamless_parameterization(tiny, uvt, SS::parameters::integer_grid_map(true,
                                                                   SS::parameters::grid_scale(0x1p-1074)));
-    assert(rt.status == SS::RANGE_EXCEEDED && uv_bits(tiny, uvt) == tiny_bits);
-    assert(rt.message.find("outside the range of double grids") != std::string::npos && rt.message.find("too small") != std::string::npos);
+    assert(rt.status == SS::INVALID_INPUT && uv_bits(tiny, uvt) == tiny_bits);
+    assert(rt.message.find("spans less than one grid cell") != std::string::npos && rt.message.find("scale the map up") != std::string::npos);
+  }
+  // the torus scaled by 1e-7 (no cones): within one grid cell its translations are "near" the integer 0, and rounded
+  // to it they collapsed the map (SUCCESS with negative triangles the untangling could not remove); refused, untouched
+  {
+    Mesh m; UV_map uv;
+    make_flat_torus(m, uv, 3, 3);
+    for(halfedge_descriptor h : m.halfedges())
+      if(!m.is_border(h)) put(uv, h, Point_2(1e-7 * get(uv, h).x(), 1e-7 * get(uv, h).y()));
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true));
+    assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits);
+    assert(r.message.find("spans less than one grid cell") != std::string::npos && r.message.find("would collapse") != std::string::npos);
+    std::cout << "integer grid: a torus within one grid cell refused: " << r.message << "\n";
   }
   // half-turn cone: apex (0.5, 0) and translation (1, 0) = integer, but the fixed point is half-integer
   {
