@@ -63,6 +63,10 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Seamless_snapping/Connection_constraint.h>
@@ -440,6 +444,11 @@ static void test_invalid()
     foreign.push_back(halfedge_descriptor(Mesh::size_type(10 * m.number_of_halfedges())));
     cases.emplace_back("is not a halfedge of the mesh", Constraint(foreign, 0));
   }
+  {
+    std::vector<halfedge_descriptor> null = good;
+    null.push_back(Mesh::null_halfedge());
+    cases.emplace_back("is not a halfedge of the mesh", Constraint(null, 0));
+  }
   cases.emplace_back("neither 0 (u) nor 1 (v)", Constraint(good, 2));
   cases.emplace_back("neither 0 (u) nor 1 (v)", Constraint(good, -1));
 
@@ -468,6 +477,19 @@ static void test_invalid()
     assert(SS::snap_seamless_parameterization(a, uva).status == SS::SUCCESS);
     assert(SS::snap_seamless_parameterization(b, uvb, SS::parameters::connection_constraints(none)).status == SS::SUCCESS);
     assert(uv_bits(a, uva) == uv_bits(b, uvb));         // same input, same run
+  }
+  // a null halfedge on a Polyhedron_3 (whose halfedge index is read through the handle: a null pointer, a crash): no
+  // position, so the path is refused like a foreign halfedge (the conversion alone, not a second snap pipeline to compile)
+  {
+    typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron;
+    typedef boost::graph_traits<Polyhedron>::halfedge_descriptor Poly_halfedge;
+    Polyhedron p;
+    CGAL::copy_face_graph(m, p);
+    std::vector<SS::Connection_constraint<Poly_halfedge> > cc(1);
+    cc[0].path = {*halfedges(p).begin(), boost::graph_traits<Polyhedron>::null_halfedge()};
+    std::vector<SS::internal::Connection_path> paths;
+    SS::internal::connection_paths_from_parameter(p, cc, paths);
+    assert(paths.size() == 1 && paths[0].halfedges.size() == 2 && paths[0].halfedges[0] >= 0 && paths[0].halfedges[1] == -1);
   }
   std::cout << "connections: invalid paths: OK\n";
 }

@@ -97,7 +97,8 @@ void connection_paths_from_parameter(const TriangleMesh& tm, const ConnectionRan
     Connection_path p;
     p.component = int(c.component);
     for(const halfedge_descriptor& h : c.path) {
-      const std::size_t i = std::size_t(get(him, h));
+      if(h == boost::graph_traits<TriangleMesh>::null_halfedge()) { p.halfedges.push_back(-1); continue; }   // no index
+      const std::size_t i = std::size_t(get(him, h));                       // to read (Polyhedron_3: a null pointer)
       p.halfedges.push_back(i < max_h ? hpos[i] : -1);
     }
     out.push_back(p);
