@@ -883,12 +883,17 @@ static void test_quantization()
     const SS::Snap_report rb = SS::snap_seamless_parameterization(b, uvb, SS::parameters::integer_grid_map(true));
     assert(ra.status == SS::SUCCESS && rb.status == SS::SUCCESS && !ra.quantized && uv_bits(a, uva) == uv_bits(b, uvb));
   }
-  // without integer_grid_map it does nothing: the default snap
+  // without integer_grid_map it would do nothing: refused, as the command line and the Python module refuse it (it was
+  // the default snap, SUCCESS), map untouched; so are merge_cone_pairs and separate_cone_pairs
   {
     Mesh m; UV_map uv;
     make_flat_torus(m, uv, 3, 3.4);
-    const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::quantize(true));
-    assert(r.status == SS::SUCCESS && !r.quantized && SS::is_exactly_seamless(m, uv) && !SS::is_exact_integer_grid_map(m, uv));
+    const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+    for(int which = 0; which < 3; ++which) {
+      const SS::Snap_report r = SS::snap_seamless_parameterization(m, uv, SS::parameters::quantize(which == 0)
+                                                                   .merge_cone_pairs(which == 1).separate_cone_pairs(which == 2));
+      assert(r.status == SS::INVALID_INPUT && uv_bits(m, uv) == bits && r.message.find("needs integer_grid_map(true)") != std::string::npos);
+    }
   }
   // real maps before their integer rounding (../shared/data): an MIQ map of the retina, whose translations are integers
   // at no grid scale; quantized at grid scale 8 it snaps to an exact, fold-free integer-grid map (its quad mesh: test_quad)

@@ -142,7 +142,9 @@ struct Quad_vertex_origin
  *
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{vertex_point_map}
- *     \cgalParamDescription{receives the 3D position of every vertex of the quad mesh}
+ *     \cgalParamDescription{receives the 3D position of every vertex of the quad mesh. A `QuadMesh` of the type the
+ *                           extraction builds, `CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>`,
+ *                           gets the quad mesh appended whole (`Surface_mesh::join()`), so its own points are set too}
  *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<QuadMesh>::%vertex_descriptor` as key
  *                    type and a point type constructible from three `double` as value type}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, qm)`}

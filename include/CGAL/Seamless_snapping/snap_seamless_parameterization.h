@@ -65,7 +65,10 @@ namespace Seamless_snapping {
  *         coordinates as value type; the kernel is found with `CGAL::Kernel_traits`
  * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
  *
- * \param tm the triangle mesh (its connectivity is only read)
+ * \param tm the triangle mesh (its connectivity is only read; the element numbering comes from CGAL's
+ *        `get_initialized_vertex_index_map()` and its halfedge and face counterparts, which renumber the internal ids
+ *        of a `Polyhedron_3` with ids that are not `0..n-1`, as every CGAL algorithm does; `vertex_index_map` and its
+ *        counterparts are not read)
  * \param uv the corner UV map: for a non-border halfedge `h`, `get(uv, h)` is the UV of the corner
  *        (`target(h)`, `face(h)`), in UV units
  * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
@@ -168,8 +171,8 @@ namespace Seamless_snapping {
  *     \cgalParamDescription{a weight per vertex for the minimal change: it minimizes `sum_s w(v_s) |u_s - ubar_s|^2`
  *                           over the sectors `s` (one UV pair each) with `v_s` the vertex of the sector. A larger weight
  *                           makes the UVs of that vertex move less (relative to the others); scaling all weights by
- *                           one factor changes nothing. Only used with `minimal_change(true)`. A weight that is not
- *                           positive and finite gives `INVALID_INPUT`.}
+ *                           one factor changes nothing. Only used with `minimal_change(true)`; checked in either
+ *                           mode: a weight that is not positive and finite gives `INVALID_INPUT`.}
  *     \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
  *                    as key type and `double` as value type}
  *     \cgalParamDefault{all weights 1}
@@ -300,7 +303,7 @@ namespace Seamless_snapping {
  *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new).}
  *     \cgalParamType{Boolean}
  *     \cgalParamDefault{`false` (the caller's field is kept); the `seamless_quad` program turns it on
- *                       (`--keep-cone-pairs` turns it off)}
+ *                       (`--keep-cone-pairs` turns it off). `true` without `integer_grid_map`: `INVALID_INPUT`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::merge_cone_pairs()`; implemented in
  *                     `internal/surface/cone_merging.h`}
  *   \cgalParamNEnd
@@ -323,7 +326,7 @@ namespace Seamless_snapping {
  *                           so are pairs whose indices cancel (a 90 and a -90 degree cone move as one: `merge_cone_pairs`
  *                           is for those).}
  *     \cgalParamType{Boolean}
- *     \cgalParamDefault{`false`}
+ *     \cgalParamDefault{`false`; `true` without `integer_grid_map`: `INVALID_INPUT`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::separate_cone_pairs()`; implemented in
  *                     `internal/surface/cone_separation.h`}
  *   \cgalParamNEnd
@@ -358,7 +361,7 @@ namespace Seamless_snapping {
  *                           cut graph and the translations rounded on its cycles are not chosen against the chains, and
  *                           where they contradict one the snap is refused `INFEASIBLE` saying so.}
  *     \cgalParamType{Boolean}
- *     \cgalParamDefault{`false`}
+ *     \cgalParamDefault{`false`; `true` without `integer_grid_map`: `INVALID_INPUT`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::quantize()`; implemented in
  *                     `internal/surface/integer_grid_quantization.h`}
  *   \cgalParamNEnd

@@ -323,6 +323,17 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
                 (t.first == tolerances[2].first ? "a number >= 0 (or infinity: no bound)" : "a finite number >= 0");
       return INVALID_INPUT;
     }
+  // the integer-grid options without integer_grid_map did nothing, and SUCCESS said nothing of it (the Python module
+  // and the command line refuse them too)
+  const std::pair<const char*, bool> grid_options[] = {{"merge_cone_pairs", opt.merge_cone_pairs},
+                                                       {"separate_cone_pairs", opt.separate_cone_pairs},
+                                                       {"quantize", opt.quantize}};
+  for(const std::pair<const char*, bool>& g : grid_options)
+    if(g.second && !opt.integer_grid_map) {
+      message = std::string(g.first) + "(true) needs integer_grid_map(true): it acts on the integer translations and "
+                "the cones' integer points of an integer-grid map";
+      return INVALID_INPUT;
+    }
   if(!grid_scale_exponent(opt.grid_scale, grid_exponent)) {
     message = "the grid scale " + format_double(opt.grid_scale, 17) + " is not a power of two, so it cannot be applied " +
               "exactly; use 2^j, or scale the map yourself";
