@@ -271,6 +271,24 @@ stem = os.path.splitext(os.path.basename(src))[0]
 rc, text = run("--outdir", os.path.join(work, "twins"), src, "--summary", os.path.join(work, "twins", stem + ".json"))
 check(rc == 2 and "name one file" in text and not os.path.exists(os.path.join(work, "twins")),
       "--outdir with --summary on a report: exit 2, nothing written: %d %s" % (rc, text))
+# --summary naming an input replaced that map with the table (exit 0): refused, the input unchanged; an empty
+# --outdir (an unset shell variable) switched to a single run that wrote over the second input: refused
+victim = os.path.join(work, "victim.obj")
+shutil.copyfile(src, victim)
+victim_bytes = open(victim, "rb").read()
+for args in [("--outdir", os.path.join(work, "victims"), victim, "--summary", victim),
+             ("--outdir", os.path.join(work, "victims"), src, victim, "--summary", victim),
+             ("--outdir", "", src, victim), ("--outdir", os.path.join(work, "victims"), src, "--summary", "")]:
+    rc, text = run(*args)
+    check(rc == 2 and open(victim, "rb").read() == victim_bytes and not os.path.exists(os.path.join(work, "victims")),
+          "%s: exit 2, the input unchanged, nothing written: %d %s" % (args, rc, text))
+# --quiet prints nothing but errors (the table went to stdout); a --summary that cannot be written is refused before
+# any input is snapped (it was found after all of them)
+rc, text = run("--quiet", "--outdir", os.path.join(work, "quiet"), src, "--summary", os.path.join(work, "quiet.md"))
+check(rc == 0 and text == "" and os.path.exists(os.path.join(work, "quiet.md")), "--outdir --quiet: silent: %d %r" % (rc, text))
+rc, text = run("--outdir", os.path.join(work, "late"), src, "--summary", os.path.join(work, "no_dir", "s.md"))
+check(rc == 1 and "--summary" in text and not os.path.exists(os.path.join(work, "late")),
+      "--summary in a missing directory: refused before the inputs: %d %s" % (rc, text))
 # two options naming one output file: the second would replace the first, and the run would still say both were
 # written: refused (exit 2), nothing written
 clash = os.path.join(work, "clash.obj")

@@ -618,15 +618,15 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--pin") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
       pin_file = argv[++i];
     }
     else if(a == "--vval") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
       vval_file = argv[++i];
     }
     else if(a == "--features") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
       features_file = argv[++i];
     }
     else if(a == "--sharp-angle") {
@@ -642,15 +642,15 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--outdir") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --outdir needs a directory\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --outdir needs a directory\n" << usage_text; return 2; }
       outdir = argv[++i];
     }
     else if(a == "--summary") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --summary needs a file name\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --summary needs a file name\n" << usage_text; return 2; }
       summary_file = argv[++i];
     }
     else if(a == "--report") {
-      if(i + 1 >= argc) { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
+      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
       report_file = argv[++i]; has_report = true;
     }
     else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_snap: unknown option '" << a << "'\n" << usage_text; return 2; }
@@ -716,6 +716,17 @@ int main(int argc, char** argv)
               << "NAME its file name without extension); nothing was written\n";
     return 2;
   }
+  // the summary or a report naming an input replaced that map (exit 0); a result over its own input is a snap in place
+  std::vector<std::pair<std::string, std::string> > over_inputs{{"--summary", summary_file}};
+  for(const std::string& input : inputs) {
+    over_inputs.emplace_back("the input '" + input + "'", input);
+    over_inputs.emplace_back("the report of '" + input + "'", result_stem(input) + ".json");
+  }
+  const std::string over_an_input = SS::IO::internal::same_output_file(over_inputs);
+  if(!over_an_input.empty()) { std::cerr << "seamless_snap: --outdir: " << over_an_input << "; nothing was written\n"; return 2; }
+  std::string why;
+  if(!summary_file.empty() && !SS::IO::internal::can_create(summary_file, why))   // before any input is snapped
+    return fail("--summary: " + why + "; nothing was written");
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
   if(!std::filesystem::is_directory(outdir)) return fail("cannot create the output directory '" + outdir + "'");
@@ -726,8 +737,10 @@ int main(int argc, char** argv)
     if(!quiet) std::cout << "== " << inputs[i] << " -> " << obj << "\n";
     if(snap_file(o, inputs[i], obj, json, &rows[i]) != EXIT_SUCCESS) status = EXIT_FAILURE;
   }
-  std::cout << "\n";
-  write_summary(std::cout, rows);
+  if(!quiet) {                                        // --quiet: nothing but errors (the table is in --summary)
+    std::cout << "\n";
+    write_summary(std::cout, rows);
+  }
   if(!summary_file.empty()) {
     std::ostringstream table;
     write_summary(table, rows);
