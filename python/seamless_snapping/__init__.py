@@ -16,7 +16,10 @@ UV (#UV x 2 float), FUV (#F x 3 int, rows of UV per face corner).
 The functions that read a mesh (V, F, UV, FUV) weld as the command line does by default (weld=None): a cut mesh
 (is_cut_mesh(): the border edges in pairs at bit-identical 3D points, as libigl and Directional write their maps; its
 seams would otherwise be borders), or a mesh refused as it is but valid welded (a cut mesh with a hole at a seam);
-weld=True / False weld or not.
+weld=True / False weld or not. The vertex numbers inside report messages (a cone, a cut edge "(a, b)", a vertex whose
+angle sum is wrong) count the vertices of that mesh: the rows of V that F uses, in their order, rows at one position one
+vertex where it was welded, so they are rows of V only where every row is used and distinct; the structured fields
+(e.g. diagnose_seamlessness()'s "edge", a trace's "start", quad_valences()' array) are rows of V.
 
 snap, project, extract_quad_mesh and quad_valences return new arrays only when they succeed (report["status"] == "SUCCESS");
 otherwise they raise SnapError (or, with raise_on_failure=False, return None in place of the arrays).
@@ -58,10 +61,13 @@ class SnapError(RuntimeError):
         self.report = report
 
 
-def _integer_array(a, what, meaning):
+def _integer_array(a, what, meaning, ndim=None):
     """`a` as a C-contiguous int64 array, or InputError unless every entry is an integer: an integer array, or
-    floats with integral values (as SciPy may store integer matrices)."""
+    floats with integral values (as SciPy may store integer matrices); with `ndim`, also unless it has that many
+    dimensions (a scalar valence became a one-vertex VVAL file, a 3-D F a TypeError of the bindings)."""
     arr = np.asarray(a)
+    if ndim is not None and arr.ndim != ndim:
+        raise InputError("%s must be a %d-D array (%s), not of shape %s" % (what, ndim, meaning, arr.shape))
     # unsigned entries of 2^63 or more would wrap around to negative; compared in uint64 (against the Python int 2^63 - 1,
     # NumPy 1.24 compares in float64, where 2^63 equals it)
     too_large = arr > np.uint64(np.iinfo(np.int64).max) if arr.dtype.kind == "u" else None
@@ -83,8 +89,8 @@ def _integer_array(a, what, meaning):
 
 
 def _mesh_arrays(V, F, UV, FUV):
-    return (np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V"),
-            np.ascontiguousarray(UV, dtype=np.float64), _integer_array(FUV, "FUV", "row indices of UV"))
+    return (np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V", 2),
+            np.ascontiguousarray(UV, dtype=np.float64), _integer_array(FUV, "FUV", "row indices of UV", 2))
 
 
 def is_cut_mesh(V, F):
@@ -92,7 +98,7 @@ def is_cut_mesh(V, F):
     (libigl and Directional write their parametrizations so, the vertices duplicated along the seams), whose seams
     are borders unless its vertices are welded (the C++ IO::cut_mesh_test(); -0 and 0 differ, as in the weld).
     False for arrays that do not form a triangle mesh as they are."""
-    return bool(_core.cut_mesh_test(np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V"))[0])
+    return bool(_core.cut_mesh_test(np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V", 2))[0])
 
 
 def _weld(mesh, weld):
@@ -102,7 +108,7 @@ def _weld(mesh, weld):
     if weld is not None:
         return bool(weld)
     return bool(_core.cut_mesh_test(np.ascontiguousarray(mesh[0], dtype=np.float64),
-                                    _integer_array(mesh[1], "F", "row indices of V"))[1])
+                                    _integer_array(mesh[1], "F", "row indices of V", 2))[1])
 
 
 def read_obj(path, *, weld=False, threads=1):
@@ -480,7 +486,7 @@ def write_vval(path, valence):
     vertices of the mesh file that goes with it (write_obj(): the rows of V). Returns a line saying what was written;
     InputError (nothing written) for a valence below 0 or beyond a C int, an array that is not 1-D, or a file that
     cannot be written."""
-    return _core.write_vval(os.fspath(path), _integer_array(valence, "valence", "one per vertex"))
+    return _core.write_vval(os.fspath(path), _integer_array(valence, "valence", "one per vertex", 1))
 
 
 def quad_mesh_patches(QF, *, raise_on_failure=True):
@@ -497,7 +503,7 @@ def quad_mesh_patches(QF, *, raise_on_failure=True):
     vertex, an edge already in two quads or in one in the same direction) raises InputError; a vertex whose quads
     form several fans gives "INVALID_INPUT" (SnapError, or the report with raise_on_failure=False).
     """
-    out = _core.quad_mesh_patches(_integer_array(QF, "QF", "rows of 4 vertex indices"))
+    out = _core.quad_mesh_patches(_integer_array(QF, "QF", "rows of 4 vertex indices", 2))
     report = json.loads(out.pop("patches"))
     report.update(out)
     if report["status"] != "SUCCESS" and raise_on_failure:
@@ -523,7 +529,7 @@ def quad_layout(QF, *, raise_on_failure=True):
     quad_mesh_patches() (InputError for rows that are no quads of a manifold mesh; SnapError, or the report with
     raise_on_failure=False, for "INVALID_INPUT").
     """
-    out = _core.quad_layout(_integer_array(QF, "QF", "rows of 4 vertex indices"))
+    out = _core.quad_layout(_integer_array(QF, "QF", "rows of 4 vertex indices", 2))
     report = json.loads(out.pop("layout"))
     report["patches"] = json.loads(out.pop("patches"))
     report.update(out)
@@ -541,7 +547,7 @@ def patch_vertex_grids(QF, report):
     patches = report["patches"] if "patches" in report and isinstance(report["patches"], dict) else report
     if patches["status"] != "SUCCESS":
         raise SnapError(patches)
-    QF = _integer_array(QF, "QF", "rows of QV")
+    QF = _integer_array(QF, "QF", "rows of QV", 2)
     if QF.ndim != 2 or QF.shape[1] != 4 or len(QF) != len(report["QF_patch"]):
         raise InputError("QF must be the %d x 4 quads that gave the report (it is %s): the report is of another "
                          "quad mesh" % (len(report["QF_patch"]), " x ".join(map(str, QF.shape))))

@@ -925,9 +925,12 @@ def test_quad_mesh_patches_standalone():
     r = ss.quad_mesh_patches(QF)
     assert r["all_rectangles"] and sum(w * h for w, h in r["sizes"]) == len(QF) == 16
     # refusals: rows that are no quad of a manifold mesh (InputError), a vertex with two fans (INVALID_INPUT)
-    for bad in [grid[:, :3], np.array([[0, 1, 1, 2]]), np.array([[0, 1, 2, 3], [0, 1, 4, 5]]), np.array([[0, 1, 2, -3]])]:
+    for bad in [grid[:, :3], np.array([[0, 1, 1, 2]]), np.array([[0, 1, 2, 3], [0, 1, 4, 5]]), np.array([[0, 1, 2, -3]]),
+                grid[np.newaxis]]:                         # 3-D: was a TypeError of the bindings
         with pytest.raises(ss.InputError):
             ss.quad_mesh_patches(bad)
+    with pytest.raises(ss.InputError, match="F must be a 2-D array"):
+        ss.snap(V, F[np.newaxis], UV, FUV)
     pinched = np.array([[0, 1, 2, 3], [0, 4, 5, 6]])
     with pytest.raises(ss.SnapError) as err:
         ss.quad_mesh_patches(pinched)
@@ -1042,7 +1045,8 @@ def test_quad_valences_and_vval(tmp_path):
     path = tmp_path / "cube.vval"
     assert "8 vertex valences" in ss.write_vval(path, [3] * 8)
     assert path.read_text() == '{"file_format":"VVAL","version":1}\n8\n' + "3\n" * 8
-    for bad, match in [([3, -1], "valence -1"), ([2 ** 31], "valence 2147483648"), ([[3, 3]], "1-D"), ([3.5], "integers")]:
+    for bad, match in [([3, -1], "valence -1"), ([2 ** 31], "valence 2147483648"), ([[3, 3]], "1-D"), ([3.5], "integers"),
+                       (4, "1-D")]:                       # a scalar: was written as a file of one vertex
         with pytest.raises(ss.InputError, match=match):
             ss.write_vval(tmp_path / "bad.vval", bad)
     assert not (tmp_path / "bad.vval").exists()

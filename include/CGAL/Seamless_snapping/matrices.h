@@ -61,6 +61,10 @@ bool check_on_matrices(const Eigen::MatrixBase<DerivedV>& V, const Eigen::Matrix
  * \return the `Snap_report` of the mesh version; `INVALID_INPUT` also for matrices of the wrong shape, an
  *         index out of range, a non-finite value, or connectivity that is not an oriented 2-manifold
  *         (the message names the matrix, row and column). On any failure `UV_out` and `FUV_out` are untouched.
+ *         The vertex numbers in the messages of the snap itself (a cone, a cut edge "(a, b)") count the vertices of
+ *         the mesh built from the matrices: the rows of `V` that `F` uses, in their order, and with `weld_vertices(true)`
+ *         the rows at one bit-identical position as one vertex (its first row); they are rows of `V` where every row
+ *         is used and distinct.
  */
 template <class DerivedV, class DerivedF, class DerivedUV, class DerivedFUV,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
