@@ -1173,6 +1173,34 @@ def test_integer_grid_options_need_integer_grid_map():
         assert ss.snap(V, F, UV, F, **{"integer_grid_map": True, "quantize": True, name: True})[2]["quantized"]
 
 
+def test_integer_grid_map_within_one_cell():
+    # a flat disk within one grid cell (UVs in [0.1, 0.35]) with a seam of translation (1e-13, -2e-13), 0 up to noise:
+    # rounded to 0 it collapses nothing, so the snap succeeds (the refusal of maps within one cell whose rounded
+    # translations collapse them must not take it); the same disk's seam with translation 0.2 is refused
+    n = 4
+    V = np.array([[i, j, 0.0] for j in range(n) for i in range(n)])
+    UV = np.array([[0.1 + 0.25 * i / (n - 1), 0.1 + 0.25 * j / (n - 1)] for j in range(n) for i in range(n)])
+    F = np.array([f for j in range(n - 1) for i in range(n - 1)
+                  for f in ([j * n + i, j * n + i + 1, (j + 1) * n + i + 1], [j * n + i, (j + 1) * n + i + 1, (j + 1) * n + i])])
+    for shift, status in [((1e-13, -2e-13), "SUCCESS"), ((0.2, 0.0), "INVALID_INPUT")]:
+        UV2, FUV = list(map(list, UV)), F.copy()
+        copies = {}
+        for f in range(len(F)):                  # the faces right of column 1 see its vertices shifted: a seam
+            if all(v % n >= 1 for v in F[f]):
+                for k, v in enumerate(F[f]):
+                    if v % n == 1:
+                        copies.setdefault(v, len(UV2))
+                        if copies[v] == len(UV2):
+                            UV2.append([UV[v][0] + shift[0], UV[v][1] + shift[1]])
+                        FUV[f][k] = copies[v]
+        out = ss.snap(V, F, np.array(UV2), FUV, weld=False, integer_grid_map=True, align_boundary=False, raise_on_failure=False)
+        assert out[2]["status"] == status, out[2]["message"]
+        if status == "INVALID_INPUT":
+            assert "spans less than one grid cell" in out[2]["message"] and "would collapse" in out[2]["message"]
+        else:
+            assert out[2]["cut_edges"] == 3 and out[2]["integer_translations_after"] == 3
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):

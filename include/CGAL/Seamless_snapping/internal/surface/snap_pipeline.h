@@ -421,18 +421,25 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     const int e = S.cm.uv_exponent + S.grid_exponent;
     const double w = scale_by_power_of_two(S.st.uv_max[0] - S.st.uv_min[0], e);
     const double h = scale_by_power_of_two(S.st.uv_max[1] - S.st.uv_min[1], e);
-    // With fewer cones the same holds for the translations: within one cell each is within a cell of an integer that
-    // is not its own value, and rounding them collapses the map (the hex torus scaled by 1e-7: all 67 rounded to 0,
-    // 220 negative triangles, 34 left after the untangling, reported as SUCCESS); only translations that are exact
-    // integers already (nothing to round) are left alone
-    const std::size_t inexact = S.st.cut_edges.size() - before.integer_translations;
+    // With fewer cones the same holds for the translations: a period of a map smaller than a cell is about as large as
+    // the map, and rounding it to an integer collapses the map (the hex torus scaled by 1e-7: all 67 rounded to 0, 220
+    // negative triangles, 34 left after the untangling, reported as SUCCESS). Counted: translations that the rounding
+    // moves by more than 1e-3 of the map's extent (not the noise of a seam whose translation is 0 up to 1e-13)
+    std::size_t inexact = 0;
+    if(w < 1 && h < 1)
+      for(int c_e : S.st.cut_edges) {
+        double t[2];
+        translation(S.cm, S.st, S.rot, S.cm.edge_halfedge[c_e], true, ubar_grid, t);
+        if(std::fabs(t[0] - std::nearbyint(t[0])) > 1e-3 * (std::max)(w, h) ||
+           std::fabs(t[1] - std::nearbyint(t[1])) > 1e-3 * (std::max)(w, h)) ++inexact;
+      }
     if(w < 1 && h < 1 && (report.field_cones >= 2 || inexact > 0)) {
       message = "the map spans less than one grid cell (its UV bounding box is " + format_double(w) + " x " +
                 format_double(h) + " grid units) but has " + (report.field_cones >= 2
                   ? std::to_string(report.field_cones) + " cones, which an integer-grid map puts on integer points: they " +
                     "would all fall onto one point"
-                  : std::to_string(inexact) + " cut edges whose translations are not integers, which an integer-grid map " +
-                    "rounds: the map would collapse") +
+                  : std::to_string(inexact) + " cut edges whose translations are off the integers by more than 1e-3 of "
+                    "its size, which an integer-grid map rounds: the map would collapse") +
                 "; scale the map up (grid_scale / --grid-scale 2^k)";
       return INVALID_INPUT;
     }
