@@ -289,6 +289,11 @@ check(rc == 0 and text == "" and os.path.exists(os.path.join(work, "quiet.md")),
 rc, text = run("--outdir", os.path.join(work, "late"), src, "--summary", os.path.join(work, "no_dir", "s.md"))
 check(rc == 1 and "--summary" in text and not os.path.exists(os.path.join(work, "late")),
       "--summary in a missing directory: refused before the inputs: %d %s" % (rc, text))
+rc, text = run("--quiet", "--outdir", os.path.join(work, "fresh"), src, "--summary", os.path.join(work, "fresh", "s.md"))
+check(rc == 0 and os.path.exists(os.path.join(work, "fresh", "s.md")),
+      "--summary in the --outdir it creates (README's example): %d %s" % (rc, text))
+rc, text = run("--outdir", os.path.join(work, "victims"), victim, "--summary", victim)
+check("the input '%s' and --summary name one file" % victim in text, "the clash names the summary as the file that would replace: %s" % text)
 # two options naming one output file: the second would replace the first, and the run would still say both were
 # written: refused (exit 2), nothing written
 clash = os.path.join(work, "clash.obj")

@@ -716,16 +716,20 @@ int main(int argc, char** argv)
               << "NAME its file name without extension); nothing was written\n";
     return 2;
   }
-  // the summary or a report naming an input replaced that map (exit 0); a result over its own input is a snap in place
-  std::vector<std::pair<std::string, std::string> > over_inputs{{"--summary", summary_file}};
-  for(const std::string& input : inputs) {
-    over_inputs.emplace_back("the input '" + input + "'", input);
-    over_inputs.emplace_back("the report of '" + input + "'", result_stem(input) + ".json");
-  }
+  // the summary or a report naming an input replaced that map (exit 0); a result over its own input is a snap in place.
+  // The inputs first: same_output_file() names the later of two as the one that would replace the earlier
+  std::vector<std::pair<std::string, std::string> > over_inputs;
+  for(const std::string& input : inputs) over_inputs.emplace_back("the input '" + input + "'", input);
+  over_inputs.emplace_back("--summary", summary_file);
+  for(const std::string& input : inputs) over_inputs.emplace_back("the report of '" + input + "'", result_stem(input) + ".json");
   const std::string over_an_input = SS::IO::internal::same_output_file(over_inputs);
   if(!over_an_input.empty()) { std::cerr << "seamless_snap: --outdir: " << over_an_input << "; nothing was written\n"; return 2; }
+  // a --summary that cannot be written: refused before any input is snapped (its directory may be OUTDIR, made below)
   std::string why;
-  if(!summary_file.empty() && !SS::IO::internal::can_create(summary_file, why))   // before any input is snapped
+  const std::filesystem::path summary_dir = std::filesystem::path(summary_file).parent_path();
+  const bool in_outdir = !summary_file.empty() &&
+      SS::IO::internal::same_output_file({{"a", summary_dir.empty() ? std::string(".") : summary_dir.string()}, {"b", outdir}}) != "";
+  if(!summary_file.empty() && !in_outdir && !SS::IO::internal::can_create(summary_file, why))
     return fail("--summary: " + why + "; nothing was written");
   std::error_code ec;
   std::filesystem::create_directories(outdir, ec);
