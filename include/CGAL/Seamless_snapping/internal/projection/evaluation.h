@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -314,9 +315,10 @@ Row_failure evaluate_implied_rows(const Irref<Int>& ir, const std::vector<CGAL::
         mpz_fdiv_q_2exp(q.mpz(), c0.mpz(), split);
         mpz_fdiv_r_2exp(rest.mpz(), c0.mpz(), split);
         std::int64_t q64 = 0, rest64 = 0;
-        if(!Integer_ops<CGAL::Gmpz>::to_int64(q, q64) || !Integer_ops<CGAL::Gmpz>::to_int64(rest, rest64)) {
+        if(!Integer_ops<CGAL::Gmpz>::to_int64(q, q64) || !Integer_ops<CGAL::Gmpz>::to_int64(rest, rest64) ||
+           q64 == (std::numeric_limits<std::int64_t>::min)()) {   // (whose magnitude the safe dot could not take)
           return fail(j, RANGE_EXCEEDED, "the constant part (b̂_j - Ĉ_j z0) / p_j of IRREF row " + std::to_string(j)
-                                         + " is outside the fixed-point range by more than 2^63 times (Eq. 2', Sec. 7)");
+                                         + " is 2^114 grid units or more, far outside the fixed-point range (Eq. 2', Sec. 7)");
         }
         terms.push_back(std::make_pair(Ops::from_int64(q64), std::int64_t(1) << split));
         if(rest64 != 0) terms.push_back(std::make_pair(Ops::from_int64(1), rest64));
