@@ -83,8 +83,10 @@ def _integer_array(a, what, meaning, ndim=None):
         if not bad.any():
             return np.ascontiguousarray(arr, dtype=np.int64)
         where = tuple(int(i) for i in np.argwhere(bad)[0])
-        raise InputError("%s must hold integers (%s); %s[%s] = %r is not one" %
-                         (what, meaning, what, ", ".join(map(str, where)), arr[where].item()))
+        value = arr[where].item()
+        raise InputError("%s must hold integers (%s); %s[%s] = %r is %s" %
+                         (what, meaning, what, ", ".join(map(str, where)), value,
+                          "2^62 or more" if math.isfinite(value) and value == round(value) else "not one"))
     raise InputError("%s must hold integers (%s), not values of type %s" % (what, meaning, arr.dtype))
 
 

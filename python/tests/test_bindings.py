@@ -795,6 +795,9 @@ def test_index_arrays_must_hold_integers():
     Fn[4, 2] = np.nan
     with pytest.raises(ss.InputError, match=r"FUV\[4, 2\] = nan is not one"):
         ss.is_exactly_seamless(V, F, UV, Fn)
+    Fn[4, 2] = 2.0 ** 62                                                    # integral, but beyond int64's safe range
+    with pytest.raises(ss.InputError, match=r"FUV\[4, 2\] = 4.6\d+e\+18 is 2\^62 or more"):
+        ss.is_exactly_seamless(V, F, UV, Fn)
     with pytest.raises(ss.InputError, match="not values of type bool"):
         ss.motorcycle_graph(V, F > 0, UV, FUV)
     with pytest.raises(ss.InputError, match="row indices of UV"):
