@@ -100,17 +100,21 @@ def is_cut_mesh(V, F):
     (libigl and Directional write their parametrizations so, the vertices duplicated along the seams), whose seams
     are borders unless its vertices are welded (the C++ IO::cut_mesh_test(); -0 and 0 differ, as in the weld).
     False for arrays that do not form a triangle mesh as they are."""
-    return bool(_core.cut_mesh_test(np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V", 2))[0])
+    return _cut_mesh_test(V, F)[0]
+
+
+def _cut_mesh_test(V, F):
+    """(is_cut_mesh(), whether the command line would weld it) of (V, F): the C++ IO::cut_mesh_test() and the
+    decision of IO::read_welding_cut_meshes()"""
+    cut, weld = _core.cut_mesh_test(np.ascontiguousarray(V, dtype=np.float64), _integer_array(F, "F", "row indices of V", 2))
+    return bool(cut), bool(weld)
 
 
 def _weld(mesh, weld):
     """The weld of the functions that read a mesh (V, F, ...): weld=None (their default) welds as the command line
-    does (IO::read_welding_cut_meshes()): a cut mesh (is_cut_mesh()), or a mesh refused as it is but not welded (a
+    does (IO::read_welding_cut_meshes()): a cut mesh (is_cut_mesh()), or a mesh refused as it is but valid welded (a
     cut mesh with a hole at a seam); True / False weld or not."""
-    if weld is not None:
-        return bool(weld)
-    return bool(_core.cut_mesh_test(np.ascontiguousarray(mesh[0], dtype=np.float64),
-                                    _integer_array(mesh[1], "F", "row indices of V", 2))[1])
+    return bool(weld) if weld is not None else _cut_mesh_test(mesh[0], mesh[1])[1]
 
 
 def read_obj(path, *, weld=False, threads=1):
@@ -550,7 +554,7 @@ def patch_vertex_grids(QF, report):
     if patches["status"] != "SUCCESS":
         raise SnapError(patches)
     QF = _integer_array(QF, "QF", "rows of QV", 2)
-    if QF.ndim != 2 or QF.shape[1] != 4 or len(QF) != len(report["QF_patch"]):
+    if QF.shape[1] != 4 or len(QF) != len(report["QF_patch"]):           # (2-D: _integer_array())
         raise InputError("QF must be the %d x 4 quads that gave the report (it is %s): the report is of another "
                          "quad mesh" % (len(report["QF_patch"]), " x ".join(map(str, QF.shape))))
     grids = [None if w == 0 else np.full((h + 1, w + 1), -1, dtype=np.int64) for w, h in patches["sizes"]]
