@@ -727,8 +727,8 @@ int main(int argc, char** argv)
   // a --summary that cannot be written: refused before any input is snapped (its directory may be OUTDIR, made below)
   std::string why;
   const std::filesystem::path summary_dir = std::filesystem::path(summary_file).parent_path();
-  const bool in_outdir = !summary_file.empty() &&
-      SS::IO::internal::same_output_file({{"a", summary_dir.empty() ? std::string(".") : summary_dir.string()}, {"b", outdir}}) != "";
+  const bool in_outdir = !summary_file.empty() && SS::IO::internal::comparable_path(summary_dir.empty() ? std::string(".")
+                                                    : summary_dir.string()) == SS::IO::internal::comparable_path(outdir);
   if(!summary_file.empty() && !in_outdir && !SS::IO::internal::can_create(summary_file, why))
     return fail("--summary: " + why + "; nothing was written");
   std::error_code ec;

@@ -937,22 +937,26 @@ Status write_atomically(const std::string& filename, const Write& write, std::st
   return write_regular_file_atomically(path, filename, write, message);
 }
 
+// A path as the command-line programs compare files: made absolute, then as std::filesystem::weakly_canonical() gives
+// it (./a and a are one file, also where a does not exist yet)
+inline std::string comparable_path(const std::string& path)
+{
+  // absolute first: weakly_canonical() leaves a relative path whose first component does not exist as it is, so
+  // "x" and "./x" differed where x was not written yet
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  if(ec) p = path;
+  const std::filesystem::path c = std::filesystem::weakly_canonical(p, ec);
+  return (ec ? p.lexically_normal() : c).string();
+}
+
 // The command-line programs' output files, each with the option that names it: where two of them name one file (the
 // later write would replace the earlier, and the program would still report both written), a message naming the two,
-// else empty. Paths are compared made absolute, then as std::filesystem::weakly_canonical() gives them (./a and a are
-// one file, also where a does not exist yet).
+// else empty. Paths are compared as comparable_path() gives them.
 inline std::string same_output_file(const std::vector<std::pair<std::string, std::string> >& outputs)
 {
   std::vector<std::string> canonical;
-  for(const std::pair<std::string, std::string>& o : outputs) {
-    // absolute first: weakly_canonical() leaves a relative path whose first component does not exist as it is, so
-    // "x" and "./x" differed where x was not written yet
-    std::error_code ec;
-    std::filesystem::path p = std::filesystem::absolute(o.second, ec);
-    if(ec) p = o.second;
-    const std::filesystem::path c = std::filesystem::weakly_canonical(p, ec);
-    canonical.push_back((ec ? p.lexically_normal() : c).string());
-  }
+  for(const std::pair<std::string, std::string>& o : outputs) canonical.push_back(comparable_path(o.second));
   for(std::size_t i = 0; i < outputs.size(); ++i)
     for(std::size_t j = 0; j < i; ++j)
       if(!outputs[i].second.empty() && !outputs[j].second.empty() && canonical[i] == canonical[j])
