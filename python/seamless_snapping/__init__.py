@@ -507,7 +507,8 @@ def quad_mesh_patches(QF, *, raise_on_failure=True):
     grid) and "QF_patch_corner" (the rank k in its row of the vertex at the cell's corner (i, j); QF[q, (k + 1) % 4]
     is at (i + 1, j), and so on counter-clockwise). A row that cannot be added to a manifold quad mesh (a repeated
     vertex, an edge already in two quads or in one in the same direction) raises InputError; a vertex whose quads
-    form several fans gives "INVALID_INPUT" (SnapError, or the report with raise_on_failure=False).
+    form several fans gives "INVALID_INPUT" (SnapError, or the report with raise_on_failure=False). The mesh's vertices
+    are the indices QF uses (below 2^31, not necessarily contiguous: rows of QV that no quad uses are not part of it).
     """
     out = _core.quad_mesh_patches(_integer_array(QF, "QF", "rows of 4 vertex indices", 2))
     report = json.loads(out.pop("patches"))

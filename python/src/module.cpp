@@ -580,26 +580,32 @@ std::string write_vval(const std::string& filename, const py::array_t<long long,
   return message;
 }
 
-// The quad mesh of the rows of QF (#QF x 4 vertex indices, counter-clockwise), built face by face with Euler::add_face();
-// a row that cannot be added (a repeated vertex, an index out of range, an edge in two quads in one direction or in a
-// third quad) is named (InputError)
-void quad_mesh_from_rows(const MatrixXlR& QF, Mesh& q)
+// The quad mesh of the rows of QF (#QF x 4 vertex indices, counter-clockwise), built face by face with Euler::add_face(),
+// on the indices that QF uses only (a row of large indices must not allocate that many vertices; rows of QV that no quad
+// uses are no vertices of the mesh): returns per vertex of q its index in QF. A row that cannot be added (a repeated vertex,
+// an index out of range, an edge in two quads in one direction or in a third quad) is named (InputError)
+std::vector<long long> quad_mesh_from_rows(const MatrixXlR& QF, Mesh& q)
 {
   if(QF.cols() != 4) throw Input_error("QF must have 4 columns (quads), not " + std::to_string(QF.cols()));
-  long long nv = 0;
+  std::vector<long long> used;
+  used.reserve(std::size_t(QF.size()));
   for(Eigen::Index r = 0; r < QF.rows(); ++r)
     for(Eigen::Index c = 0; c < QF.cols(); ++c) {
       if(QF(r, c) < 0 || QF(r, c) >= (1LL << 31)) throw Input_error("QF[" + std::to_string(r) + ", " + std::to_string(c) + "] is not a vertex index");
-      nv = (std::max)(nv, (long long)QF(r, c) + 1);
+      used.push_back((long long)QF(r, c));
     }
-  for(long long v = 0; v < nv; ++v) q.add_vertex(Mesh::Point(0, 0, 0));
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  for(std::size_t v = 0; v < used.size(); ++v) q.add_vertex(Mesh::Point(0, 0, 0));
   for(Eigen::Index r = 0; r < QF.rows(); ++r) {
     std::array<Mesh::Vertex_index, 4> c;
-    for(int k = 0; k < 4; ++k) c[std::size_t(k)] = Mesh::Vertex_index(Mesh::size_type(QF(r, k)));
+    for(int k = 0; k < 4; ++k)
+      c[std::size_t(k)] = Mesh::Vertex_index(Mesh::size_type(std::lower_bound(used.begin(), used.end(), (long long)QF(r, k)) - used.begin()));
     if(std::set<Mesh::Vertex_index>(c.begin(), c.end()).size() != 4 || CGAL::Euler::add_face(c, q) == Mesh::null_face())
       throw Input_error("QF row " + std::to_string(r) + " cannot be added to a manifold quad mesh (a repeated vertex, "
                         "or an edge already in two quads or in one in the same direction)");
   }
+  return used;
 }
 
 // quad_mesh_patches() on the quads of QF: the patches of extract_quad_mesh()'s report
@@ -618,7 +624,7 @@ py::dict quad_mesh_patches(const MatrixXlR& QF)
 py::dict quad_layout(const MatrixXlR& QF)
 {
   Mesh q, L;
-  quad_mesh_from_rows(QF, q);
+  const std::vector<long long> row_of = quad_mesh_from_rows(QF, q);
   auto arcs = L.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
   const SS::Quad_layout r = SS::quad_layout(q, L, arcs);
   py::dict out;
@@ -627,7 +633,7 @@ py::dict quad_layout(const MatrixXlR& QF)
   if(r.status != SS::SUCCESS) return out;
   py::array_t<long long> LV(py::ssize_t(L.number_of_vertices()));
   auto lv = LV.mutable_unchecked<1>();
-  for(Mesh::Vertex_index v : L.vertices()) lv(py::ssize_t(v)) = (long long)(SS::layout_quad_vertex(q, L, arcs, v));
+  for(Mesh::Vertex_index v : L.vertices()) lv(py::ssize_t(v)) = row_of[std::size_t(SS::layout_quad_vertex(q, L, arcs, v))];
   py::list faces, corners, lengths;
   for(Mesh::Face_index f : L.faces()) {
     std::vector<long long> vs, ls;

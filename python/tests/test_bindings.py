@@ -965,6 +965,16 @@ def test_quad_layout():
     check_quad_layout(grid, r)
     assert sorted(r["LV"]) == [idx(0, 0), idx(n, 0), idx(0, n), idx(n, n)] and r["border_arcs"] == 4
     assert r["polygon_mesh"] and r["t_junctions"] == 0 and list(r["LF_length"][0]) == [n] * 4
+    # sparse vertex indices (e.g. a part of a larger QV): the mesh of the vertices QF uses, LV in QF's numbering (the
+    # rows up to the largest index were allocated, 2^30 vertices here, and counted in the Euler characteristic)
+    sparse = 2 * grid + 2 ** 30
+    r = ss.quad_layout(sparse)
+    check_quad_layout(sparse, r)
+    assert sorted(r["LV"]) == sorted(2 * np.array([idx(0, 0), idx(n, 0), idx(0, n), idx(n, n)]) + 2 ** 30)
+    assert r["euler_characteristic"] == 1
+    p = ss.quad_mesh_patches(sparse)
+    assert p["sizes"] == [[n, n]] and p["nodes"] == 4
+    assert np.array_equal(ss.patch_vertex_grids(sparse, p)[0], 2 * ss.patch_vertex_grids(grid, ss.quad_mesh_patches(grid))[0] + 2 ** 30)
     # an L of three n x n blocks: the reflex corner (3 quads) sends traces to the border, which cut it into 3 squares
     jdx = lambda i, j: j * (2 * n + 1) + i
     ell = np.array([[jdx(i, j), jdx(i + 1, j), jdx(i + 1, j + 1), jdx(i, j + 1)]
