@@ -1214,6 +1214,25 @@ def test_integer_grid_map_within_one_cell():
             assert out[2]["cut_edges"] == 3 and out[2]["integer_translations_after"] == 3
 
 
+def test_integer_grid_align_edges_beyond_2_52():
+    # a 2 x 2 grid of squares at UV (2^52, 2^52) + [0, 2]^2: its border edges are align edges on isolines of 2^52 grid
+    # units or more, beyond the integers an integer-grid map holds exactly: RANGE_EXCEEDED, naming an align edge and the
+    # advice; at grid_scale 1/2 (isolines of 2^51 + {0, 1} grid units) it is an exact integer-grid map already
+    n = 2
+    V = np.array([[i, j, 0.0] for j in range(n + 1) for i in range(n + 1)])
+    F = np.array([f for j in range(n) for i in range(n) for f in
+                  ([j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1],
+                   [j * (n + 1) + i, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i])])
+    UV = V[:, :2] + 2.0 ** 52
+    kept = UV.copy()
+    out = ss.snap(V, F, UV, F, integer_grid_map=True, raise_on_failure=False)
+    assert out[2]["status"] == "RANGE_EXCEEDED" and np.array_equal(UV, kept)
+    assert out[2]["message"].startswith("align edge (") and "2^52 or more" in out[2]["message"]
+    assert "scale the map down (grid_scale / --grid-scale)" in out[2]["message"]
+    out = ss.snap(V, F, UV, F, integer_grid_map=True, grid_scale=0.5)
+    assert out[2]["status"] == "SUCCESS" and out[2]["align_edges"] == 8 and np.array_equal(out[0], kept)
+
+
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
