@@ -342,7 +342,7 @@ static void test_malformed()
   expect_invalid("two vertices", tri + "f 1/1 2/2\n", "2 vertices");
   expect_invalid("non-manifold edge", tri + "v 0 -1 0\nv 0 0 1\nvt 0 0\nf 1/1 2/2 3/3\nf 2/2 1/1 5/5\nf 1/1 2/2 6/5\n", "same direction");
   expect_invalid("inconsistent orientation", tri + "f 1/1 2/2 3/3\nf 2/2 4/4 3/3\nf 1/1 3/3 2/2\n", "stream:11:");
-  expect_invalid("bowtie vertex", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1/1 4/1 5/1\n", "non-manifold vertex 1");
+  expect_invalid("bowtie vertex", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 1/1 4/1 5/1\n", "stream:7: non-manifold vertex 1 (several fans");
   // Moebius strip: 6 triangles; the last one must use an edge in the same direction as the first.
   expect_invalid("non-orientable (Moebius)",
                  "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nvt 0 0\n"
@@ -1187,7 +1187,14 @@ static void test_matrices()
   refused(V, F, UV_nan, FUV, "UV(0, 1)");
   Eigen::MatrixXi F_twice = F;
   F_twice.row(1) = F.row(0);                                 // the same face twice: a non-manifold edge
-  refused(V, F_twice, UV, FUV, "F row");
+  refused(V, F_twice, UV, FUV, "F row 1: edge (rows " + std::to_string(F(0, 0)) + ", " + std::to_string(F(0, 1)) + " of V)");
+  // a bowtie at row 2 of V: named by its row (it was "F row: non-manifold vertex 3", a 1-based number of an OBJ file)
+  Eigen::MatrixXd V_bow(5, 3), UV_bow(5, 2);
+  V_bow << 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 0, -1, 0, 0;
+  UV_bow = V_bow.leftCols(2);
+  Eigen::MatrixXi F_bow(2, 3);
+  F_bow << 0, 1, 2, 2, 3, 4;
+  refused(V_bow, F_bow, UV_bow, F_bow, "F row 0: non-manifold row 2 of V (several fans");
 }
 
 // ------------------------------------------------------------------------------------------

@@ -514,6 +514,21 @@ inline std::size_t weld_representatives(const std::vector<std::array<double, 3> 
   return welded;
 }
 
+// How build_mesh() names what it refuses: for a file, the line of a face ("FILE:LINE") and the 1-based numbers of the
+// file's vertices; for the matrices (V, F) of the bindings (corner_uv_matrices.h), the rows of F and V (0-based)
+struct Soup_naming
+{
+  std::string where;   // the file's name, or "V, F"
+  bool rows = false;   // the matrices
+  std::string face(std::size_t line) const { return rows ? "F row " + std::to_string(line) : where + ":" + std::to_string(line); }
+  std::string vertex(std::size_t i) const { return rows ? "row " + std::to_string(i) + " of V" : "vertex " + std::to_string(i + 1); }
+  std::string edge(std::size_t a, std::size_t b) const
+  {
+    return rows ? "edge (rows " + std::to_string(a) + ", " + std::to_string(b) + " of V)"
+                : "edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ")";
+  }
+};
+
 // Soup -> mesh. The faces are first added to Halfedge_arrays (Euler::add_face() step for step, on index
 // arrays: internal/mesh/halfedge_arrays.h), which is also the connectivity check; only when every face was accepted and
 // every vertex is manifold is `tm` touched, in one pass (add_vertex, add_edge, add_face and the set_*
@@ -522,7 +537,7 @@ inline std::size_t weld_representatives(const std::vector<std::array<double, 3> 
 // With `corners`, (*corners)[f][k] is the halfedge whose target is corner k of soup face f.
 template <class TriangleMesh, class VPM, class HalfedgeUVMap>
 Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, HalfedgeUVMap uv,
-                  const std::string& where, std::string& message,
+                  const Soup_naming& names, std::string& message,
                   std::vector<std::array<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, 3> >* corners = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh>                  GT;
@@ -535,7 +550,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   const std::size_t nv = soup.points.size(), nf = soup.face_v.size();
   // the arrays hold halfedge indices in int (as Surface_mesh does in 32 bits)
   if(nf > std::size_t(300000000)) {
-    message = where + ": " + std::to_string(nf) + " faces: more than this reader's limit of 300 million";
+    message = names.where + ": " + std::to_string(nf) + " faces: more than this reader's limit of 300 million";
     return INVALID_INPUT;
   }
   // 1. representative of each file vertex (itself, or the first bit-identical one when welding)
@@ -557,7 +572,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   for(std::size_t i = 0; i < nv; ++i) if(id[rep[i]] != none) mesh_vertex[i] = int(id[rep[i]]);
 
   auto fail = [&](std::size_t line, const std::string& why) {
-    message = where + ":" + std::to_string(line) + ": " + why;
+    message = names.face(line) + ": " + why;
     return INVALID_INPUT;
   };
 
@@ -575,9 +590,9 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
       for(int k = 0; k < 3; ++k) {
         const int h = a.halfedge(fv[std::size_t(k)], fv[std::size_t((k + 1) % 3)]);
         if(h >= 0 && !a.is_border(h))
-          return fail(soup.face_line[f], "edge (" + std::to_string(soup.face_v[f][std::size_t(k)] + 1) + ", " +
-                      std::to_string(soup.face_v[f][std::size_t((k + 1) % 3)] + 1) + ") is already used in the same direction by another "
-                      "face: non-manifold edge or inconsistent (non-orientable) orientation");
+          return fail(soup.face_line[f], names.edge(soup.face_v[f][std::size_t(k)], soup.face_v[f][std::size_t((k + 1) % 3)]) +
+                      " is already used in the same direction by another face: non-manifold edge or inconsistent "
+                      "(non-orientable) orientation");
       }
       return fail(soup.face_line[f], "face cannot be added: non-manifold vertex (a vertex of the face is already "
                                      "surrounded by faces) or non-manifold edge");
@@ -588,7 +603,11 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   if(several_fans >= 0) {
     std::size_t file_index = 0;
     for(std::size_t j = 0; j < nv; ++j) if(rep[j] == j && id[j] == std::size_t(several_fans)) { file_index = j; break; }
-    message = where + ": non-manifold vertex " + std::to_string(file_index + 1) + " (several fans of faces meet at it)";
+    std::size_t f = 0;                                 // the first face at it
+    while(f + 1 < nf && mesh_vertex[soup.face_v[f][0]] != several_fans && mesh_vertex[soup.face_v[f][1]] != several_fans &&
+          mesh_vertex[soup.face_v[f][2]] != several_fans) ++f;
+    message = names.face(soup.face_line[f]) + ": non-manifold " + names.vertex(file_index) +
+              " (several fans of faces meet at it, this face in one of them)";
     return INVALID_INPUT;
   }
 
@@ -612,7 +631,7 @@ Status build_mesh(const Obj_soup& soup, bool weld, TriangleMesh& tm, VPM vpm, Ha
   }
 
   message = "read " + std::to_string(soup.face_v.size()) + " faces, " + std::to_string(n_used) + " vertices, " +
-            std::to_string(soup.uvs.size()) + " texture coordinates from " + where;
+            std::to_string(soup.uvs.size()) + " texture coordinates from " + names.where;
   if(weld) message += "; welded " + std::to_string(welded) + " duplicated vertices";
   if(unreferenced != 0) message += "; dropped " + std::to_string(unreferenced) + " vertices used by no face";
   if(soup.skipped_records != 0) message += "; skipped " + std::to_string(soup.skipped_records) + " other records (vn, g, s, ...)";
@@ -997,7 +1016,7 @@ Status mesh_of_soup(const Obj_soup& soup, const std::string& where, TriangleMesh
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, tm));
   const bool weld = choose_parameter(get_parameter(np, snap_np::weld_vertices), false);
-  return build_mesh(soup, weld, tm, vpm, uv, where, message);
+  return build_mesh(soup, weld, tm, vpm, uv, Soup_naming{where, false}, message);
 }
 
 template <class TriangleMesh, class HalfedgeUVMap, class NamedParameters>

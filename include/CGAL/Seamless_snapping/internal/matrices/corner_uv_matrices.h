@@ -96,7 +96,7 @@ Status mesh_from_matrices(const Eigen::MatrixBase<DV>& V, const Eigen::MatrixBas
   Matrix_mesh_with_uv& result = out;   // a fresh object of the caller's
   result.uv = result.mesh.add_property_map<Matrix_mesh::Halfedge_index, Matrix_kernel::Point_2>("h:uv").first;
   const Status s = IO::internal::build_mesh(soup, weld, result.mesh, get(CGAL::vertex_point, result.mesh), result.uv,
-                                            "F row", message, &result.corner);
+                                            IO::internal::Soup_naming{"V, F", true}, message, &result.corner);
   return s;
 }
 
