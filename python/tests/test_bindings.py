@@ -1014,6 +1014,32 @@ def unit_cube():
     return np.array(V, dtype=float), np.array(F), np.array(UV, dtype=float), np.array(FUV)
 
 
+def test_trace_isoline_at_a_cone_in_the_chart_of_the_face():
+    # every corner of the cube is a cone of 3 quarter turns; a side's two triangles are one chart. A direction that the
+    # chart shows at the corner (along the side's edges, +u / +v at its corner (0, 0), ...) is the same ray from either
+    # triangle (from the second triangle, +u at (0, 0), along an edge of the first, was invalid_start: turning
+    # counter-clockwise from its corner the cone closes before reaching it); the others follow the counter-clockwise rule
+    # from either triangle alike (the two triangles' corners at a vertex span consecutive angles of one chart)
+    V, F, UV, FUV = unit_cube()
+    shown = {(0, 0): ("+u", "+v"), (1, 0): ("-u", "+v"), (1, 1): ("-u", "-v"), (0, 1): ("+u", "-v")}
+    def ray(f, c, d):
+        t = ss.trace_isoline(V, F, UV, FUV, f, c, d)
+        return t["end"], tuple(t["points"][1]) if len(t["points"]) > 1 else None
+    for side in range(6):
+        a, b = 2 * side, 2 * side + 1
+        for ca, v in enumerate(F[a]):
+            if v not in F[b]:
+                continue
+            cb = list(F[b]).index(v)
+            local = tuple(int(x) for x in UV[FUV[a][ca]] - (2 * side, 0))
+            for d in ("+u", "+v", "-u", "-v"):
+                assert ray(a, ca, d) == ray(b, cb, d), (side, v, d)
+                if d in shown[local]:
+                    end, point = ray(a, ca, d)
+                    assert end == "cone" and point is not None and \
+                        np.count_nonzero(np.asarray(point) != V[v]) == 1, (side, v, d, end)   # along a cube edge
+
+
 def quad_degrees(QF, n):
     """The number of quad edges at each of the n quad vertices."""
     edges = {(min(q[k], q[(k + 1) % 4]), max(q[k], q[(k + 1) % 4])) for q in QF for k in range(4)}

@@ -161,7 +161,11 @@ public:
   Status status() const { return status_; }
   const std::string& message() const { return message_; }
 
-  /// traces from the vertex `target(corner)`, along `d` in the chart of `face(corner)` (the sector of that corner).
+  /// traces from the vertex `target(corner)`, along `d` in the chart of `face(corner)` (the sector of that corner). At a
+  /// cone the rays around the vertex depend on the way around it: the ray is the one that the chart of `face(corner)`
+  /// shows (within the faces around the vertex that share that chart, up to the cut edges), else the one reached turning
+  /// counter-clockwise from the corner, else none (`Trace_end::INVALID_START`: e.g. one of the four directions at a cone
+  /// of 3 quarter turns).
   Trace trace_from_vertex(halfedge_descriptor corner, Trace_direction d,
                           const Trace_options<TriangleMesh>& options = Trace_options<TriangleMesh>()) const
   {

@@ -171,12 +171,18 @@ public:
   }
 
   // Start at the vertex target(corner), direction m in the chart of face(corner): the sector that
-  // contains the ray is found as in a vertex passage.
+  // contains the ray is found as in a vertex passage; at a cone, the ray in that chart where the chart shows it
+  // (chart_wedge_of_start_ray()), else the one reached counter-clockwise from the corner.
   void start_at_vertex(Trace_run& r, int corner, int m) const
   {
     r.start_vertex = cm().target[corner];
-    const Vertex_fan fan = vertex_fan(map.cm, map.rot, corner, m);
+    Vertex_fan fan = vertex_fan(map.cm, map.rot, corner, m);
     if(fan.degenerate) return finish(r, Trace_end::DEGENERATE_VERTEX, "start vertex " + std::to_string(r.start_vertex));
+    // the ray that the chart of face(corner) shows around v, from the corner of that chart whose angle holds it (the
+    // same chart: the same m; the ray is then on its first edge or counter-clockwise of it, below); at a cone, turning
+    // counter-clockwise from `corner` reached another ray or none
+    const int in_chart = chart_wedge_of_start_ray(fan, cm(), map.st.is_cut);
+    if(in_chart > 0) fan = vertex_fan(map.cm, map.rot, fan.wedges[std::size_t(in_chart)].corner, m);
     // the ray along d_m: on the first edge of the start corner (lifted 0), else the first one
     // counter-clockwise from it (lifted 8); on an open fan also the one clockwise from it (lifted 0)
     // A ray along an edge is taken, as in a vertex passage, in the wedge where it is e_b (so that a

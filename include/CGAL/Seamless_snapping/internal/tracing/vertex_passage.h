@@ -128,6 +128,30 @@ inline void wedges_containing(const Vertex_fan& fan, int T, std::vector<int>& ou
   }
 }
 
+// A wedge of the closed fan `fan` (its wedges listed from its start corner) whose closed angle holds the ray of direction
+// m0, the reference direction of the start corner, in the start corner's own chart: among the wedges that share that
+// chart (reached from the start corner without crossing a cut edge, `is_cut` per edge); -1 if none, or if the ray is
+// there twice (the chart overlaps itself around v: a cone of more than a full turn inside one chart). The ray found
+// counter-clockwise (lifted 8) from the start is this one where it lies counter-clockwise of the start in its chart; at a
+// cone it may lie clockwise of the start instead, and the way around counter-clockwise then reaches another ray or none.
+inline int chart_wedge_of_start_ray(const Vertex_fan& fan, const Corner_mesh& cm, const std::vector<char>& is_cut)
+{
+  const int n = int(fan.wedges.size());
+  if(!fan.closed || n == 0 || fan.start != 0) return -1;
+  auto crosses_cut = [&](int i) { return is_cut[std::size_t(cm.edge[fan.wedges[std::size_t(i)].corner])] != 0; };   // wedge i to i + 1
+  auto holds = [&](int i, int T) { return fan.wedges[std::size_t(i)].La <= T && T <= fan.wedges[std::size_t(i)].Lb; };
+  const int total = fan.wedges[std::size_t(n - 1)].Lb - fan.wedges[0].La;   // the angle around v, lifted
+  int ccw = 1;                                                               // wedges 0 .. ccw - 1: the chart, ccw
+  while(ccw < n && !crosses_cut(ccw - 1)) ++ccw;
+  std::vector<int> found;                                                    // the ray on a shared edge: two wedges
+  for(int i = 0; i < ccw; ++i) if(holds(i, 8)) found.push_back(i);           // lifted 8 counter-clockwise
+  for(int j = n - 1; j >= ccw && !crosses_cut(j); --j)                       // lifted 0 clockwise: total counter-clockwise
+    if(holds(j, total)) found.push_back(j);
+  const bool one_ray = found.size() == 1 ||
+                       (found.size() == 2 && (found[1] == found[0] + 1 || (found[0] == 0 && found[1] == n - 1)));
+  return !found.empty() && one_ray ? found[0] : -1;
+}
+
 // The direction, in the chart of wedge w, of the ray at lifted value T (T even, inside w):
 // the carried reference direction turned by (T mod 8) / 2 quarter turns.
 inline int ray_direction(const Fan_wedge& w, int T) { return direction_mod4(w.m + (((T % 8) + 8) % 8) / 2); }
