@@ -13,6 +13,7 @@ import os
 import shutil
 import subprocess
 import sys
+import threading
 
 from cut_mesh import write_cut_mesh
 from fold_over_grid import write_fold_over_grid
@@ -384,6 +385,35 @@ for args in [["--report", copy], ["--integer-grid", "--vval", copy]]:
           "%s naming IN: exit 2, IN unchanged: %d %s" % (args[-2], rc, text))
 rc, text = run(src, single, "extra.obj")
 check(rc == 2 and "several inputs: --outdir" in text, "a third file name without --outdir: %d %s" % (rc, text))
+
+# 7. reading and writing files (the I/O sweep)
+small = cube   # the cube of 1.3, snapped in well under a second
+
+# a pipe as input: with 2 threads the reader seeked on it and read it as empty ("empty mesh: no face in 0 lines")
+piped = os.path.join(work, "piped.obj")
+p = subprocess.run([exe, "/dev/stdin", piped, "--threads", "2"], input=open(small).read(), capture_output=True, text=True)
+check(p.returncode == 0 and records(piped, "f") == records(small, "f"),
+      "a pipe as input, 2 threads: %d %s" % (p.returncode, p.stdout + p.stderr))
+# an input read twice (a cut mesh, welded after a first read; --keep-layout) from a pipe: refused with the reason (the
+# second read found the pipe empty); from a FIFO it waited for a writer for ever
+for twice, args in [(cut, []), (small, ["--keep-layout"])]:
+    for threads in ["1", "2"]:
+        piped2 = os.path.join(work, "piped_twice.obj")
+        p = subprocess.run([exe, "/dev/stdin", piped2, "--threads", threads, *args], input=open(twice).read(),
+                           capture_output=True, text=True)
+        check(p.returncode == 1 and "can be read once only" in p.stderr and not os.path.exists(piped2),
+              "%s %s from a pipe, %s threads: refused: %d %s" % (twice, args, threads, p.returncode, p.stderr))
+if hasattr(os, "mkfifo"):
+    fifo = os.path.join(work, "fifo")
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=lambda: open(fifo, "w").write(open(cut).read()))
+    writer.start()
+    try:
+        p = subprocess.run([exe, fifo, os.path.join(work, "fifo_out.obj")], capture_output=True, text=True, timeout=120)
+        check(p.returncode == 1 and "can be read once only" in p.stderr, "a cut mesh from a FIFO: refused: %d %s" % (p.returncode, p.stderr))
+    except subprocess.TimeoutExpired:
+        check(False, "a cut mesh from a FIFO: the program waited for a second writer")
+    writer.join()
 
 for f in failures:
     print("FAILED:", f)

@@ -220,7 +220,9 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
+  int reads = 0;
   auto read = [&](bool w, std::string& m) {
+    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
     return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, params::weld_vertices(w).number_of_threads(threads))

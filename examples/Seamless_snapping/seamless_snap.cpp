@@ -369,7 +369,9 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   UV_map uv;
   std::string message;
   Clock::time_point t = Clock::now();
+  int reads = 0;
   const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
+    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
     return read_mesh(in, w, o.threads, mesh, uv, m);
   });
   if(!wr.ok) return fail("cannot read input: " + message);
@@ -402,7 +404,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   //    which keeps the input's v/vt layout
   Eigen::MatrixXd V, UV, UV_out;
   Eigen::MatrixXi F, FUV, FUV_out;
-  if(keep_layout && SS::IO::read_OBJ_matrices(in, V, F, UV, FUV, message) != SS::SUCCESS)
+  if(keep_layout && (!SS::IO::internal::can_read_again(in, "--keep-layout", message) ||
+                     SS::IO::read_OBJ_matrices(in, V, F, UV, FUV, message) != SS::SUCCESS))
     return fail("cannot read input: " + message);
   const auto np = params::weld_vertices(weld).use_reduced_system(reduced).align_boundary(align_boundary)
                      .integer_grid_map(integer_grid).grid_scale(grid_scale)

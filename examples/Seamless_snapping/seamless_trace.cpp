@@ -116,7 +116,9 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
+  int reads = 0;
   const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
+    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
     return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, SS::parameters::weld_vertices(w)) == SS::SUCCESS;

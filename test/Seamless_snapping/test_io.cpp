@@ -60,6 +60,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -873,6 +874,19 @@ static void test_write_failures(const fs::path& tmp)
   const ssize_t got = reader >= 0 ? read(reader, buffer, sizeof buffer - 1) : -1;
   CHECK(fs::is_fifo(fifo) && got == ssize_t(text.size()) && text == buffer, "the named pipe was replaced or not written (" << got << " bytes)");
   if(reader >= 0) close(reader);
+
+  namespace I = SS::IO::internal;
+  // a named pipe as input: with two threads, parse_obj_file() seeked on it, the failbit stayed, and it read as empty;
+  // can_read_again() refuses a second read (which waited for a writer for ever)
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+  std::thread writer([&] { std::ofstream w(fifo.string()); w << tri; });
+  I::Obj_soup piped;
+  const SS::Status ps = I::parse_obj_file(fifo.string(), piped, msg, 2, 0);
+  writer.join();
+  CHECK(ps == SS::SUCCESS && piped.face_v.size() == 1, "a named pipe, two threads: " << msg);
+  CHECK(!I::can_read_again(fifo.string(), "the test", msg) && msg.find("can be read once only") != std::string::npos,
+        "a named pipe: " << msg);
+  CHECK(I::can_read_again(out.string(), "the test", msg), "a regular file can be read again");
 #endif
   // the missing-file reader error
   Mesh r; UV_map ruv = r.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;

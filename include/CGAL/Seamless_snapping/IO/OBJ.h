@@ -432,6 +432,7 @@ inline void append_part(Obj_soup& a, Obj_parse_state& sa, const Obj_soup& b, con
 // threads or more and a file of at least `min_split` bytes, its two halves (cut after the first '\n' from the middle
 // on) are parsed at once, on two threads, and joined; where either half fails (bad input, a relative index in the
 // second half, a read error), the whole file is parsed again on one thread, for the message parse_obj() gives.
+// What is not a regular file (a pipe, a FIFO) is read once, on one thread.
 // `in_halves`: set if the result is the two halves'.
 // The 30 MB OBJ of ../shared/large, min of 6 in one process: parsing 49 -> 31 ms, the whole reader 128 -> 113 ms.
 inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::string& message, unsigned threads,
@@ -443,7 +444,9 @@ inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::s
     message = "cannot open '" + filename + "' for reading";
     return INVALID_INPUT;
   }
-  if(threads >= 2) {
+  // a pipe or a FIFO (/dev/stdin) cannot seek: read on one thread (the failed seekg() left it failed, read as empty)
+  std::error_code ec;
+  if(threads >= 2 && std::filesystem::is_regular_file(std::filesystem::status(filename, ec))) {
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
     std::ifstream second;             // opened only for a file large enough to be split
@@ -923,6 +926,19 @@ inline bool can_create(const std::string& filename, std::string& message)
   if(fs::is_directory(fs::status(filename, ec))) message = "cannot write '" + filename + "': it is a directory";
   else if(!fs::is_directory(fs::status(dir, ec))) message = "cannot write '" + filename + "': no directory '" + dir.string() + "'";
   else return true;
+  return false;
+}
+
+// Whether the input `filename` can be read a second time, for `why` (the command-line programs read a cut mesh as it
+// is, then welded; --keep-layout reads it again as matrices): a regular file can; a pipe, a FIFO or a terminal
+// (/dev/stdin of `cat a.obj | ...`) gives its text once (read again, it read as empty or waited for a writer): false
+// with `message`.
+inline bool can_read_again(const std::string& filename, const std::string& why, std::string& message)
+{
+  std::error_code ec;
+  if(std::filesystem::is_regular_file(std::filesystem::status(filename, ec))) return true;
+  message = "'" + filename + "' is not a regular file (a pipe?) and can be read once only, but " + why +
+            " reads it a second time; save it to a file first";
   return false;
 }
 
