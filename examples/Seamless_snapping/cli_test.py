@@ -415,6 +415,12 @@ if hasattr(os, "mkfifo"):
         check(False, "a cut mesh from a FIFO: the program waited for a second writer")
     writer.join()
 
+# --pin DIR and --features DIR read as empty lists (exit 0); now refused as the OBJ reader refuses a directory
+for opt in ["--pin", "--features"]:
+    dout = os.path.join(work, "list_dir.obj")
+    rc, text = run(small, dout, opt, work)
+    check(rc == 1 and "read error" in text and not os.path.exists(dout), "%s DIR: refused: %d %s" % (opt, rc, text))
+
 for f in failures:
     print("FAILED:", f)
 print("cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))

@@ -192,7 +192,8 @@ typedef Mesh::Property_map<Mesh::Halfedge_index, bool>   Halfedge_flags;
 
 // A file of 0-based vertex indices, `per_line` of them per line ('#' starts a comment, blank lines are
 // skipped): `use(indices, where)` per line, where = "file:line: " (it returns false with a message to
-// stop). False with a message naming the line for a malformed line or an index out of range.
+// stop). False with a message naming the line for a malformed line or an index out of range, and for a file that
+// cannot be read to its end (a directory was read as an empty list).
 template <class Use>
 static bool read_vertex_index_lines(const std::string& file, const char* what, std::size_t per_line, const Mesh& m,
                                     const Use& use, std::string& message)
@@ -200,7 +201,8 @@ static bool read_vertex_index_lines(const std::string& file, const char* what, s
   std::ifstream is(file);
   if(!is) { message = "cannot open the " + std::string(what) + " file '" + file + "'"; return false; }
   std::string line;
-  for(std::size_t no = 1; std::getline(is, line); ++no) {
+  std::size_t no = 1;
+  for(; std::getline(is, line); ++no) {
     line = line.substr(0, line.find('#'));
     std::istringstream ls(line);
     std::vector<std::string> tokens;
@@ -223,6 +225,10 @@ static bool read_vertex_index_lines(const std::string& file, const char* what, s
       idx.push_back(i);
     }
     if(!use(idx, where)) return false;
+  }
+  if(is.bad()) {                             // a directory (EISDIR), an I/O error: as the OBJ reader says it
+    message = "cannot read the " + std::string(what) + " file '" + file + "': read error after line " + std::to_string(no - 1);
+    return false;
   }
   return true;
 }
