@@ -421,6 +421,15 @@ for opt in ["--pin", "--features"]:
     rc, text = run(small, dout, opt, work)
     check(rc == 1 and "read error" in text and not os.path.exists(dout), "%s DIR: refused: %d %s" % (opt, rc, text))
 
+# a file option followed by another option or an empty name: a command-line error, not a file named "--quiet"
+for opt in ["--report", "--vval", "--pin", "--features"]:
+    for value in ["", "--quiet"]:
+        if os.path.exists(os.path.join(work, "opt.obj")):
+            os.remove(os.path.join(work, "opt.obj"))
+        rc, text = run(small, os.path.join(work, "opt.obj"), "--integer-grid", opt, value)
+        check(rc == 2 and "needs a file name" in text and not os.path.exists(os.path.join(work, "opt.obj")),
+              "%s %r: exit 2: %d %s" % (opt, value, rc, text))
+
 for f in failures:
     print("FAILED:", f)
 print("cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))

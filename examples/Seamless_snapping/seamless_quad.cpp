@@ -189,11 +189,11 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--layout") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_quad: --layout needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_quad: --layout needs a file name\n" << usage_text; return 2; }
       layout_file = argv[++i];
     }
     else if(a == "--report") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_quad: --report needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_quad: --report needs a file name\n" << usage_text; return 2; }
       report_file = argv[++i];
     }
     else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_quad: unknown option '" << a << "'\n" << usage_text; return 2; }

@@ -627,15 +627,15 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--pin") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --pin needs a file name\n" << usage_text; return 2; }
       pin_file = argv[++i];
     }
     else if(a == "--vval") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --vval needs a file name\n" << usage_text; return 2; }
       vval_file = argv[++i];
     }
     else if(a == "--features") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --features needs a file name\n" << usage_text; return 2; }
       features_file = argv[++i];
     }
     else if(a == "--sharp-angle") {
@@ -651,15 +651,15 @@ int main(int argc, char** argv)
       ++i;
     }
     else if(a == "--outdir") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --outdir needs a directory\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --outdir needs a directory\n" << usage_text; return 2; }
       outdir = argv[++i];
     }
     else if(a == "--summary") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --summary needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --summary needs a file name\n" << usage_text; return 2; }
       summary_file = argv[++i];
     }
     else if(a == "--report") {
-      if(i + 1 >= argc || *argv[i + 1] == '\0') { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) { std::cerr << "seamless_snap: --report needs a file name\n" << usage_text; return 2; }
       report_file = argv[++i]; has_report = true;
     }
     else if(a.size() > 1 && a[0] == '-') { std::cerr << "seamless_snap: unknown option '" << a << "'\n" << usage_text; return 2; }

@@ -22,6 +22,7 @@
 #include <CGAL/Seamless_snapping/IO/trace_svg.h>
 #include <CGAL/Seamless_snapping/Motorcycle_graph.h>
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
+#include <CGAL/Seamless_snapping/internal/io/command_line.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
@@ -89,16 +90,18 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--weld") weld = true;
     else if(a == "--no-weld") no_weld = true;
-    else if(a == "--json" && i + 1 < argc) json = argv[++i];
-    else if(a == "--svg" && i + 1 < argc) svg = argv[++i];
-    else if(a == "--layout-obj" && i + 1 < argc) layout_obj = argv[++i];
-    else if(a == "--layout-ply" && i + 1 < argc) layout_ply = argv[++i];
+    else if(a == "--json" || a == "--svg" || a == "--layout-obj" || a == "--layout-ply") {
+      if(!SS::IO::internal::file_name_follows(argc, argv, i)) {
+        std::cerr << "seamless_trace: " << a << " needs a file name\n" << usage; return 2;
+      }
+      (a == "--json" ? json : a == "--svg" ? svg : a == "--layout-obj" ? layout_obj : layout_ply) = argv[++i];
+    }
     else if(a == "--help") { std::cout << usage << help; return 0; }
-    else if(in.empty() && a[0] != '-') in = a;
+    else if(in.empty() && !a.empty() && a[0] != '-') in = a;
     else {
-      const bool needs_file = a == "--json" || a == "--svg" || a == "--layout-obj" || a == "--layout-ply";
-      std::cerr << "seamless_trace: " << (needs_file ? a + " needs a file name" : a[0] == '-' ? "unknown option '" + a + "'"
-                                                                                             : "one input only ('" + a + "' after '" + in + "')")
+      std::cerr << "seamless_trace: " << (!a.empty() && a[0] == '-' ? "unknown option '" + a + "'"
+                                                                     : in.empty() ? std::string("no input file")
+                                                                     : "one input only ('" + a + "' after '" + in + "')")
                 << "\n" << usage;
       return 2;
     }

@@ -10,7 +10,7 @@
 #ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_COMMAND_LINE_H
 #define CGAL_SEAMLESS_SNAPPING_INTERNAL_IO_COMMAND_LINE_H
 
-// The option values of the command-line programs (seamless_snap, seamless_quad): each parsed whole (nothing may
+// The option values of the command-line programs (seamless_snap, seamless_quad, seamless_trace): each parsed whole (nothing may
 // follow the number) and checked against its range, so that a bad value is refused with exit status 2 instead of
 // being read as a prefix or wrapped.
 
@@ -48,6 +48,13 @@ inline bool parse_grid_scale(const char* text, double& scale)
 {
   int exponent = 0;
   return parse_number(text, scale) && Seamless_snapping::internal::grid_scale_exponent(scale, exponent);
+}
+
+// Whether argv[i], an option that takes a file name, is followed by one: not empty (an empty name wrote nothing and
+// exited 0) and not an option (`--json --svg` wrote the JSON into a file named "--svg"); ./-x names such a file
+inline bool file_name_follows(int argc, char** argv, int i)
+{
+  return i + 1 < argc && argv[i + 1][0] != '\0' && argv[i + 1][0] != '-';
 }
 
 } // namespace internal
