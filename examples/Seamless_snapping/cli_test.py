@@ -389,6 +389,18 @@ check(rc == 2 and "several inputs: --outdir" in text, "a third file name without
 # 7. reading and writing files (the I/O sweep)
 small = cube   # the cube of 1.3, snapped in well under a second
 
+# /dev/stdout (also --report) is written where the shell's `>> log` stands: write_atomically() followed it to the
+# regular file log and renamed a temporary file over it (log lost its earlier lines)
+for args in [["/dev/stdout", "--quiet"], [os.path.join(work, "to_log.obj"), "--quiet", "--report", "/dev/stdout"]]:
+    log = os.path.join(work, "log.txt")
+    with open(log, "w") as f:
+        f.write("an earlier line\n")
+    with open(log, "a") as f:
+        rc = subprocess.run([exe, small, *args], stdout=f, stderr=subprocess.PIPE).returncode
+    text = open(log).read()
+    check(rc == 0 and text.startswith("an earlier line\n") and ("\nv " in text if args[0] == "/dev/stdout" else '"output"' in text),
+          "%s >> log: log keeps its lines and gets the output: %d %r" % (" ".join(args), rc, text[:80]))
+
 # a pipe as input: with 2 threads the reader seeked on it and read it as empty ("empty mesh: no face in 0 lines")
 piped = os.path.join(work, "piped.obj")
 p = subprocess.run([exe, "/dev/stdin", piped, "--threads", "2"], input=open(small).read(), capture_output=True, text=True)
@@ -421,6 +433,22 @@ for opt in ["--pin", "--features"]:
     rc, text = run(small, dout, opt, work)
     check(rc == 1 and "read error" in text and not os.path.exists(dout), "%s DIR: refused: %d %s" % (opt, rc, text))
 
+# a replaced OUT.obj keeps its permission bits (a 0600 file became 0644); a dangling link gets its target created
+if os.name == "posix":
+    kept = os.path.join(work, "mode.obj")
+    with open(kept, "w") as f:
+        f.write("old\n")
+    os.chmod(kept, 0o600)
+    rc, text = run(small, kept, "--quiet")
+    check(rc == 0 and (os.stat(kept).st_mode & 0o777) == 0o600, "OUT keeps mode 0600: %d %o" % (rc, os.stat(kept).st_mode))
+    link, target = os.path.join(work, "dangling.obj"), os.path.join(work, "dangling_target.obj")
+    os.symlink("dangling_target.obj", link)
+    rc, text = run(small, link, "--quiet")
+    check(rc == 0 and os.path.islink(link) and os.path.isfile(target), "a dangling link: its target created: %d %s" % (rc, text))
+# a name of 238 to 255 bytes: the temporary name (NAME.tmp-XXXXXXXXXXXX) was too long
+long_name = os.path.join(work, "n" * 251 + ".obj")
+rc, text = run(small, long_name, "--quiet")
+check(rc == 0 and os.path.isfile(long_name), "a 255-byte file name: %d %s" % (rc, text))
 # a file option followed by another option or an empty name: a command-line error, not a file named "--quiet"
 for opt in ["--report", "--vval", "--pin", "--features"]:
     for value in ["", "--quiet"]:

@@ -876,6 +876,49 @@ static void test_write_failures(const fs::path& tmp)
   if(reader >= 0) close(reader);
 
   namespace I = SS::IO::internal;
+  // a name of an open descriptor (/dev/fd/N, /proc/self/fd/N, /dev/stdout of `>> log`) is written where it stands: the
+  // name led to the regular file, which a rename replaced (its earlier lines lost)
+  const fs::path log = dir / "log.txt";
+  for(const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    { std::ofstream o(log.string(), std::ios::trunc); o << "earlier\n"; }
+    const int fd = open(log.c_str(), O_WRONLY | O_APPEND);
+    CHECK(SS::IO::internal::write_text_atomically(prefix + std::to_string(fd), "text\n", msg) == SS::SUCCESS, prefix << ": " << msg);
+    close(fd);
+    std::ifstream in(log.string()); std::stringstream got; got << in.rdbuf();
+    CHECK(got.str() == "earlier\ntext\n", prefix << "N replaced the file it names: '" << got.str() << "'");
+  }
+  // a replaced file keeps its permission bits (a 0600 file became 0644)
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write);
+  CHECK(SS::IO::internal::write_text_atomically(out.string(), "x\n", msg) == SS::SUCCESS, "0600: " << msg);
+  CHECK(fs::status(out).permissions() == (fs::perms::owner_read | fs::perms::owner_write),
+        "the mode of a replaced file: " << std::oct << int(fs::status(out).permissions()) << std::dec);
+  // a dangling symbolic link: its target is created (it was replaced by a regular file)
+  const fs::path dangling = dir / "dangling.obj";
+  fs::create_symlink("dangling_target.obj", dangling);
+  CHECK(SS::IO::internal::write_text_atomically(dangling.string(), "x\n", msg) == SS::SUCCESS, "dangling link: " << msg);
+  CHECK(fs::is_symlink(fs::symlink_status(dangling)) && fs::is_regular_file(dir / "dangling_target.obj"),
+        "a dangling link was replaced, or its target not created");
+  // a name of 255 bytes: NAME.tmp-XXXXXXXXXXXX was too long for the file system ("File name too long")
+  const fs::path long_name = dir / std::string(255, 'n');
+  CHECK(SS::IO::internal::write_text_atomically(long_name.string(), "x\n", msg) == SS::SUCCESS, "255-byte name: " << msg);
+  CHECK(fs::is_regular_file(long_name), "255-byte name not written");
+  // Atomic_file: a prepared file that is not committed leaves nothing behind (seamless_snap's --vval, seamless_quad's --layout)
+  const std::size_t files_before = count_files(dir);
+  {
+    SS::IO::internal::Atomic_file prepared;
+    CHECK(prepared.prepare((dir / "never.txt").string(), SS::IO::internal::text_writer("x\n"), msg) == SS::SUCCESS, msg);
+    CHECK(count_files(dir) == files_before + 1 && !fs::exists(dir / "never.txt"), "prepare() wrote the file itself");
+  }
+  CHECK(count_files(dir) == files_before, "an uncommitted Atomic_file left its temporary file");
+  {
+    SS::IO::internal::Atomic_file prepared;
+    const std::string text = "y\n";
+    CHECK(prepared.prepare(out.string(), SS::IO::internal::text_writer(text), msg) == SS::SUCCESS &&
+          prepared.commit(msg) == SS::SUCCESS, msg);
+    std::ifstream in(out.string()); std::string line; std::getline(in, line);
+    CHECK(line == "y" && count_files(dir) == files_before, "commit() did not rename the temporary file");
+  }
+
   // a named pipe as input: with two threads, parse_obj_file() seeked on it, the failbit stayed, and it read as empty;
   // can_read_again() refuses a second read (which waited for a writer for ever)
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";

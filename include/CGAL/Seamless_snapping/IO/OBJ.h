@@ -42,6 +42,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <istream>
 #include <mutex>
 #include <ostream>
@@ -864,7 +865,9 @@ private:
   };
 };
 
-// A name for a temporary file next to `filename` (same directory, so std::rename is atomic).
+// A name for a temporary file next to `filename` (same directory, so std::rename is atomic). Where the name would
+// exceed 255 bytes (NAME_MAX of common file systems) with the suffix, a short name is used: a name of 238 to 255
+// bytes was refused ("File name too long").
 inline std::string temporary_name_next_to(const std::string& filename)
 {
   static std::atomic<unsigned> counter(0);
@@ -873,46 +876,60 @@ inline std::string temporary_name_next_to(const std::string& filename)
       static_cast<unsigned long long>(std::chrono::steady_clock::now().time_since_epoch().count()) ^ (counter++);
   char buf[32];
   std::snprintf(buf, sizeof buf, "%012llx", r & 0xFFFFFFFFFFFFull);
-  return filename + ".tmp-" + buf;
+  const std::filesystem::path p(filename);
+  if(p.filename().string().size() + 17 <= 255) return filename + ".tmp-" + buf;
+  return (p.parent_path() / (std::string(".tmp-") + buf)).string();
 }
 
-// write(os) into the open stream `os`, then flushed and closed; false if any of it failed
+// The descriptor that `filename` names (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), else -1: a file the
+// caller opened (the shell's `> log` or `>> log`), which is written where it stands, never truncated or replaced (the
+// name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines)
+inline int descriptor_named(const std::string& filename)
+{
+  if(filename == "/dev/stdout") return 1;
+  if(filename == "/dev/stderr") return 2;
+  for(const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    int fd = -1;
+    const char* const end = filename.data() + filename.size();
+    if(filename.size() > prefix.size() && filename.compare(0, prefix.size(), prefix) == 0) {
+      const std::from_chars_result r = std::from_chars(filename.data() + prefix.size(), end, fd);
+      if(r.ec == std::errc() && r.ptr == end && fd >= 0) return fd;
+    }
+  }
+  return -1;
+}
+
+// `filename` with the symbolic links of its last component followed, also a dangling one (whose target is then
+// created, as the manual says: links are followed)
+inline std::string link_target(const std::string& filename)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path p(filename);
+  for(int i = 0; i < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++i) {   // 40: Linux's limit of links
+    const fs::path t = fs::read_symlink(p, ec);
+    if(ec) break;
+    p = t.is_absolute() ? t : p.parent_path() / t;
+  }
+  return p.string();
+}
+
+// write(os), then the stream flushed; false if any of it failed
 template <class Write>
-bool write_and_close(std::ofstream& os, const Write& write)
+bool write_and_flush(std::ostream& os, const Write& write)
 {
   bool ok = static_cast<bool>(os) && write(os);
   os.flush();
-  ok = ok && static_cast<bool>(os);
-  os.close();
-  return ok && !os.fail();
+  return ok && static_cast<bool>(os);
 }
 
-// write_atomically() to the regular file (or new file) `path`; `filename`: the name the caller gave, for messages
+// write_and_flush(), then the file closed
 template <class Write>
-Status write_regular_file_atomically(const std::string& path, const std::string& filename, const Write& write,
-                                     std::string& message)
+bool write_and_close(std::ofstream& os, const Write& write)
 {
-  const std::string tmp = temporary_name_next_to(path);
-  {
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    if(!os) {
-      message = "cannot write '" + filename + "': cannot create the temporary file '" + tmp + "' (" +
-                std::strerror(errno) + ")";
-      return INVALID_INPUT;
-    }
-    if(!write_and_close(os, write)) {
-      std::remove(tmp.c_str());
-      message = "cannot write '" + filename + "': writing the temporary file '" + tmp + "' failed (disk full?)";
-      return INVALID_INPUT;
-    }
-  }
-  if(std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    message = "cannot write '" + filename + "': renaming the temporary file failed (" + why + ")";
-    return INVALID_INPUT;
-  }
-  return SUCCESS;
+  const bool ok = write_and_flush(os, write);
+  os.close();
+  return ok && !os.fail();
 }
 
 // Whether write_atomically() can create `filename`: its directory exists and it is not a directory itself (a check
@@ -942,34 +959,95 @@ inline bool can_read_again(const std::string& filename, const std::string& why, 
   return false;
 }
 
+// A file written as write_atomically() writes it, in two steps, so that a program writing several files can replace
+// them together: prepare() writes the content into a temporary file next to the file, commit() renames it over the
+// file; a temporary file not committed is removed (destructor). A regular file keeps its permission bits, and a
+// symbolic link is followed (also a dangling one: its target is created). What is not a regular file (a device such
+// as /dev/null, a named pipe) would be replaced by a regular file by a rename (as root: /dev/null itself), so
+// prepare() writes it directly, not atomically, without truncating it; a name of an open descriptor (descriptor_named():
+// /dev/stdout, ...) too, through std::cout and std::cerr for 1 and 2. A directory is refused.
+class Atomic_file
+{
+public:
+  Atomic_file() = default;
+  Atomic_file(const Atomic_file&) = delete;
+  Atomic_file& operator=(const Atomic_file&) = delete;
+  ~Atomic_file() { if(!tmp_.empty()) std::remove(tmp_.c_str()); }
+
+  // `write(os)` writes the content to the stream and returns false if it could not; on failure nothing is left behind
+  template <class Write>
+  Status prepare(const std::string& filename, const Write& write, std::string& message)
+  {
+    namespace fs = std::filesystem;
+    filename_ = filename;
+    std::error_code ec;
+    const int fd = descriptor_named(filename);
+    if(fd == 1 || fd == 2) {
+      std::ostream& os = fd == 1 ? std::cout : std::cerr;
+      const std::streamsize precision = os.precision();
+      const std::ios::fmtflags flags = os.flags();
+      const bool ok = write_and_flush(os, write);
+      os.precision(precision);                  // the writers may set them (stream_precision())
+      os.flags(flags);
+      if(ok) return SUCCESS;
+      message = "cannot write '" + filename + "'";
+      return INVALID_INPUT;
+    }
+    const fs::file_status target = fs::status(filename, ec);     // follows symbolic links
+    if(!ec && fs::is_directory(target)) {
+      message = "cannot write '" + filename + "': it is a directory";
+      return INVALID_INPUT;
+    }
+    if(fd >= 0 || (!ec && fs::exists(target) && !fs::is_regular_file(target))) {
+      std::ofstream os(filename, std::ios::binary | std::ios::app);
+      if(write_and_close(os, write)) return SUCCESS;
+      message = "cannot write '" + filename + "' (" + std::strerror(errno) + ")";
+      return INVALID_INPUT;
+    }
+    path_ = link_target(filename);
+    const std::string tmp = temporary_name_next_to(path_);
+    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
+    if(!os) {
+      message = "cannot write '" + filename + "': cannot create the temporary file '" + tmp + "' (" +
+                std::strerror(errno) + ")";
+      return INVALID_INPUT;
+    }
+    tmp_ = tmp;
+    if(fs::is_regular_file(target)) {          // a 0600 file became 0644
+      fs::permissions(tmp_, target.permissions(), ec);
+    }
+    if(!write_and_close(os, write)) {
+      message = "cannot write '" + filename + "': writing the temporary file '" + tmp + "' failed (disk full?)";
+      return INVALID_INPUT;
+    }
+    return SUCCESS;
+  }
+
+  // the prepared file renamed over `filename` (nothing to do where it was written directly)
+  Status commit(std::string& message)
+  {
+    if(tmp_.empty()) return SUCCESS;
+    if(std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+      message = "cannot write '" + filename_ + "': renaming the temporary file failed (" + std::strerror(errno) + ")";
+      return INVALID_INPUT;
+    }
+    tmp_.clear();
+    return SUCCESS;
+  }
+
+private:
+  std::string filename_, path_, tmp_;   // the caller's name, the file renamed over, the temporary file (until renamed)
+};
+
 // Writes a file through a temporary file next to it and std::rename (atomic on POSIX): `write(os)`
 // writes the content to the stream and returns false if it could not; on failure nothing is left
-// behind and `filename` is untouched. A symbolic link is followed (the file it points to is replaced, not
-// the link). Where `filename` is something other than a regular file (a device such as /dev/null or
-// /dev/stdout, a named pipe), a rename would replace it by a regular file (as root: /dev/null itself), so the
-// content is written to it directly, not atomically; a directory is refused.
+// behind and `filename` is untouched. Atomic_file::prepare() says which files are written directly.
 template <class Write>
 Status write_atomically(const std::string& filename, const Write& write, std::string& message)
 {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status target = fs::status(filename, ec);     // follows symbolic links
-  if(!ec && fs::is_directory(target)) {
-    message = "cannot write '" + filename + "': it is a directory";
-    return INVALID_INPUT;
-  }
-  if(!ec && fs::exists(target) && !fs::is_regular_file(target)) {
-    std::ofstream os(filename, std::ios::binary);
-    if(write_and_close(os, write)) return SUCCESS;
-    message = "cannot write '" + filename + "' (" + std::strerror(errno) + ")";
-    return INVALID_INPUT;
-  }
-  std::string path = filename;
-  if(!ec && fs::is_symlink(fs::symlink_status(filename, ec)) && !ec) {
-    const fs::path resolved = fs::canonical(filename, ec);
-    if(!ec) path = resolved.string();
-  }
-  return write_regular_file_atomically(path, filename, write, message);
+  Atomic_file file;
+  if(file.prepare(filename, write, message) != SUCCESS) return INVALID_INPUT;
+  return file.commit(message);
 }
 
 // A path as the command-line programs compare files: made absolute, then as std::filesystem::weakly_canonical() gives
@@ -1000,13 +1078,19 @@ inline std::string same_output_file(const std::vector<std::pair<std::string, std
   return std::string();
 }
 
+// The `write` of write_atomically() and Atomic_file::prepare() that writes `text` (which must outlive it)
+inline auto text_writer(const std::string& text)
+{
+  return [&text](std::ostream& os) {
+    os.write(text.data(), static_cast<std::streamsize>(text.size()));
+    return static_cast<bool>(os);
+  };
+}
+
 // Writes `text` to `filename` atomically (write_atomically()).
 inline Status write_text_atomically(const std::string& filename, const std::string& text, std::string& message)
 {
-  return write_atomically(filename, [&](std::ostream& os) {
-    os.write(text.data(), static_cast<std::streamsize>(text.size()));
-    return static_cast<bool>(os);
-  }, message);
+  return write_atomically(filename, text_writer(text), message);
 }
 
 // the blocks of Obj_text::write() into a stream
