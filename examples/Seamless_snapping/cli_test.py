@@ -427,6 +427,17 @@ if hasattr(os, "mkfifo"):
         check(False, "a cut mesh from a FIFO: the program waited for a second writer")
     writer.join()
 
+# a VVAL file that cannot be written: OUT.obj was written (or replaced) first, exit 1
+if os.path.exists("/dev/full"):
+    vout = os.path.join(work, "vval_full.obj")
+    for existing in [False, True]:
+        if existing:
+            with open(vout, "w") as f:
+                f.write("old\n")
+        rc, text = run(parallelogram, vout, "--integer-grid", "--grid-scale", "4", "--vval", "/dev/full")
+        check(rc == 1 and (open(vout).read() == "old\n" if existing else not os.path.exists(vout)),
+              "--vval /dev/full: exit 1, OUT.obj %s: %d %s" % ("unchanged" if existing else "not created", rc, text))
+
 # --pin DIR and --features DIR read as empty lists (exit 0); now refused as the OBJ reader refuses a directory
 for opt in ["--pin", "--features"]:
     dout = os.path.join(work, "list_dir.obj")

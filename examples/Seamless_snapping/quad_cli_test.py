@@ -262,6 +262,15 @@ check(rc == 1 and not os.path.exists(os.path.join(work, "missing_out.obj")) and 
       rep.get("snap", {}).get("status") == "INVALID_INPUT" and "cannot read input" in rep.get("snap", {}).get("message", ""),
       "unreadable input: exit 1, the report written: %d %s %s" % (rc, text, rep))
 
+# a --layout file that cannot be written: OUT was written first, and the report said "output": null; now the layout
+# goes to its temporary file before OUT is written, so neither is, and the report's null is true
+lost_out, lost_report = os.path.join(work, "lost_layout.obj"), os.path.join(work, "lost_layout.json")
+rc, text = run(parallelogram, lost_out, "--grid-scale", "4", "--report", lost_report, "--layout",
+               os.path.join(work, "no_such_dir", "layout.ply"))
+rep = json.load(open(lost_report)) if os.path.exists(lost_report) else {}
+check(rc == 1 and not os.path.exists(lost_out) and rep.get("output", 0) is None and "error" in rep,
+      "--layout that cannot be written: exit 1, no OUT, the report's output null: %d %s %s" % (rc, text, rep.get("output", 0)))
+
 for f in failures:
     print("FAILED:", f)
 print("quad_cli_test: %d passed, %d failed" % (checks[0] - len(failures), len(failures)))

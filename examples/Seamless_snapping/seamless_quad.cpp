@@ -127,8 +127,8 @@ static const char* help_text =
   "Cells cut by a border that is not on an integer isoline are left out and counted (a line says so).\n"
   "\n"
   "Exit status: 0 when OUT (and the --layout file) was written; 1 when reading, snapping, extracting or\n"
-  "writing failed (one line on stderr says why; OUT is then not created or changed, unless writing the\n"
-  "layout file after it failed); 2 for a command-line error.\n";
+  "writing failed (one line on stderr says why; OUT and the layout file are then not created or changed:\n"
+  "the layout goes to its temporary file first, renamed only after OUT was); 2 for a command-line error.\n";
 
 static std::string one_line(std::string s)
 {
@@ -413,9 +413,15 @@ int main(int argc, char** argv)
     else written = CGAL::IO::write_OBJ(ls, layout, CGAL::parameters::stream_precision(17));
     if(!written) return fail("cannot format the quad layout as " + layout_format);
   }
+  // the layout to its temporary file first, renamed only after OUT was: a layout that cannot be written leaves no OUT
+  // behind (the report, which says "output": null then, was wrong)
+  const std::string layout_text = ls.str();
+  SS::IO::internal::Atomic_file layout_out;
+  if(!layout_file.empty() &&
+     layout_out.prepare(layout_file, SS::IO::internal::text_writer(layout_text), message) != SS::SUCCESS)
+    return fail(message + "; nothing was written");
   if(SS::IO::internal::write_text_atomically(out, os.str(), message) != SS::SUCCESS) return fail(message);
-  if(!layout_file.empty() && SS::IO::internal::write_text_atomically(layout_file, ls.str(), message) != SS::SUCCESS)
-    return fail(message);
+  if(layout_out.commit(message) != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << std::to_string(q.quads) << " quads written to " << out << "\n";
   if(!quiet && !layout_file.empty()) std::cout << lay.patches.patches.size() << " layout faces written to " << layout_file << "\n";
   return EXIT_SUCCESS;

@@ -123,8 +123,9 @@ static const char* help_text =
   "                       trusts the file, leaves holes there; run libQEx without a VVAL file, or\n"
   "                       make the map fold-free first. Refused too where a vertex has valence 1 (a\n"
   "                       cone of 90 degrees, or of 450 that the map winds back to 90, e.g. a cone\n"
-  "                       pair put onto one integer point: --merge-cone-pairs). Written only when\n"
-  "                       OUT.obj was written.\n"
+  "                       pair put onto one integer point: --merge-cone-pairs). Written to its\n"
+  "                       temporary file before OUT.obj and renamed after it: a VVAL file that cannot\n"
+  "                       be written leaves OUT.obj unwritten.\n"
   "  --untangle           make every UV triangle positively oriented (remove fold-overs) by moving the UVs\n"
   "                       near them inside the space of maps with the same constraints (seam rotations,\n"
   "                       with --integer-grid integer translations and cone positions), then snap exactly;\n"
@@ -487,20 +488,23 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                 std::to_string(report.degenerate_unrepaired) + " degenerate UV triangles introduced and not repaired; "
                 "nothing was written", SS::FOLD_OVERS);
 
-  // 3. verify independently, in rational arithmetic; 4. write atomically. The valences come first, so that a failure
-  //    leaves no OUT.obj behind. With two threads or more, the OBJ text is written to the temporary file while the map
+  // 3. verify independently, in rational arithmetic; 4. write atomically. The VVAL file is written first, to its
+  //    temporary file, and renamed only after OUT.obj was, so that a failure of either leaves no OUT.obj behind. With two threads or more, the OBJ text is written to the temporary file while the map
   //    is verified, and the file becomes OUT.obj only if it is (write_atomically(); the 302K-face bunny: verification
   //    28 ms, writing 80-90 ms)
   t = Clock::now();
   SS::Quad_valences valences;
+  SS::IO::internal::Atomic_file vval;        // its temporary file is removed unless committed
   if(!vval_file.empty()) {
     valences = SS::quad_valences(mesh, uv);
     if(valences.status != SS::SUCCESS)
       return fail("--vval: " + std::string(SS::status_name(valences.status)) + ": " + valences.message +
                   (valences.status == SS::FOLD_OVERS ? " (libQEx does better without a VVAL file here); nothing was written" : ""),
                   valences.status);
-    std::string why;                         // a VVAL file that cannot be written must not leave OUT.obj behind
-    if(!SS::IO::internal::can_create(vval_file, why)) return fail("--vval: " + why + "; nothing was written");
+    std::string text;
+    if(SS::IO::internal::vval_text(valences.valence, text, message) != SS::SUCCESS ||
+       vval.prepare(vval_file, SS::IO::internal::text_writer(text), message) != SS::SUCCESS)
+      return fail("--vval: " + message + "; nothing was written");
   }
   bool checked = false, exact = false, grid_exact = true;
   auto verify = [&] {
@@ -544,7 +548,8 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   if(written != SS::SUCCESS) return fail(message);
   if(!quiet) std::cout << message << "\n";
   if(!vval_file.empty()) {
-    if(SS::IO::write_VVAL(vval_file, valences.valence, message) != SS::SUCCESS) return fail(message);
+    if(vval.commit(message) != SS::SUCCESS) return fail(message);
+    message = SS::IO::internal::vval_written(valences.valence, vval_file);
     if(!quiet) {
       std::vector<char> on_border(valences.valence.size(), 0);
       for(std::size_t v : valences.border) on_border[v] = 1;

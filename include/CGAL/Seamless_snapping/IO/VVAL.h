@@ -21,6 +21,31 @@ namespace CGAL {
 namespace Seamless_snapping {
 namespace IO {
 
+namespace internal {
+
+// the text of write_VVAL(), or INVALID_INPUT with `message` for a negative valence
+inline Status vval_text(const std::vector<int>& valences, std::string& text, std::string& message)
+{
+  text = "{\"file_format\":\"VVAL\",\"version\":1}\n" + std::to_string(valences.size()) + "\n";
+  for(std::size_t v = 0; v < valences.size(); ++v) {
+    if(valences[v] < 0) {
+      message = "vertex " + std::to_string(v) + " has the valence " + std::to_string(valences[v]) +
+                " (its UV angle sum turns backwards): the VVAL format has no negative valences; nothing was written";
+      return INVALID_INPUT;
+    }
+    text += std::to_string(valences[v]) + "\n";
+  }
+  return SUCCESS;
+}
+
+// write_VVAL()'s message on success
+inline std::string vval_written(const std::vector<int>& valences, const std::string& filename)
+{
+  return std::to_string(valences.size()) + " vertex valences (VVAL) written to " + filename;
+}
+
+} // namespace internal
+
 /*!
  * \ingroup PkgSeamlessSnappingRef
  *
@@ -38,17 +63,10 @@ namespace IO {
  */
 inline Status write_VVAL(const std::string& filename, const std::vector<int>& valences, std::string& message)
 {
-  std::string text = "{\"file_format\":\"VVAL\",\"version\":1}\n" + std::to_string(valences.size()) + "\n";
-  for(std::size_t v = 0; v < valences.size(); ++v) {
-    if(valences[v] < 0) {
-      message = "vertex " + std::to_string(v) + " has the valence " + std::to_string(valences[v]) +
-                " (its UV angle sum turns backwards): the VVAL format has no negative valences; nothing was written";
-      return INVALID_INPUT;
-    }
-    text += std::to_string(valences[v]) + "\n";
-  }
+  std::string text;
+  if(internal::vval_text(valences, text, message) != SUCCESS) return INVALID_INPUT;
   if(internal::write_text_atomically(filename, text, message) != SUCCESS) return INVALID_INPUT;
-  message = std::to_string(valences.size()) + " vertex valences (VVAL) written to " + filename;
+  message = internal::vval_written(valences, filename);
   return SUCCESS;
 }
 
