@@ -1038,6 +1038,34 @@ def test_trace_isoline_at_a_cone_in_the_chart_of_the_face():
                     end, point = ray(a, ca, d)
                     assert end == "cone" and point is not None and \
                         np.count_nonzero(np.asarray(point) != V[v]) == 1, (side, v, d, end)   # along a cube edge
+    # the three sides at the corner (0, 0, 0) in one chart around its UV (0, 0) (bottom, front and left in the quadrants
+    # 1, 2, 3), cut between left and bottom: from each of their 6 triangles at the corner every direction is the
+    # chart's ray, along the cube edge the chart puts there (a ray on an edge between two triangles clockwise of the
+    # start was missed: +v from the left side traced the -u ray, -u from it and +v from the front were invalid_start)
+    def chart(side, p):
+        x, y, z = p
+        return {0: (y, x), 1: (-z, x), 2: (-z, -y), 3: (x + 5, y), 4: (z + 8, x), 5: (y + 11, z)}[side]
+    squares = [[(x, y, 0) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))], [(x, 0, z) for x, z in ((0, 0), (1, 0), (1, 1), (0, 1))],
+               [(0, y, z) for y, z in ((0, 0), (1, 0), (1, 1), (0, 1))], [(x, y, 1) for x, y in ((0, 0), (1, 0), (1, 1), (0, 1))],
+               [(x, 1, z) for x, z in ((0, 0), (1, 0), (1, 1), (0, 1))], [(1, y, z) for y, z in ((0, 0), (1, 0), (1, 1), (0, 1))]]
+    F, UV, FUV, side_of = [], [], [], []
+    for side, q in enumerate(squares):
+        for tri in ((0, 1, 2), (0, 2, 3)):
+            pts = [q[k] for k in tri]
+            uv = [chart(side, p) for p in pts]
+            if (uv[1][0] - uv[0][0]) * (uv[2][1] - uv[0][1]) < (uv[1][1] - uv[0][1]) * (uv[2][0] - uv[0][0]):
+                pts, uv = pts[::-1], uv[::-1]                 # counter-clockwise in UV
+            F.append([x + 2 * y + 4 * z for x, y, z in pts])
+            FUV.append([len(UV) + k for k in range(3)])
+            UV.extend(uv)
+            side_of.append(side)
+    F, UV, FUV = np.array(F), np.array(UV, dtype=float), np.array(FUV)
+    along = {"+u": (0, 1, 0), "+v": (1, 0, 0), "-u": (0, 0, 1), "-v": (0, 1, 0)}   # -v: the cut edge seen from the left
+    starts = [(f, list(F[f]).index(0)) for f in range(len(F)) if side_of[f] < 3 and 0 in F[f]]
+    assert len(starts) == 6
+    for f, c in starts:
+        for d, point in along.items():
+            assert ray(f, c, d) == ("cone", point), (side_of[f], f, d, ray(f, c, d))
 
 
 def quad_degrees(QF, n):

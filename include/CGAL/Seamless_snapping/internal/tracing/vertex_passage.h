@@ -31,6 +31,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/rotation_fit.h>
 #include <CGAL/Seamless_snapping/internal/tracing/chart_geometry.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -130,8 +131,9 @@ inline void wedges_containing(const Vertex_fan& fan, int T, std::vector<int>& ou
 
 // A wedge of the closed fan `fan` (its wedges listed from its start corner) whose closed angle holds the ray of direction
 // m0, the reference direction of the start corner, in the start corner's own chart: among the wedges that share that
-// chart (reached from the start corner without crossing a cut edge, `is_cut` per edge); -1 if none, or if the ray is
-// there twice (the chart overlaps itself around v: a cone of more than a full turn inside one chart). The ray found
+// chart (reached from the start corner without crossing a cut edge, `is_cut` per edge), the first turn of the chart each
+// way (lifted 8 counter-clockwise, 0 clockwise); on an edge between two of them, the one where it is e_b; -1 if none, or
+// if both ways find it (the chart overlaps itself around v: a cone of more than a full turn inside one chart). The ray found
 // counter-clockwise (lifted 8) from the start is this one where it lies counter-clockwise of the start in its chart; at a
 // cone it may lie clockwise of the start instead, and the way around counter-clockwise then reaches another ray or none.
 inline int chart_wedge_of_start_ray(const Vertex_fan& fan, const Corner_mesh& cm, const std::vector<char>& is_cut)
@@ -147,6 +149,7 @@ inline int chart_wedge_of_start_ray(const Vertex_fan& fan, const Corner_mesh& cm
   for(int i = 0; i < ccw; ++i) if(holds(i, 8)) found.push_back(i);           // lifted 8 counter-clockwise
   for(int j = n - 1; j >= ccw && !crosses_cut(j); --j)                       // lifted 0 clockwise: total counter-clockwise
     if(holds(j, total)) found.push_back(j);
+  std::sort(found.begin(), found.end());                                      // (the clockwise ones were descending)
   const bool one_ray = found.size() == 1 ||
                        (found.size() == 2 && (found[1] == found[0] + 1 || (found[0] == 0 && found[1] == n - 1)));
   return !found.empty() && one_ray ? found[0] : -1;
