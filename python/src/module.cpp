@@ -30,6 +30,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -392,12 +393,27 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
 }
 
 // The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
+// A message of quad_mesh_patches() / quad_layout() on the mesh that quad_mesh_from_rows() built, with the vertex it names
+// ("vertex N is not manifold ...") in QF's numbering (`row_of`: per mesh vertex its index in QF; the faces are QF's rows)
+std::string in_qf_numbering(const std::string& message, const std::vector<long long>* row_of)
+{
+  const std::string key = "vertex ";
+  const std::size_t at = message.find(key), begin = at + key.size();
+  if(row_of == nullptr || at == std::string::npos) return message;
+  std::size_t end = begin;
+  while(end < message.size() && std::isdigit(static_cast<unsigned char>(message[end]))) ++end;
+  if(end == begin || end - begin > 9) return message;
+  const std::size_t v = std::size_t(std::stoul(message.substr(begin, end - begin)));
+  return v < row_of->size() ? message.substr(0, begin) + std::to_string((*row_of)[v]) + message.substr(end) : message;
+}
+
 // the patches of the quad mesh q (quad_mesh_patches()) into `out`: per quad its patch, its cell (i, j) and the rank in its
 // row of QF of the vertex at the cell's corner (i, j) (QF lists the targets of halfedge(f), next(), ...), and the report
-void add_patches(Mesh& q, py::dict& out)
+void add_patches(Mesh& q, py::dict& out, const std::vector<long long>* row_of = nullptr)
 {
   auto patch = q.add_property_map<Mesh::Face_index, SS::Quad_patch_location<Mesh> >("f:patch").first;
-  const SS::Quad_patches patches = SS::quad_mesh_patches(q, patch);
+  SS::Quad_patches patches = SS::quad_mesh_patches(q, patch);
+  patches.message = in_qf_numbering(patches.message, row_of);
   const py::ssize_t nf = py::ssize_t(q.number_of_faces());
   py::array_t<long long> patch_id(nf), cell({nf, py::ssize_t(2)}), corner(nf);
   auto pa = patch_id.mutable_unchecked<1>();
@@ -612,9 +628,9 @@ std::vector<long long> quad_mesh_from_rows(const MatrixXlR& QF, Mesh& q)
 py::dict quad_mesh_patches(const MatrixXlR& QF)
 {
   Mesh q;
-  quad_mesh_from_rows(QF, q);
+  const std::vector<long long> row_of = quad_mesh_from_rows(QF, q);
   py::dict out;
-  add_patches(q, out);
+  add_patches(q, out, &row_of);
   return out;
 }
 
@@ -626,7 +642,9 @@ py::dict quad_layout(const MatrixXlR& QF)
   Mesh q, L;
   const std::vector<long long> row_of = quad_mesh_from_rows(QF, q);
   auto arcs = L.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
-  const SS::Quad_layout r = SS::quad_layout(q, L, arcs);
+  SS::Quad_layout r = SS::quad_layout(q, L, arcs);
+  r.message = in_qf_numbering(r.message, &row_of);
+  r.patches.message = in_qf_numbering(r.patches.message, &row_of);
   py::dict out;
   out["layout"] = r.to_json();
   out["patches"] = r.patches.to_json();

@@ -940,6 +940,13 @@ def test_quad_mesh_patches_standalone():
     assert err.value.report["status"] == "INVALID_INPUT" and "vertex 0 is not manifold" in err.value.report["message"]
     r = ss.quad_mesh_patches(pinched, raise_on_failure=False)
     assert r["status"] == "INVALID_INPUT" and list(r["QF_patch"]) == [-1, -1]
+    # with sparse indices the message names the vertex by its index in QF (it named the mesh's own number, 0)
+    for call in (ss.quad_mesh_patches, ss.quad_layout):
+        r = call(pinched + 100, raise_on_failure=False)
+        message = r["message"] if call is ss.quad_mesh_patches else r["patches"]["message"]
+        assert "vertex 100 is not manifold" in message, message
+        if call is ss.quad_layout:
+            assert "vertex 100 is not manifold" in r["message"], r["message"]
 
 
 def check_quad_layout(QF, r):
