@@ -391,14 +391,19 @@ small = cube   # the cube of 1.3, snapped in well under a second
 
 # /dev/stdout (also --report) is written where the shell's `>> log` stands: write_atomically() followed it to the
 # regular file log and renamed a temporary file over it (log lost its earlier lines)
-for args in [["/dev/stdout", "--quiet"], [os.path.join(work, "to_log.obj"), "--quiet", "--report", "/dev/stdout"]]:
+# (also under other names: //dev/stdout, a symbolic link to it, which went the regular-file way)
+stdout_link = os.path.join(work, "stdout_link.obj")
+if os.name == "posix" and not os.path.lexists(stdout_link):
+    os.symlink("/dev/stdout", stdout_link)
+for args in [["/dev/stdout", "--quiet"], [os.path.join(work, "to_log.obj"), "--quiet", "--report", "/dev/stdout"],
+             ["//dev/stdout", "--quiet"], [stdout_link, "--quiet"]]:
     log = os.path.join(work, "log.txt")
     with open(log, "w") as f:
         f.write("an earlier line\n")
     with open(log, "a") as f:
         rc = subprocess.run([exe, small, *args], stdout=f, stderr=subprocess.PIPE).returncode
     text = open(log).read()
-    check(rc == 0 and text.startswith("an earlier line\n") and ("\nv " in text if args[0] == "/dev/stdout" else '"output"' in text),
+    check(rc == 0 and text.startswith("an earlier line\n") and ("\nv " in text if "--report" not in args else '"output"' in text),
           "%s >> log: log keeps its lines and gets the output: %d %r" % (" ".join(args), rc, text[:80]))
 
 # a pipe as input: with 2 threads the reader seeked on it and read it as empty ("empty mesh: no face in 0 lines")
@@ -456,6 +461,12 @@ if os.name == "posix":
     os.symlink("dangling_target.obj", link)
     rc, text = run(small, link, "--quiet")
     check(rc == 0 and os.path.islink(link) and os.path.isfile(target), "a dangling link: its target created: %d %s" % (rc, text))
+    # a loop of links: refused (a link of the loop that was not named was replaced by the OBJ, exit 0)
+    loop = [os.path.join(work, "loop_%s.obj" % c) for c in "abc"]
+    for a, b in zip(loop, loop[1:] + loop[:1]):
+        os.symlink(os.path.basename(b), a)
+    rc, text = run(small, loop[0], "--quiet")
+    check(rc == 1 and "cannot write" in text and all(os.path.islink(l) for l in loop), "a loop of links: refused: %d %s" % (rc, text))
 # a name of 238 to 255 bytes: the temporary name (NAME.tmp-XXXXXXXXXXXX) was too long
 long_name = os.path.join(work, "n" * 251 + ".obj")
 rc, text = run(small, long_name, "--quiet")

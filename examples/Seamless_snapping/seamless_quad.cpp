@@ -414,7 +414,7 @@ int main(int argc, char** argv)
     if(!written) return fail("cannot format the quad layout as " + layout_format);
   }
   // the layout to its temporary file first, renamed only after OUT was: a layout that cannot be written leaves no OUT
-  // behind (the report, which says "output": null then, was wrong)
+  // behind (the report, which says "output": null then, was wrong; a device or pipe named by --layout is written at once)
   const std::string layout_text = ls.str();
   SS::IO::internal::Atomic_file layout_out;
   if(!layout_file.empty() &&

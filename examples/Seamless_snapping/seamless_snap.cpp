@@ -489,9 +489,11 @@ static int snap_file(const Options& options, const std::string& in, const std::s
                 "nothing was written", SS::FOLD_OVERS);
 
   // 3. verify independently, in rational arithmetic; 4. write atomically. The VVAL file is written first, to its
-  //    temporary file, and renamed only after OUT.obj was, so that a failure of either leaves no OUT.obj behind. With two threads or more, the OBJ text is written to the temporary file while the map
-  //    is verified, and the file becomes OUT.obj only if it is (write_atomically(); the 302K-face bunny: verification
-  //    28 ms, writing 80-90 ms)
+  //    temporary file, and renamed only after OUT.obj was: a VVAL file that cannot be written leaves no OUT.obj behind
+  //    (a device or pipe such as /dev/stdout, which cannot be replaced, is written at once; a rename of the VVAL file
+  //    failing after OUT.obj's, in the same directory, would leave OUT.obj). With two threads or more, the OBJ text is
+  //    written to the temporary file while the map is verified, and the file becomes OUT.obj only if it is
+  //    (write_atomically(); the 302K-face bunny: verification 28 ms, writing 80-90 ms)
   t = Clock::now();
   SS::Quad_valences valences;
   SS::IO::internal::Atomic_file vval;        // its temporary file is removed unless committed

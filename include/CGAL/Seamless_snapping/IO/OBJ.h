@@ -883,7 +883,9 @@ inline std::string temporary_name_next_to(const std::string& filename)
 
 // The descriptor that `filename` names (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), else -1: a file the
 // caller opened (the shell's `> log` or `>> log`), which is written where it stands, never truncated or replaced (the
-// name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines)
+// name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines). Other names of the
+// standard output or error (//dev/stdout, a symbolic link to /dev/stdout, /proc/<pid>/fd/1: a name under /dev or /proc,
+// or a link, that leads to the file of descriptor 1 or 2) give 1 or 2 too.
 inline int descriptor_named(const std::string& filename)
 {
   if(filename == "/dev/stdout") return 1;
@@ -896,6 +898,12 @@ inline int descriptor_named(const std::string& filename)
       if(r.ec == std::errc() && r.ptr == end && fd >= 0) return fd;
     }
   }
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const bool indirect = fs::is_symlink(fs::symlink_status(filename, ec)) || filename.rfind("/dev/", 0) == 0 ||
+                        filename.rfind("/proc/", 0) == 0 || filename.rfind("//", 0) == 0;
+  for(int fd : {1, 2})                           // the same file as the descriptor's (device and inode)
+    if(indirect && fs::equivalent(filename, fd == 1 ? "/dev/stdout" : "/dev/stderr", ec) && !ec) return fd;
   return -1;
 }
 
@@ -996,6 +1004,10 @@ public:
     const fs::file_status target = fs::status(filename, ec);     // follows symbolic links
     if(!ec && fs::is_directory(target)) {
       message = "cannot write '" + filename + "': it is a directory";
+      return INVALID_INPUT;
+    }
+    if(ec && ec != std::errc::no_such_file_or_directory) {        // a loop of links (another link of it was replaced)
+      message = "cannot write '" + filename + "': " + ec.message();
       return INVALID_INPUT;
     }
     if(fd >= 0 || (!ec && fs::exists(target) && !fs::is_regular_file(target))) {
