@@ -30,6 +30,7 @@ whose message names what was wrong and the valid values.
 """
 import json
 import math
+import numbers
 import operator
 import os
 from fractions import Fraction
@@ -204,7 +205,7 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
     uv, fuv, text = _core.snap(*arrays, bool(weld) or welded_automatically,
                                repair_flips, align_boundary,
                                use_reduced_system, float(rotation_tolerance), float(alignment_tolerance),
-                               bool(minimal_change), bool(integer_grid_map), float(grid_scale), bool(untangle),
+                               bool(minimal_change), bool(integer_grid_map), _grid_scale(grid_scale), bool(untangle),
                                float(max_untangle_change), bool(merge_cone_pairs), bool(separate_cone_pairs),
                                bool(quantize), _thread_count(threads))
     report = json.loads(text)
@@ -226,7 +227,7 @@ def is_exact_integer_grid_map(V, F, UV, FUV, *, weld=None, grid_scale=1.0):
     sits on an integer point, all exactly (rational arithmetic), after multiplying the UVs by `grid_scale` (a power
     of 2). Border edges are not checked (diagnose_seamlessness(..., integer_grid_map=True) checks the aligned border
     on integer isolines; the C++ function takes the edges to check)."""
-    return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), float(grid_scale)))
+    return bool(_core.is_exact_integer_grid_map(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale)))
 
 
 def diagnose_seamlessness(V, F, UV, FUV, *, weld=None, align_boundary=True, rotation_tolerance=1.0,
@@ -245,7 +246,7 @@ def diagnose_seamlessness(V, F, UV, FUV, *, weld=None, align_boundary=True, rota
     "residual_double". With weld=True the rows of V at one position are one vertex (cut meshes)."""
     d = _core.diagnose_seamlessness(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), bool(align_boundary),
                                     float(rotation_tolerance), float(alignment_tolerance), bool(integer_grid_map),
-                                    float(grid_scale))
+                                    _grid_scale(grid_scale))
     if "residual" in d:
         d["residual"] = Fraction(d["residual"])
         d["corners"] = [tuple(c) for c in d["corners"]]
@@ -332,6 +333,20 @@ def _tolerance(x, what):
     return t
 
 
+def _grid_scale(x):
+    """x as a float that is a power of 2, or InputError (the grid of an integer-grid map is at multiples of 1/x, applied
+    exactly; is_exact_integer_grid_map() answered False for 3, 0 or NaN, and a string such as '2' was read as a number)"""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+        raise InputError("grid_scale must be a number (a power of 2), not %r" % (x,))
+    try:
+        s = float(x)
+    except OverflowError:                                      # an int or Fraction beyond the doubles
+        s = math.inf
+    if not (math.isfinite(s) and s > 0 and math.frexp(s)[0] == 0.5 and s == x):
+        raise InputError("grid_scale must be a power of 2 (UV units are multiplied by it exactly), got %r" % (x,))
+    return s
+
+
 def _thread_count(threads):
     """`threads` as a count in [0, 1024], or InputError."""
     n = _index(threads, "threads")
@@ -396,7 +411,9 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
 
     Returns a dict: "status" and "message" (of reading the map), and on SUCCESS the trace:
       "end": how it ended (a C++ Trace_end name), "failure": True for an inconsistency of the map, "message";
-      "start": the row of V it started from, "start_face": the row of F of its first chart (-1 if none);
+      "start": the row of V it started from (welded, a vertex has a row per copy: the one F has at the trace's first
+      corner, in "start_face", which may be another face of the vertex than `face`), "start_face": the row of F of its
+      first chart (-1 if none);
       "faces_crossed", "length" (UV length, rounded), "inexact_transfers", "hit_trace";
       the polyline, one straight segment per face crossed (consecutive segments meet in one surface point):
       "faces": row of F of each segment, "directions": 0..3 (+u, +v, -u, -v in that face's chart),
@@ -447,11 +464,16 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
     if not 0 <= n < 2**64:
         raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
-    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), float(grid_scale), n)
+    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale), n)
     report = json.loads(text)
     report.update(origins)
     if "patches" in report:
         report["patches"] = json.loads(report["patches"])
+    if report["status"] == "INVALID_INPUT" and weld is not None and not weld and is_cut_mesh(V, F):
+        # its seams are borders: the torus of ../shared cut open had cells forming several fans at them, and the
+        # message's "use a larger grid_scale" did not help at any scale
+        report["message"] += ("; (V, F) is a cut mesh (is_cut_mesh()) and weld=False leaves its seams as borders, "
+                              "which may be the cause: weld=True (or the default weld=None) joins them")
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return QV, QF, report
@@ -553,7 +575,12 @@ def patch_vertex_grids(QF, report):
     whose entry [j, i] is the vertex (row of QV) at the patch's grid point (i, j), e.g. the control points of a spline
     patch fitted to it; None for a patch that is not a rectangle. Where a patch meets itself across a trail (a band
     cut open once), the vertices of those two sides appear on both sides of its grid."""
-    patches = report["patches"] if "patches" in report and isinstance(report["patches"], dict) else report
+    patches = report.get("patches") if isinstance(report, dict) else None
+    patches = patches if isinstance(patches, dict) else report
+    if not isinstance(report, dict) or "status" not in patches or "QF_patch" not in report:
+        raise InputError("report must be the dict of quad_mesh_patches(QF) or extract_quad_mesh() (with its per-row "
+                         "\"QF_patch\" arrays), not %s" % (type(report).__name__ if not isinstance(report, dict)
+                                                          else "a dict without them"))
     if patches["status"] != "SUCCESS":
         raise SnapError(patches)
     QF = _integer_array(QF, "QF", "rows of QV", 2)
@@ -565,5 +592,9 @@ def patch_vertex_grids(QF, report):
     for q, (p, (i, j), k) in enumerate(zip(report["QF_patch"], report["QF_patch_cell"], report["QF_patch_corner"])):
         if grids[p] is not None:
             for t, (di, dj) in enumerate(offsets):
-                grids[p][j + dj, i + di] = QF[q][(k + t) % 4]
+                v, old = QF[q][(k + t) % 4], grids[p][j + dj, i + di]
+                if old >= 0 and old != v:                      # one grid point, two vertices: QF's rows were reordered
+                    raise InputError("QF row %d puts vertex %d at the grid point (%d, %d) of patch %d, where another row "
+                                     "put vertex %d: the report is of another quad mesh" % (q, v, i + di, j + dj, p, old))
+                grids[p][j + dj, i + di] = v
     return grids

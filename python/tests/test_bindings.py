@@ -922,6 +922,12 @@ def test_quad_mesh_patches_standalone():
     assert any(np.array_equal(np.rot90(g[0], t), np.arange((n + 1) ** 2).reshape(n + 1, n + 1)) for t in range(4))
     with pytest.raises(ss.InputError, match="the report is of another quad mesh"):   # was a raw IndexError
         ss.patch_vertex_grids(grid[:5], r)
+    # the same number of rows, another mesh (the rows reversed): a grid point got two vertices, silently overwritten
+    with pytest.raises(ss.InputError, match="puts vertex .* where another row put vertex .* another quad mesh"):
+        ss.patch_vertex_grids(grid[::-1], r)
+    for not_a_report in [None, {}, ss.quad_layout(grid)]:    # TypeError, KeyError 'status', KeyError 'QF_patch'
+        with pytest.raises(ss.InputError, match="report must be the dict of quad_mesh_patches"):
+            ss.patch_vertex_grids(grid, not_a_report)
     # the quad mesh of an extracted map: rectangles covering it, as in extract_quad_mesh()'s report
     V, F, UV, FUV = flat_torus(n=4)
     QV, QF, e = ss.extract_quad_mesh(V, F, UV, FUV)
@@ -1275,6 +1281,23 @@ def test_integer_grid_map_within_one_cell():
             assert out[2]["cut_edges"] == 3 and out[2]["integer_translations_after"] == 3
 
 
+def test_grid_scale_must_be_a_power_of_two():
+    # is_exact_integer_grid_map() answered False for 3, 0, -1, NaN or inf (snap() and the others reported "not a power
+    # of two"), and '2' was read as 2: every function taking grid_scale refuses them alike
+    V, F, UV, FUV = flat_torus(n=4)
+    calls = [lambda s: ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=s),
+             lambda s: ss.snap(V, F, UV, FUV, integer_grid_map=True, grid_scale=s),
+             lambda s: ss.diagnose_seamlessness(V, F, UV, FUV, integer_grid_map=True, grid_scale=s),
+             lambda s: ss.extract_quad_mesh(V, F, UV, FUV, grid_scale=s)]
+    for call in calls:
+        for bad in [3, 0, -1, -2.0, float("nan"), float("inf"), "2", None, True, 1j, 2 ** 1100, Fraction(1, 3)]:
+            with pytest.raises(ss.InputError, match="grid_scale must be"):
+                call(bad)
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=np.float32(0.5))
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=Fraction(1, 2))   # as the package's exact outputs
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=2) and ss.is_exact_integer_grid_map(V, F, UV, FUV)
+
+
 def test_integer_grid_align_edges_beyond_2_52():
     # a 2 x 2 grid of squares at UV (2^52, 2^52) + [0, 2]^2: its border edges are align edges on isolines of 2^52 grid
     # units or more, beyond the integers an integer-grid map holds exactly: RANGE_EXCEEDED, naming an align edge and the
@@ -1314,6 +1337,21 @@ def test_extract_quad_mesh_shared_data(name, weld):
     traced = ss.motorcycle_graph(V, F, UV2, FUV2, weld=weld)["layout"]
     assert traced["valid"] and traced["patches"] == len(lay["LF"])
     assert (traced["nodes"], traced["arcs"]) == (lay["vertices"] - lay["loop_splits"], lay["arcs"] - lay["loop_splits"])
+
+
+def test_extract_quad_mesh_of_a_cut_mesh_not_welded():
+    # Directional's torus map is a cut mesh: with weld=False its seams are borders and the extraction is refused
+    # ("cells that form several fans ... use a larger grid_scale", which helped at no scale); the message now names the
+    # weld, which extracts it
+    path = os.path.join(SHARED, "directional/torus-hex-param.obj")
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    V, F, UV, FUV = ss.read_obj(path)
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV, integer_grid_map=True)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=False, raise_on_failure=False)
+    assert QV is None and r["status"] == "INVALID_INPUT" and "is a cut mesh (is_cut_mesh())" in r["message"]
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2)
+    assert r["status"] == "SUCCESS" and r["euler_characteristic"] == 0
 
 
 def test_separate_cone_pairs():
