@@ -15,6 +15,14 @@ import seamless_snapping as ss
 SHARED = os.environ.get("SS_SHARED_DATA_DIR", "")
 
 
+def shared_map(name):
+    """ss.read_obj() of the file `name` of ../shared/data (SS_SHARED_DATA_DIR), or the test skipped where it is absent"""
+    path = os.path.join(SHARED, name)
+    if not SHARED or not os.path.exists(path):
+        pytest.skip("shared data not present: " + path)
+    return ss.read_obj(path)
+
+
 def parse_obj(path):
     """V, F, UV, FUV of an OBJ with per-corner vt (triangles; 'f v/vt', 'f v/vt/vn', negative indices), parsed here
     in Python (float() is correctly rounded): the reference for ss.read_obj."""
@@ -379,10 +387,7 @@ SHARED_FILES = [("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", False),
 
 @pytest.mark.parametrize("name,weld", SHARED_FILES)
 def test_snap_shared_data(name, weld):
-    path = os.path.join(SHARED, name)
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map(name)
     UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld)
     assert report["status"] == "SUCCESS", report["message"]
     bad, cut = seam_violations(V, F, UV2, FUV2, weld=weld)
@@ -615,10 +620,7 @@ def quarter_turns_at_interior_vertices(F, UV, FUV):
 @pytest.mark.parametrize("name,weld", [("cgal-orbifold-generated/bear_orbifold_square_mvc.obj", False),
                                        ("directional/torus-hex-param.obj", True)])
 def test_motorcycle_graph_shared_data(name, weld):
-    path = os.path.join(SHARED, name)
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map(name)
     g0 = ss.motorcycle_graph(V, F, UV, FUV, weld=weld)
     assert g0["status"] == "SUCCESS"
     assert g0["counts"]["inexact_transfers"] > 0           # the solver's error at the cuts, seen by the tracer
@@ -1320,10 +1322,7 @@ def test_integer_grid_align_edges_beyond_2_52():
 @pytest.mark.parametrize("name,weld", [("directional/horsers-param-full-seamless.obj", True),
                                        ("directional/spherer-param.obj", True)])
 def test_extract_quad_mesh_shared_data(name, weld):
-    path = os.path.join(SHARED, name)
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map(name)
     UV2, FUV2, report = ss.snap(V, F, UV, FUV, weld=weld, integer_grid_map=True)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=weld)
     # welded: the rows of V with one position are one vertex; compare positions, not rows
@@ -1343,10 +1342,7 @@ def test_extract_quad_mesh_of_a_cut_mesh_not_welded():
     # Directional's torus map is a cut mesh: with weld=False its seams are borders and the extraction is refused
     # ("cells that form several fans ... use a larger grid_scale", which helped at no scale); the message now names the
     # weld, which extracts it
-    path = os.path.join(SHARED, "directional/torus-hex-param.obj")
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map("directional/torus-hex-param.obj")
     UV2, FUV2, _ = ss.snap(V, F, UV, FUV, integer_grid_map=True)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2, weld=False, raise_on_failure=False)
     assert QV is None and r["status"] == "INVALID_INPUT" and "is a cut mesh (is_cut_mesh())" in r["message"]
@@ -1357,10 +1353,7 @@ def test_extract_quad_mesh_of_a_cut_mesh_not_welded():
 def test_separate_cone_pairs():
     # libQEx's duck_qc_8 map: two cone pairs that its rounded translations put onto one integer point are joined by a
     # cut near that point; separate_cone_pairs=True moves them apart (the field kept) and no negative triangle is left
-    path = os.path.join(SHARED, "libqex/duck_qc_8_param.obj")
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map("libqex/duck_qc_8_param.obj")
     UV2, FUV2, r = ss.snap(V, F, UV, FUV, integer_grid_map=True, separate_cone_pairs=True)
     assert len(r["separated_cone_pairs"]) > 0 and r["separated_cut_edges"] >= len(r["separated_cone_pairs"])
     assert r["flips_after_repair"] == 0 and r["merged_cone_pairs"] == []
@@ -1371,10 +1364,7 @@ def test_separate_cone_pairs():
 def test_extract_quad_mesh_merged_cone_pairs():
     # libQEx's fandisk map puts a 90 and a -90 degree cone onto one integer point: without merging, its untangled
     # IGM winds wrongly there and is refused; merge_cone_pairs=True makes the pair regular and the quads follow
-    path = os.path.join(SHARED, "libqex/fandisk_param.obj")
-    if not SHARED or not os.path.exists(path):
-        pytest.skip("shared data not present: " + path)
-    V, F, UV, FUV = ss.read_obj(path)
+    V, F, UV, FUV = shared_map("libqex/fandisk_param.obj")
     UV1, FUV1, kept = ss.snap(V, F, UV, FUV, integer_grid_map=True)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV1, FUV1, raise_on_failure=False)
     assert QV is None and r["status"] == "INVALID_INPUT" and "onto one integer point" in r["message"]
