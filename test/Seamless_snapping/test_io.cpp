@@ -364,6 +364,7 @@ static void test_malformed()
   }
   expect_invalid("garbage number", "v 0 0 1x\n", "cannot parse coordinate '1x'");
   expect_invalid("two signs", "v 0 0 +-1\n", "cannot parse coordinate '+-1'");      // it was read as -1
+  expect_invalid("control characters", std::string("v 0 0 1\0\x1b\n", 10), "cannot parse coordinate '1\\x00\\x1B'");   // were raw
   expect_invalid("two signs in an index", tri + "f 1/1 2/2 +-1/3\n", "+-1");
   expect_invalid("missing coordinate", "v 0 0\n", "needs 3 coordinates");
   expect_invalid("vertex index out of range", tri + "f 1/1 2/2 9/3\n", "vertex index 9 out of range");
@@ -934,6 +935,9 @@ static void test_write_failures(const fs::path& tmp)
   // the missing-file reader error
   Mesh r; UV_map ruv = r.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   CHECK(SS::IO::read_OBJ_with_corner_uvs((dir / "nope.obj").string(), r, ruv, msg) == SS::INVALID_INPUT && msg.find("cannot open") != std::string::npos, "missing file: " << msg);
+  // a directory opens as a stream on Linux and read as "read error after line 0"
+  CHECK(SS::IO::read_OBJ_with_corner_uvs(dir.string(), r, ruv, msg) == SS::INVALID_INPUT &&
+        msg == "cannot read '" + dir.string() + "': it is a directory" && r.is_empty(), "a directory: " << msg);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -156,14 +156,23 @@ inline std::string cr_line_ends_hint()
 }
 
 // A token of the file for a message, quoted: at most 60 characters of it, then "..." and its
-// length, so that a huge unparsable token does not end up whole in the message.
+// length, so that a huge unparsable token does not end up whole in the message; control characters as \xNN (a NUL
+// byte went raw to the terminal)
 inline std::string quote_token(const char* begin, const char* end)
 {
   const std::size_t n = std::size_t(end - begin);
   std::size_t shown = 60;
-  if(n <= shown) return "'" + std::string(begin, end) + "'";
-  while(shown > 56 && (static_cast<unsigned char>(begin[shown]) & 0xC0) == 0x80) --shown;   // not inside a UTF-8 character
-  return "'" + std::string(begin, begin + shown) + "...' (" + std::to_string(n) + " characters)";
+  if(n > shown)
+    while(shown > 56 && (static_cast<unsigned char>(begin[shown]) & 0xC0) == 0x80) --shown;   // not inside a UTF-8 character
+  std::string q = "'";
+  for(const char* c = begin; c != begin + (std::min)(n, shown); ++c) {
+    const unsigned char b = static_cast<unsigned char>(*c);
+    if(b >= 0x20 && b != 0x7F) { q += *c; continue; }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02X", unsigned(b));
+    q += hex;
+  }
+  return n <= shown ? q + "'" : q + "...' (" + std::to_string(n) + " characters)";
 }
 
 // 0-based element index of the OBJ index `i` (1-based, or negative = relative to the `count`
@@ -440,13 +449,17 @@ inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::s
                              std::size_t min_split = std::size_t(1) << 22, bool* in_halves = nullptr)
 {
   if(in_halves != nullptr) *in_halves = false;
+  std::error_code ec;
+  if(std::filesystem::is_directory(std::filesystem::status(filename, ec))) {   // opens, then reads as "read error"
+    message = "cannot read '" + filename + "': it is a directory";
+    return INVALID_INPUT;
+  }
   std::ifstream is(filename, std::ios::binary);
   if(!is) {
     message = "cannot open '" + filename + "' for reading";
     return INVALID_INPUT;
   }
   // a pipe or a FIFO (/dev/stdin) cannot seek: read on one thread (the failed seekg() left it failed, read as empty)
-  std::error_code ec;
   if(threads >= 2 && std::filesystem::is_regular_file(std::filesystem::status(filename, ec))) {
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
