@@ -241,14 +241,8 @@ int main(int argc, char** argv)
     svg << "<text x=\"" << margin << "\" y=\"" << top + H + 22 + 17 * l << "\">" << lines[l] << "</text>\n";
   svg << "</svg>\n";
 
-  const std::string tmp = out + ".tmp";
-  {
-    std::ofstream os(tmp, std::ios::binary | std::ios::trunc);
-    os << svg.str();
-    os.flush();
-    if(!os) { std::remove(tmp.c_str()); return fail("cannot write '" + out + "'"); }
-  }
-  if(std::rename(tmp.c_str(), out.c_str()) != 0) { std::remove(tmp.c_str()); return fail("cannot write '" + out + "'"); }
+  // through a temporary file next to it, as the package's writers do (it had its own copy of that)
+  if(SS::IO::internal::write_text_atomically(out, svg.str(), msg) != SS::SUCCESS) return fail(msg);
 
   std::printf("%zu cut edges; the worst transition violation is %.3g (relative to the UV diagonal), k = %d, "
               "edge length %.3g; after snapping it is exactly 0\n", fit.cut_halfedges.size(), gap / fit.uv_diagonal, k,
