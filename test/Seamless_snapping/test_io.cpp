@@ -364,6 +364,9 @@ static void test_malformed()
   }
   expect_invalid("garbage number", "v 0 0 1x\n", "cannot parse coordinate '1x'");
   expect_invalid("two signs", "v 0 0 +-1\n", "cannot parse coordinate '+-1'");      // it was read as -1
+  expect_invalid("UTF-16", std::string("v\0 0 0 0\nvt\0 0 0\nf\0 1/1 1/1 1/1\n", 32), "hold NUL bytes: UTF-16");   // there was no hint
+  expect_invalid("a second byte-order mark", "\xEF\xBB\xBF\xEF\xBB\xBFv 0 0 0\n" + tri + "f 1/1 2/2 3/3\n",
+                 "stream:1: a UTF-8 byte-order mark (EF BB BF) inside the file, before 'v'");   // the v was skipped unseen
   expect_invalid("control characters", std::string("v 0 0 1\0\x1b\n", 10), "cannot parse coordinate '1\\x00\\x1B'");   // were raw
   expect_invalid("two signs in an index", tri + "f 1/1 2/2 +-1/3\n", "+-1");
   expect_invalid("missing coordinate", "v 0 0\n", "needs 3 coordinates");

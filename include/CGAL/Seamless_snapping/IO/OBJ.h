@@ -209,6 +209,7 @@ struct Obj_parse_state
 {
   std::size_t lines = 0;
   bool first_line_has_cr = false;   // a carriage return inside the first line (line ends of a carriage return alone)
+  bool nul_in_skipped = false;      // a skipped record's type holds a NUL byte (UTF-16: "v\0 \0...", read as no record)
   long long max_v = 0, max_vt = 0;
   std::size_t max_v_line = 0, max_vt_line = 0;
 };
@@ -367,8 +368,14 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
       soup.uvs.push_back(x);
       return true;
     }
+    // a byte-order mark that is not the file's first bytes (files joined, or a mark written twice): the record after it
+    // was skipped unseen, and what refers to it failed elsewhere ("vertex index out of range")
+    if(tag_len >= 3 && std::memcmp(tag_begin, "\xEF\xBB\xBF", 3) == 0)
+      return fail(lineno, "a UTF-8 byte-order mark (EF BB BF) inside the file, before " + quote_token(tag_begin + 3, p) +
+                          ": remove it (files joined, or a mark written twice?)");
     // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
     ++soup.skipped_records;
+    if(std::memchr(tag_begin, '\0', tag_len) != nullptr) state.nul_in_skipped = true;
     return true;
   }, read_error, too_long, limit);
   state.lines = lines;
@@ -408,7 +415,9 @@ inline Status finish_obj(const Obj_soup& soup, const Obj_parse_state& state, con
   if(soup.face_v.empty()) {
     message = where + ": empty mesh: no face in " + std::to_string(lineno) + " lines (" +
               std::to_string(soup.points.size()) + " vertices)" +
-              (lineno == 1 && state.first_line_has_cr ? "; its one line holds carriage returns: " + cr_line_ends_hint() : "");
+              (lineno == 1 && state.first_line_has_cr ? "; its one line holds carriage returns: " + cr_line_ends_hint() : "") +
+              (state.nul_in_skipped ? "; its records hold NUL bytes: UTF-16 or another two-byte encoding? (OBJ files are "
+                                      "ASCII or UTF-8)" : "");
     return INVALID_INPUT;
   }
   return SUCCESS;
@@ -436,6 +445,7 @@ inline void append_part(Obj_soup& a, Obj_parse_state& sa, const Obj_soup& b, con
   if(sb.max_v > sa.max_v) { sa.max_v = sb.max_v; sa.max_v_line = sb.max_v_line + sa.lines; }   // ties: the first line
   if(sb.max_vt > sa.max_vt) { sa.max_vt = sb.max_vt; sa.max_vt_line = sb.max_vt_line + sa.lines; }
   sa.lines += sb.lines;
+  sa.nul_in_skipped = sa.nul_in_skipped || sb.nul_in_skipped;
 }
 
 // Reads the file `filename` into `soup`, as parse_obj() reads it: the same soup and the same messages. With two
