@@ -405,8 +405,8 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
     """Traces one isoline exactly from the vertex F[face, corner], along `direction` ("+u", "+v", "-u", "-v",
     or 0..3) in the UV chart of `face` (the sector of that corner), until a cone, the border, a closed loop,
     the face limit, or an inconsistency of the map. From a cone: the ray that the chart of `face` shows around the
-    vertex, else the one reached turning counter-clockwise from the corner, else none ("invalid_start", e.g. one of
-    the four directions at a cone of 3 quarter turns). A face that is not a row of F, a corner other than 0, 1, 2 or
+    vertex, else the one reached turning counter-clockwise from the corner, else none ("invalid_start"); at a cone of 3
+    quarter turns one of the four directions from a corner so gives another one's ray again, or none. A face that is not a row of F, a corner other than 0, 1, 2 or
     another direction raise InputError.
 
     Returns a dict: "status" and "message" (of reading the map), and on SUCCESS the trace:

@@ -112,6 +112,25 @@ static void test_grid()
   o.has_target_vertex = true; o.target_vertex = vs[(n + 1) + 3];
   t = tracer.trace_from_vertex(corner_of(vs[(n + 1) + 1]), SS::Trace_direction::PLUS_U, o);
   assert(t.end == SS::Trace_end::TARGET && target(t.segments.back().target.halfedge, m) == vs[(n + 1) + 3]);
+  // a target point on the way given in the chart of any face whose closed triangle holds it: at a vertex (3, 1) or on an
+  // edge (5/2, 1) it was met only in the face given, and a trace along the edges of the other faces went past it
+  for(const std::array<CGAL::Gmpq, 2>& q : {std::array<CGAL::Gmpq, 2>{{3, 1}}, std::array<CGAL::Gmpq, 2>{{CGAL::Gmpq(5, 2), 1}}}) {
+    int holding = 0;
+    for(face_descriptor f : m.faces()) {
+      bool inside = true;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+        const Point_2 a = get(uv, m.prev(h)), b = get(uv, h);   // exact: small integers
+        inside = inside && (b.x() - a.x()) * (q[1] - a.y()) - (b.y() - a.y()) * (q[0] - a.x()) >= 0;
+      }
+      if(!inside) continue;
+      ++holding;
+      SS::Trace_options<Mesh> to;
+      to.has_target_point = true; to.target_face = f; to.target_u = q[0]; to.target_v = q[1];
+      t = tracer.trace_from_vertex(corner_of(vs[(n + 1) + 1]), SS::Trace_direction::PLUS_U, to);
+      assert(t.end == SS::Trace_end::TARGET && t.segments.back().target.u == q[0] && t.segments.back().target.v == q[1]);
+    }
+    assert(holding == (q[0] == 3 ? 6 : 2));
+  }
   // from a rational point inside a face along +v: the border at v = n, u kept exactly
   const CGAL::Gmpq u0(1, 3), v0(1, 7);
   face_descriptor f0;

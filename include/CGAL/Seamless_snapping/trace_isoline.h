@@ -102,7 +102,7 @@ struct Trace_options
   bool has_target_vertex = false;
   typename GT::vertex_descriptor target_vertex;
   bool has_target_point = false;
-  typename GT::face_descriptor target_face;       ///< the target point, in the chart of `target_face`
+  typename GT::face_descriptor target_face;       ///< the target point, in the chart of `target_face` (a point of its closed UV triangle on an edge or at a corner is met from the faces around it too)
   CGAL::Gmpq target_u, target_v;
 };
 
@@ -164,8 +164,8 @@ public:
   /// traces from the vertex `target(corner)`, along `d` in the chart of `face(corner)` (the sector of that corner). At a
   /// cone the rays around the vertex depend on the way around it: the ray is the one that the chart of `face(corner)`
   /// shows (within the faces around the vertex that share that chart, up to the cut edges), else the one reached turning
-  /// counter-clockwise from the corner, else none (`Trace_end::INVALID_START`: e.g. one of the four directions at a cone
-  /// of 3 quarter turns).
+  /// counter-clockwise from the corner, else none (`Trace_end::INVALID_START`). At a cone of 3 quarter turns one of the
+  /// four directions from a corner so gives another one's ray again, or none.
   Trace trace_from_vertex(halfedge_descriptor corner, Trace_direction d,
                           const Trace_options<TriangleMesh>& options = Trace_options<TriangleMesh>()) const
   {
@@ -288,10 +288,9 @@ private:
     internal::tracing::Isoline_stepper stepper(map_);
     if(o.max_faces > 0) stepper.max_steps = o.max_faces;
     if(o.has_target_vertex) target.vertex = vpos_.find(o.target_vertex)->second;   // start_problem() found it
-    if(o.has_target_point) {
-      target.face = map_.cm.face[index_or_none(halfedge(o.target_face, tm_))];
-      target.uv = internal::tracing::Exact_uv{o.target_u, o.target_v};
-    }
+    if(o.has_target_point)
+      internal::tracing::set_target_point(map_, index_or_none(halfedge(o.target_face, tm_)),
+                                          internal::tracing::Exact_uv{o.target_u, o.target_v}, target);
     if(o.has_target_vertex || o.has_target_point) stepper.target = &target;
     return stepper;
   }

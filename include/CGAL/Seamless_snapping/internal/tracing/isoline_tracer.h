@@ -27,6 +27,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -105,10 +106,37 @@ struct Trail_registry
 
 struct Trace_target
 {
-  int vertex = -1;     // a vertex, or
-  int face = -1;       // a point of a face, in its chart
-  Exact_uv uv;
+  int vertex = -1;                                 // a vertex, and/or a point (set_target_point()):
+  std::vector<std::pair<int, Exact_uv> > points;   // per face that holds it, the point in that face's chart
+  int point_vertex = -1;                           // the vertex the point is, if it is one
+
+  bool at_vertex(int v) const { return v == vertex || v == point_vertex; }
 };
+
+// The target point uv of the closed UV triangle of face(h), in that face's chart; where it lies inside an edge, also in
+// the chart of the face beyond it (the same place along the edge), and where it is a corner, also that vertex: a trace
+// that met the point in another face of it than the one given went past it (along the edge, through the vertex)
+inline void set_target_point(const Tracing_map& map, int h, const Exact_uv& uv, Trace_target& t)
+{
+  const Corner_mesh& cm = map.cm;
+  t.points.emplace_back(cm.face[h], uv);
+  const int c[3] = {h, cm.next[h], cm.prev[h]};
+  for(int e : c)
+    if(corner_uv(map, e) == uv) { t.point_vertex = cm.target[e]; return; }
+  for(int e : c) {                                 // the edge source(e) -> target(e): A -> B in face(h)
+    const int o = cm.opp[e];
+    const Exact_uv& A = corner_uv(map, cm.prev[e]);
+    const Exact_uv& B = corner_uv(map, e);
+    if(cm.face[o] < 0 || A == B || CGAL::sign(orientation_determinant(A, B, uv)) != CGAL::ZERO) continue;
+    const FT du = B.u - A.u, dv = B.v - A.v;
+    const FT s = CGAL::abs(du) >= CGAL::abs(dv) ? (uv.u - A.u) / du : (uv.v - A.v) / dv;
+    if(!(CGAL::is_positive(s) && s < 1)) continue;
+    const Exact_uv& A2 = corner_uv(map, o);        // source(e) and target(e) in face(o)
+    const Exact_uv& B2 = corner_uv(map, cm.prev[o]);
+    t.points.emplace_back(cm.face[o], Exact_uv{A2.u + s * (B2.u - A2.u), A2.v + s * (B2.v - A2.v)});
+    return;
+  }
+}
 
 struct Trace_run
 {
@@ -295,7 +323,9 @@ public:
       return true;
     };
     FT a = zero_rational();
-    if(target && target->face == f && on_line(target->uv, a)) consider(a, Trace_end::TARGET, -1, FT(0), false, false);
+    if(target)
+      for(const std::pair<int, Exact_uv>& q : target->points)
+        if(q.first == f && on_line(q.second, a)) consider(a, Trace_end::TARGET, -1, FT(0), false, false);
     if(r.start_face == f && r.start_m == r.m && on_line(r.start_p, a) && !r.at_start)
       consider(a, Trace_end::CLOSED_LOOP, -1, FT(0), false, false);
     if(trails)
@@ -581,7 +611,7 @@ private:
     const Corner_mesh& M = cm();
     const int v = M.target[corner];
     const std::string where = "vertex " + std::to_string(v);
-    if(target && target->vertex == v) return finish(r, Trace_end::TARGET, where);
+    if(target && target->at_vertex(v)) return finish(r, Trace_end::TARGET, where);
     if(map.st.is_cone[v]) return finish(r, Trace_end::CONE, where);
     const bool meeting = trails && v != r.start_vertex;
     if(meeting && !trails->vertex_arrivals[std::size_t(v)].empty() && trails->vertex_time[std::size_t(v)] < r.time) {
