@@ -1175,6 +1175,14 @@ static void test_seam_mesh()
   for(halfedge_descriptor h : tm.halfedges()) kept = kept && untouched[h] == Point_2(3, 4);
   CHECK(kept, "failed conversion writes nothing");
   corner[inner] = old;
+
+  // 6. an empty mesh: refused as the snap refuses it (it was SUCCESS, "wrote the UVs of 0 seam-mesh vertices")
+  Mesh empty;
+  Seam_mesh empty_seams(empty, empty.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first,
+                        empty.add_property_map<vertex_descriptor, bool>("v:seam", false).first);
+  UV_map empty_uv = empty.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  CHECK(SS::corner_uv_to_seam_mesh_uv(empty_seams, empty_uv, empty_uv, msg) == SS::INVALID_INPUT &&
+        msg == "the mesh has no faces", "an empty mesh: " << msg);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -170,8 +170,8 @@ void seam_mesh_uv_to_corner_uv(const CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap, 
  * \param seam_uv receives the UV of every vertex of `mesh` (it may be the same map as `corner_uv`)
  * \param message on failure, which corner disagrees with its wedge, and how many do; on success a one-line summary
  *
- * \return `SUCCESS`, or `INVALID_INPUT` when two corners of one seam-mesh vertex have different UVs
- *         (the corner map has a discontinuity that is not a seam of `mesh`, or a NaN); `seam_uv` is then
+ * \return `SUCCESS`, or `INVALID_INPUT` when the mesh has no faces or two corners of one seam-mesh vertex have
+ *         different UVs (the corner map has a discontinuity that is not a seam of `mesh`, or a NaN); `seam_uv` is then
  *         left untouched.
  *
  * \sa `seam_mesh_uv_to_corner_uv()`
@@ -186,6 +186,10 @@ Status corner_uv_to_seam_mesh_uv(const CGAL::Seam_mesh<TriangleMesh, SeamEdgeMap
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
   typedef typename boost::property_traits<VertexUVMap>::value_type        Seam_UV;
   const TriangleMesh& tm = mesh.mesh();
+  if(faces(tm).empty()) {                          // as the snap refuses it (it was "wrote the UVs of 0 seam-mesh vertices")
+    message = "the mesh has no faces";
+    return INVALID_INPUT;
+  }
 
   // 1. every corner must agree with the representative corner of its seam-mesh vertex
   std::size_t disagreeing = 0;
