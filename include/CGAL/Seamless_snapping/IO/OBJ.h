@@ -350,33 +350,33 @@ inline Status parse_obj_lines(std::istream& is, Obj_soup& soup, Obj_parse_state&
     // A '#' starts a comment anywhere on the line (also covers "#scale_uv" and friends).
     if(const void* hash = std::memchr(p, '#', std::size_t(end - p)))   // from p: after a byte-order mark too
       end = static_cast<const char*>(hash);
-    skip_spaces(p, end);
-    if(p == end) return true;
-    const char* tag_begin = p;
-    while(p != end && !is_space(*p)) ++p;
-    const std::size_t tag_len = std::size_t(p - tag_begin);
-    if(tag_len == 1 && tag_begin[0] == 'f') return read_face(p, end, lineno);
-    if(tag_len == 1 && tag_begin[0] == 'v') {
-      std::array<double, 3> x;
-      if(!read_numbers(p, end, lineno, x.data(), 3, "v")) return false;
-      soup.points.push_back(x);
+    for(;;) {                                         // (again after a byte-order mark inside the file)
+      skip_spaces(p, end);
+      if(p == end) return true;
+      const char* tag_begin = p;
+      while(p != end && !is_space(*p)) ++p;
+      const std::size_t tag_len = std::size_t(p - tag_begin);
+      if(tag_len == 1 && tag_begin[0] == 'f') return read_face(p, end, lineno);
+      if(tag_len == 1 && tag_begin[0] == 'v') {
+        std::array<double, 3> x;
+        if(!read_numbers(p, end, lineno, x.data(), 3, "v")) return false;
+        soup.points.push_back(x);
+        return true;
+      }
+      if(tag_len == 2 && tag_begin[0] == 'v' && tag_begin[1] == 't') {
+        std::array<double, 2> x;
+        if(!read_numbers(p, end, lineno, x.data(), 2, "vt")) return false;
+        soup.uvs.push_back(x);
+        return true;
+      }
+      // a byte-order mark that is not the file's first bytes (files joined, or a mark written twice) is no part of the
+      // record after it, which was skipped unseen (and what referred to it failed elsewhere: "vertex index out of range")
+      if(tag_len >= 3 && std::memcmp(tag_begin, "\xEF\xBB\xBF", 3) == 0) { p = tag_begin + 3; continue; }
+      // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
+      ++soup.skipped_records;
+      if(std::memchr(tag_begin, '\0', tag_len) != nullptr) state.nul_in_skipped = true;
       return true;
     }
-    if(tag_len == 2 && tag_begin[0] == 'v' && tag_begin[1] == 't') {
-      std::array<double, 2> x;
-      if(!read_numbers(p, end, lineno, x.data(), 2, "vt")) return false;
-      soup.uvs.push_back(x);
-      return true;
-    }
-    // a byte-order mark that is not the file's first bytes (files joined, or a mark written twice): the record after it
-    // was skipped unseen, and what refers to it failed elsewhere ("vertex index out of range")
-    if(tag_len >= 3 && std::memcmp(tag_begin, "\xEF\xBB\xBF", 3) == 0)
-      return fail(lineno, "a UTF-8 byte-order mark (EF BB BF) inside the file, before " + quote_token(tag_begin + 3, p) +
-                          ": remove it (files joined, or a mark written twice?)");
-    // vn, vp, g, o, s, usemtl, mtllib, l, p, and non-standard records (c, sm, ...) are skipped.
-    ++soup.skipped_records;
-    if(std::memchr(tag_begin, '\0', tag_len) != nullptr) state.nul_in_skipped = true;
-    return true;
   }, read_error, too_long, limit);
   state.lines = lines;
   if(status != SUCCESS) return status;
@@ -906,27 +906,34 @@ inline std::string temporary_name_next_to(const std::string& filename)
 
 // The descriptor that `filename` names (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), else -1: a file the
 // caller opened (the shell's `> log` or `>> log`), which is written where it stands, never truncated or replaced (the
-// name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines). Other names of the
-// standard output or error (//dev/stdout, a symbolic link to /dev/stdout, /proc/<pid>/fd/1: a name under /dev or /proc,
-// or a link, that leads to the file of descriptor 1 or 2) give 1 or 2 too.
+// name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines). Also through symbolic
+// links to such a name and with repeated slashes (//dev/stdout); a name that leads to a regular file is that file,
+// however it is spelt (a link to the file stdout was redirected to is replaced as the file's own name would be).
 inline int descriptor_named(const std::string& filename)
 {
-  if(filename == "/dev/stdout") return 1;
-  if(filename == "/dev/stderr") return 2;
-  for(const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
-    int fd = -1;
-    const char* const end = filename.data() + filename.size();
-    if(filename.size() > prefix.size() && filename.compare(0, prefix.size(), prefix) == 0) {
-      const std::from_chars_result r = std::from_chars(filename.data() + prefix.size(), end, fd);
-      if(r.ec == std::errc() && r.ptr == end && fd >= 0) return fd;
-    }
-  }
   namespace fs = std::filesystem;
   std::error_code ec;
-  const bool indirect = fs::is_symlink(fs::symlink_status(filename, ec)) || filename.rfind("/dev/", 0) == 0 ||
-                        filename.rfind("/proc/", 0) == 0 || filename.rfind("//", 0) == 0;
-  for(int fd : {1, 2})                           // the same file as the descriptor's (device and inode)
-    if(indirect && fs::equivalent(filename, fd == 1 ? "/dev/stdout" : "/dev/stderr", ec) && !ec) return fd;
+  const fs::path self = fs::read_symlink("/proc/self", ec);   // this process's id, where there is a /proc
+  const std::string own_fd = ec ? std::string("/proc/self/fd/") : "/proc/" + self.string() + "/fd/";
+  std::string name = filename;
+  for(int links = 0; links <= 40; ++links) {                   // 40: Linux's limit of links
+    std::string q;                                             // repeated slashes as one
+    for(char c : name) if(!(c == '/' && !q.empty() && q.back() == '/')) q += c;
+    if(q == "/dev/stdout") return 1;
+    if(q == "/dev/stderr") return 2;
+    for(const std::string& prefix : {std::string("/dev/fd/"), std::string("/proc/self/fd/"), own_fd}) {
+      int fd = -1;
+      const char* const end = q.data() + q.size();
+      if(q.size() > prefix.size() && q.compare(0, prefix.size(), prefix) == 0) {
+        const std::from_chars_result r = std::from_chars(q.data() + prefix.size(), end, fd);
+        if(r.ec == std::errc() && r.ptr == end && fd >= 0) return fd;
+      }
+    }
+    if(!fs::is_symlink(fs::symlink_status(q, ec))) return -1;
+    const fs::path target = fs::read_symlink(q, ec);
+    if(ec) return -1;
+    name = target.is_absolute() ? target.string() : (fs::path(q).parent_path() / target).string();
+  }
   return -1;
 }
 
