@@ -30,7 +30,6 @@ whose message names what was wrong and the valid values.
 """
 import json
 import math
-import numbers
 import operator
 import os
 from fractions import Fraction
@@ -336,12 +335,14 @@ def _tolerance(x, what):
 def _grid_scale(x):
     """x as a float that is a power of 2, or InputError (the grid of an integer-grid map is at multiples of 1/x, applied
     exactly; is_exact_integer_grid_map() answered False for 3, 0 or NaN, and a string such as '2' was read as a number)"""
-    if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+    if isinstance(x, (str, bytes, bool, np.bool_, complex, np.complexfloating)):
         raise InputError("grid_scale must be a number (a power of 2), not %r" % (x,))
     try:
-        s = float(x)
+        s = float(x)                                           # also a Fraction, a Decimal, a 0-d array
     except OverflowError:                                      # an int or Fraction beyond the doubles
         s = math.inf
+    except (TypeError, ValueError):
+        raise InputError("grid_scale must be a number (a power of 2), not %r" % (x,)) from None
     if not (math.isfinite(s) and s > 0 and math.frexp(s)[0] == 0.5 and s == x):
         raise InputError("grid_scale must be a power of 2 (UV units are multiplied by it exactly), got %r" % (x,))
     return s

@@ -5,6 +5,7 @@ and read back with correctly rounded conversions): none compares a floating-poin
 with stored bits, so none depends on the machine."""
 import os
 import random
+from decimal import Decimal
 from fractions import Fraction
 
 import numpy as np
@@ -1297,6 +1298,8 @@ def test_grid_scale_must_be_a_power_of_two():
                 call(bad)
     assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=np.float32(0.5))
     assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=Fraction(1, 2))   # as the package's exact outputs
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=Decimal(2))
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=np.array(2.0))
     assert ss.is_exact_integer_grid_map(V, F, UV, FUV, grid_scale=2) and ss.is_exact_integer_grid_map(V, F, UV, FUV)
 
 
