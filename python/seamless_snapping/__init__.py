@@ -489,8 +489,8 @@ def quad_valences(V, F, UV, FUV, *, weld=None, raise_on_failure=True):
     extractor that guesses it from floating-point angle sums can be told it instead: libQEx reads it from a VVAL
     file (write_vval()).
 
-    Returns (valence, report): valence #V int64 (0 for a row no face uses; with weld=True the rows at one position
-    are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
+    Returns (valence, report): valence #V int64 (0 for a row no face uses, also where it lies at the position of a
+    used one; with weld=True the used rows at one position are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
     vertex is on the border of the quad mesh: a border vertex, or one that a zero-area triangle whose long side is a
     border edge folds onto the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
     valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
