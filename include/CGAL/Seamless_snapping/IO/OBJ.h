@@ -460,7 +460,8 @@ inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::s
 {
   if(in_halves != nullptr) *in_halves = false;
   std::error_code ec;
-  if(std::filesystem::is_directory(std::filesystem::status(filename, ec))) {   // opens, then reads as "read error"
+  const std::filesystem::file_status status = std::filesystem::status(filename, ec);
+  if(std::filesystem::is_directory(status)) {          // opens, then reads as "read error"
     message = "cannot read '" + filename + "': it is a directory";
     return INVALID_INPUT;
   }
@@ -470,7 +471,7 @@ inline Status parse_obj_file(const std::string& filename, Obj_soup& soup, std::s
     return INVALID_INPUT;
   }
   // a pipe or a FIFO (/dev/stdin) cannot seek: read on one thread (the failed seekg() left it failed, read as empty)
-  if(threads >= 2 && std::filesystem::is_regular_file(std::filesystem::status(filename, ec))) {
+  if(threads >= 2 && std::filesystem::is_regular_file(status)) {
     is.seekg(0, std::ios::end);
     const std::streamoff size = is.tellg();
     std::ifstream second;             // opened only for a file large enough to be split
@@ -904,6 +905,19 @@ inline std::string temporary_name_next_to(const std::string& filename)
   return (p.parent_path() / (std::string(".tmp-") + buf)).string();
 }
 
+// One step along a chain of symbolic links: `p` becomes the target of the link `p` (a relative target read from the
+// link's directory); false, `p` unchanged, where `p` is no link or cannot be read
+inline bool follow_link(std::filesystem::path& p)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if(!fs::is_symlink(fs::symlink_status(p, ec))) return false;
+  const fs::path t = fs::read_symlink(p, ec);
+  if(ec) return false;
+  p = t.is_absolute() ? t : p.parent_path() / t;
+  return true;
+}
+
 // The descriptor that `filename` names (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), else -1: a file the
 // caller opened (the shell's `> log` or `>> log`), which is written where it stands, never truncated or replaced (the
 // name leads to the regular file log, which a rename replaced: `>> log` lost its earlier lines). Also through symbolic
@@ -911,14 +925,13 @@ inline std::string temporary_name_next_to(const std::string& filename)
 // however it is spelt (a link to the file stdout was redirected to is replaced as the file's own name would be).
 inline int descriptor_named(const std::string& filename)
 {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self", ec);   // this process's id, where there is a /proc
+  std::error_code ec;                                          // this process's id, where there is a /proc
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self", ec);
   const std::string own_fd = ec ? std::string("/proc/self/fd/") : "/proc/" + self.string() + "/fd/";
-  std::string name = filename;
+  std::filesystem::path name = filename;
   for(int links = 0; links <= 40; ++links) {                   // 40: Linux's limit of links
     std::string q;                                             // repeated slashes as one
-    for(char c : name) if(!(c == '/' && !q.empty() && q.back() == '/')) q += c;
+    for(char c : name.string()) if(!(c == '/' && !q.empty() && q.back() == '/')) q += c;
     if(q == "/dev/stdout") return 1;
     if(q == "/dev/stderr") return 2;
     for(const std::string& prefix : {std::string("/dev/fd/"), std::string("/proc/self/fd/"), own_fd}) {
@@ -929,10 +942,8 @@ inline int descriptor_named(const std::string& filename)
         if(r.ec == std::errc() && r.ptr == end && fd >= 0) return fd;
       }
     }
-    if(!fs::is_symlink(fs::symlink_status(q, ec))) return -1;
-    const fs::path target = fs::read_symlink(q, ec);
-    if(ec) return -1;
-    name = target.is_absolute() ? target.string() : (fs::path(q).parent_path() / target).string();
+    name = q;
+    if(!follow_link(name)) return -1;
   }
   return -1;
 }
@@ -941,14 +952,8 @@ inline int descriptor_named(const std::string& filename)
 // created, as the manual says: links are followed)
 inline std::string link_target(const std::string& filename)
 {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::path p(filename);
-  for(int i = 0; i < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++i) {   // 40: Linux's limit of links
-    const fs::path t = fs::read_symlink(p, ec);
-    if(ec) break;
-    p = t.is_absolute() ? t : p.parent_path() / t;
-  }
+  std::filesystem::path p(filename);
+  for(int i = 0; i < 40 && follow_link(p); ++i) {}              // 40: Linux's limit of links
   return p.string();
 }
 
