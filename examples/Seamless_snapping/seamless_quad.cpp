@@ -221,14 +221,12 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
-  int reads = 0;
-  auto read = [&](bool w, std::string& m) {
-    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
+  auto read = SS::IO::internal::read_again_checked(in, [&](bool w, std::string& m) {
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
     return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, params::weld_vertices(w).number_of_threads(threads))
            == SS::SUCCESS;
-  };
+  });
   // the JSON report (--report): the snap report and the quad mesh's, its patches' and its layout's (JSON texts)
   // `error`: why the run failed (then "output" is null: nothing was written), or empty
   auto write_report = [&](const SS::Snap_report& snap, const std::string& quad_mesh, const std::string& patches,

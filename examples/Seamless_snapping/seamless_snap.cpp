@@ -379,11 +379,10 @@ static int snap_file(const Options& options, const std::string& in, const std::s
   UV_map uv;
   std::string message;
   Clock::time_point t = Clock::now();
-  int reads = 0;
-  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
-    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
+  const auto read = SS::IO::internal::read_again_checked(in, [&](bool w, std::string& m) {
     return read_mesh(in, w, o.threads, mesh, uv, m);
   });
+  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, read);
   if(!wr.ok) return fail("cannot read input: " + message);
   const SS::IO::Cut_mesh_test& cut = wr.cut;
   const bool cut_mesh = cut.is_cut_mesh();

@@ -120,13 +120,12 @@ int main(int argc, char** argv)
   Mesh mesh;
   UV_map uv;
   std::string message;
-  int reads = 0;
-  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, [&](bool w, std::string& m) {
-    if(reads++ > 0 && !SS::IO::internal::can_read_again(in, "welding the cut mesh", m)) return false;
+  const auto read = SS::IO::internal::read_again_checked(in, [&](bool w, std::string& m) {
     mesh = Mesh();
     uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
     return SS::IO::read_OBJ_with_corner_uvs(in, mesh, uv, m, SS::parameters::weld_vertices(w)) == SS::SUCCESS;
   });
+  const SS::IO::Welding_read wr = SS::IO::read_welding_cut_meshes(mesh, weld, no_weld, message, read);
   if(!wr.note(weld).empty()) std::cout << wr.note(weld) << "\n";
   if(!wr.ok) return fail(message);
   const auto t0 = std::chrono::steady_clock::now();

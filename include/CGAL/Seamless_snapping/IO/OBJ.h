@@ -1002,6 +1002,26 @@ inline bool can_read_again(const std::string& filename, const std::string& why, 
   return false;
 }
 
+// The reader `read(weld, message)` that read_welding_cut_meshes() calls for the input `filename`, refused from its second
+// call on (the welded read after the read as it is) where the input can be read once only (can_read_again(): the three
+// command-line programs)
+template <class Read>
+struct Read_again_checked
+{
+  const std::string& filename;
+  Read read;
+  mutable int calls = 0;
+
+  bool operator()(bool weld, std::string& message) const
+  {
+    if(calls++ > 0 && !can_read_again(filename, "welding the cut mesh", message)) return false;
+    return read(weld, message);
+  }
+};
+
+template <class Read>
+Read_again_checked<Read> read_again_checked(const std::string& filename, const Read& read) { return {filename, read}; }
+
 // A file written as write_atomically() writes it, in two steps, so that a program writing several files can replace
 // them together: prepare() writes the content into a temporary file next to the file, commit() renames it over the
 // file; a temporary file not committed is removed (destructor). A regular file keeps its permission bits, and a
