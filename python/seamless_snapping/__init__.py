@@ -407,8 +407,8 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
     or 0..3) in the UV chart of `face` (the sector of that corner), until a cone, the border, a closed loop,
     the face limit, or an inconsistency of the map. From a cone: the ray that the chart of `face` shows around the
     vertex, else the one reached turning counter-clockwise from the corner, else none ("invalid_start"); at a cone of 3
-    quarter turns one of the four directions from a corner so gives another one's ray again, or none. A face that is not a row of F, a corner other than 0, 1, 2 or
-    another direction raise InputError.
+    quarter turns one of the four directions from a corner so gives another one's ray again, or none. A face that is
+    not a row of F, a corner other than 0, 1, 2 or another direction raise InputError.
 
     Returns a dict: "status" and "message" (of reading the map), and on SUCCESS the trace:
       "end": how it ended (a C++ Trace_end name), "failure": True for an inconsistency of the map, "message";
@@ -490,10 +490,10 @@ def quad_valences(V, F, UV, FUV, *, weld=None, raise_on_failure=True):
     file (write_vval()).
 
     Returns (valence, report): valence #V int64 (0 for a row no face uses, also where it lies at the position of a
-    used one; with weld=True the used rows at one position are one vertex and get its valence), and the report as a dict: "status", "message", "border" (#V bool: the row's
-    vertex is on the border of the quad mesh: a border vertex, or one that a zero-area triangle whose long side is a
-    border edge folds onto the border), "fold_overs" and "zero_area_faces" (rows of F). Refused (SnapError, or None in place of
-    valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
+    used one; with weld=True the used rows at one position are one vertex and get its valence), and the report as a
+    dict: "status", "message", "border" (#V bool: the row's vertex is on the border of the quad mesh: a border
+    vertex, or one that a zero-area triangle whose long side is a border edge folds onto the border), "fold_overs" and
+    "zero_area_faces" (rows of F). Refused (SnapError, or None in place of valence with raise_on_failure=False): "INVALID_INPUT" (the map is not exactly seamless, so its angle sums need not
     be multiples of 90 degrees: snap() it first; or the arrays do not form a triangle mesh; or an interior vertex has
     valence 1, a cone of 90 degrees or a cone of 5 quarter turns that the map winds back to 1, which no quad mesh has:
     the message names it), "FOLD_OVERS" (a negatively

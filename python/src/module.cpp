@@ -392,7 +392,6 @@ py::dict trace_isoline(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& 
   return d;
 }
 
-// The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
 // A message of quad_mesh_patches() / quad_layout() on the mesh that quad_mesh_from_rows() built, with the vertex it names
 // ("vertex N is not manifold ...") in QF's numbering (`row_of`: per mesh vertex its index in QF; the faces are QF's rows)
 std::string in_qf_numbering(const std::string& message, const std::vector<long long>* row_of)
@@ -434,6 +433,7 @@ void add_patches(Mesh& q, py::dict& out, const std::vector<long long>* row_of = 
   out["patches"] = patches.to_json();
 }
 
+// The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
 py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
                             double grid_scale, std::size_t max_grid_cells)
 {

@@ -102,7 +102,9 @@ struct Trace_options
   bool has_target_vertex = false;
   typename GT::vertex_descriptor target_vertex;
   bool has_target_point = false;
-  typename GT::face_descriptor target_face;       ///< the target point, in the chart of `target_face` (a point of its closed UV triangle on an edge or at a corner is met from the faces around it too)
+  typename GT::face_descriptor target_face;       ///< the target point, in the chart of `target_face` (a point of its
+                                                  ///< closed UV triangle on an edge or at a corner is met from the
+                                                  ///< faces around it too)
   CGAL::Gmpq target_u, target_v;
 };
 
