@@ -49,7 +49,8 @@
 //                               (8 quads around it), off the integer points refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
 //                               with integer_grid_map(true) at grid scales 2, 4, 8: chi 2, 4 cones of valence 2,
-//                               scale covariance; the Square map (cones of 90 degrees) is refused (valence 1)
+//                               scale covariance; the Square map (cones of 90 degrees): at grid scale 1 refused
+//                               (its two cones within two cells), at 8 both split (250 quads, chi 2)
 //   quad: cut invariance        the bear's Parallelogram IGM with the faces within 1, 4, 12 rings of a cone
 //                               re-expressed by a quarter turn (the cut graph moves): the same quads with the same
 //                               3D points, bit for bit
@@ -58,8 +59,12 @@
 //                               at grid scale 2), the same bit for bit with 8 face rings re-charted; the ones with
 //                               fold-overs FOLD_OVERS listing the snap report's flipped and zero-area faces (but
 //                               zero-area faces with three distinct corners: the knight's forced one is collapsed),
-//                               maps with a cone of 90 degrees (the knight)
+//                               maps with a cone of 90 degrees (the knight) split (checked quad mesh, three more
+//                               irregular vertices than cones less one), refused with split_valence_one_cones(false):
 //                               INVALID_INPUT, said to be the map's own cone where no vertex winds twice
+//   quad: cone of 90 degrees    a generated quarter plane [0, n]^2 with its sides glued, n = 2, 3, 4, grid scales 1, 2:
+//                               the cone's 2 x 2 cells one quad (n^2 S^2 - 3 quads, chi 1, three vertices of valence
+//                               3 inside where n S > 2, the cone no quad vertex); refused without the split
 //   quad: collapsed cone pairs  libQEx's fandisk and duck_miq_8 (IGM, untangled, fold-free): refused, the message
 //                               naming a cone pair the integer translations put onto one point, as the snap report does
 
@@ -187,8 +192,12 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   assert(rep.covers_map() == covers);
   const Q area = uv_area(m, uv, S);
   assert(rep.uv_area == area);
+  // cones of valence 1 split (valence_one_cones.h): each is no quad vertex, its 2 x 2 cells one quad, three corners of
+  // valence 3 for it; quad_valences() refuses such a map (no VERTEX gets a valence of 1), so the valences are
+  // checked by their count only
+  const std::size_t split = rep.split_cones.size();
   if(covers) {
-    assert(Q(int(q.number_of_faces())) == area);                 // as many quads as the exact UV area
+    assert(Q(int(q.number_of_faces() + 3 * split)) == area);     // as many quads as the exact UV area (3 fewer per split)
     assert(euler(q) == euler(m));
     assert(!CGAL::is_closed(m) || CGAL::is_closed(q));
   } else {
@@ -196,9 +205,10 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   }
   // origins, valences, cones
   const SS::Quad_valences qv = SS::quad_valences(m, uv);
-  assert(qv.status == SS::SUCCESS);
-  std::size_t cones = 0, irregular = 0, met_cones = 0;
-  for(vertex_descriptor v : m.vertices()) cones += !m.is_border(v) && qv.valence[std::size_t(v)] != 4 ? 1 : 0;
+  assert(qv.status == SS::SUCCESS || (split > 0 && qv.message.find("(a cone of valence 1)") != std::string::npos));
+  std::size_t cones = split > 0 ? rep.cones : 0, irregular = 0, met_cones = 0;
+  if(split == 0)
+    for(vertex_descriptor v : m.vertices()) cones += !m.is_border(v) && qv.valence[std::size_t(v)] != 4 ? 1 : 0;
   CGAL::Bbox_3 box;
   for(vertex_descriptor v : m.vertices()) box += m.point(v).bbox();
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
@@ -211,14 +221,16 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
     const int d = int(q.degree(v));
     irregular += !border && d != 4 ? 1 : 0;
     if(o.location == Origin::VERTEX) assert(++mesh_vertices[m.target(o.halfedge)] == 1);   // one quad vertex per mesh vertex
-    if(border && !covers) continue;
+    if(o.location == Origin::VERTEX)
+      for(std::size_t c : rep.split_cones) assert(std::size_t(m.target(o.halfedge)) != c);   // a split cone is none
+    if((border && !covers) || split > 0) continue;
     const int expected = o.location == Origin::VERTEX ? qv.valence[std::size_t(m.target(o.halfedge))] : (border ? 3 : 4);
     if(d != expected) std::cerr << what << ": quad vertex " << v << " has valence " << d << ", expected " << expected << std::endl;
     assert(d == expected);
     met_cones += !border && o.location == Origin::VERTEX && expected != 4 ? 1 : 0;
   }
   assert(rep.irregular_vertices == irregular && rep.cones == cones);
-  if(covers) assert(irregular == cones && met_cones == cones);   // the irregular vertices are exactly the cones
+  if(covers && split == 0) assert(irregular == cones && met_cones == cones);   // the irregular vertices are exactly the cones
   // covered faces
   std::vector<char> covered(m.number_of_faces(), 0);
   for(face_descriptor f : q.faces()) {
@@ -242,7 +254,7 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
   const Patch_sizes sizes = check_quad_patches(q, what);
-  if(covers) check_traced_layout(m, uv, S, q, what);
+  if(covers && split == 0) check_traced_layout(m, uv, S, q, what);   // the traced map has the cone of valence 1
   if(covers && CGAL::is_closed(q) && cones > 0) check_traced_patch_charts(q, what);
   return sizes;
 }
@@ -826,6 +838,68 @@ static void test_branch_points()
   check_refused(b, uvb, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns off the grid");
 }
 
+// The quarter plane [0, n]^2 with its two sides glued ((t, 0) ~ (0, t), the cut edges with a quarter turn and translation
+// 0): a cone of 90 degrees (valence 1) at (0, 0), a disk whose border, u = n and v = n, lies on integer isolines.
+// Triangles of half a unit (two per square), a fan of 4 around the cone (the square at the cone would be two
+// triangles on the same three vertices); 3D points on a paper cone of that angle (r / 4 around the axis).
+static vertex_descriptor make_quarter_plane_cone(Mesh& m, UV_map& uv, int n)
+{
+  std::map<std::pair<int, int>, vertex_descriptor> vertex;          // by (2u, 2v), the v axis glued onto the u axis
+  auto at = [&](int i, int j) {
+    const std::pair<int, int> key = i == 0 && j > 0 ? std::make_pair(j, 0) : std::make_pair(i, j);
+    auto it = vertex.find(key);
+    if(it != vertex.end()) return it->second;
+    const double r = std::hypot(key.first, key.second) / 2, theta = std::atan2(double(key.second), double(key.first));
+    return vertex[key] = m.add_vertex(Point_3(r / 4 * std::cos(4 * theta), r / 4 * std::sin(4 * theta), r * std::sqrt(15.) / 4));
+  };
+  uv = uv_of(m);
+  auto triangle = [&](std::array<std::pair<int, int>, 3> c) {
+    const face_descriptor f = m.add_face(at(c[0].first, c[0].second), at(c[1].first, c[1].second), at(c[2].first, c[2].second));
+    assert(f != Mesh::null_face());
+    halfedge_descriptor h = m.halfedge(f);
+    while(m.target(h) != at(c[0].first, c[0].second)) h = m.next(h);
+    for(int k = 0; k < 3; ++k, h = m.next(h)) put(uv, h, Point_2(c[std::size_t(k)].first / 2., c[std::size_t(k)].second / 2.));
+  };
+  const std::pair<int, int> ring[5] = {{2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}};
+  for(int k = 0; k < 4; ++k) triangle({{{0, 0}, ring[k], ring[k + 1]}});
+  for(int i = 0; i < 2 * n; ++i)
+    for(int j = 0; j < 2 * n; ++j) {
+      if(i < 2 && j < 2) continue;
+      triangle({{{i, j}, {i + 1, j}, {i + 1, j + 1}}});
+      triangle({{{i, j}, {i + 1, j + 1}, {i, j + 1}}});
+    }
+  return at(0, 0);
+}
+
+// A cone of 90 degrees: its 2 x 2 cells made one quad (split_valence_one_cones, the default), or refused without that
+static void test_valence_one_cones()
+{
+  for(int n : {2, 3, 4})
+    for(double S : {1., 2.}) {
+      Mesh m; UV_map uv;
+      const vertex_descriptor cone = make_quarter_plane_cone(m, uv, n);
+      assert(SS::is_exact_integer_grid_map(m, uv, SS::parameters::grid_scale(S)) && CGAL::is_valid_polygon_mesh(m));
+      const std::string what = "cone of 90 degrees, [0, " + std::to_string(n) + "]^2, grid scale " + std::to_string(int(S));
+      Quad_result r;
+      extract(m, uv, S, r);
+      check_quad_mesh(m, uv, S, r, what);
+      const std::size_t side = std::size_t(n * S);
+      assert(r.report.split_cones == std::vector<std::size_t>(1, std::size_t(cone)) && r.report.cones == 1);
+      assert(r.report.quads == side * side - 3 && r.report.quad_vertices == (side + 1) * (side + 1) - side - 3);
+      assert(r.report.euler_characteristic == 1 && r.report.boundary_loops == 1);
+      // the three corners of the merged quad next to the glued sides: valence 3 inside, 2 on the border (n S = 2)
+      std::size_t valence_3_inside = 0;
+      for(vertex_descriptor v : r.q.vertices()) valence_3_inside += !r.q.is_border(v) && r.q.degree(v) == 3 ? 1 : 0;
+      assert(valence_3_inside == (side > 2 ? 3 : 0) && r.report.irregular_vertices == valence_3_inside);
+      const std::vector<std::uint64_t> bits = uv_bits(m, uv);
+      Quad_result kept;
+      kept.q.add_vertex(Point_3(1, 2, 3));
+      kept.report = SS::extract_quad_mesh(m, uv, kept.q, SS::parameters::grid_scale(S).split_valence_one_cones(false));
+      assert(kept.report.status == SS::INVALID_INPUT && kept.report.message.find("(a cone of valence 1)") != std::string::npos);
+      assert(kept.q.number_of_vertices() == 1 && kept.q.number_of_faces() == 0 && uv_bits(m, uv) == bits);
+    }
+}
+
 // quad_mesh_patches() refuses what is not a manifold quad mesh (INVALID_INPUT naming the face or vertex) and then
 // writes nothing
 static void test_patch_refusals()
@@ -993,10 +1067,20 @@ static void test_bear_orbifold()
     assert(s.message.find("spans less than one grid cell") != std::string::npos && s.message.find("has 4 cones") != std::string::npos);
     std::cout << "quad: bear orbifold Parallelogram at grid scale 1/8 refused: " << s.message << "\n";
   }
-  Mesh m; UV_map uv;
-  bear_orbifold(m, uv, SMP::Square);
-  assert(SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true)).status == SS::SUCCESS);
-  check_refused(m, uv, 1, SS::INVALID_INPUT, "valence 1", "bear orbifold Square");
+  // the Square map (two cones of 90 degrees): at grid scale 1 the 2 x 2 cells around a cone are not 7 points of the
+  // surface (refused); at 8 each is made one quad
+  Mesh square; UV_map uv_square;
+  bear_orbifold(square, uv_square, SMP::Square);
+  for(double S : {1., 8.}) {
+    Mesh m = square;
+    UV_map uv = uv_of(m);
+    assert(SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(S)).status == SS::SUCCESS);
+    if(S == 1) { check_refused(m, uv, S, SS::INVALID_INPUT, "cannot be replaced with its 2 x 2 cells", "bear orbifold Square"); continue; }
+    Quad_result r;
+    extract(m, uv, S, r);
+    check_quad_mesh(m, uv, S, r, "bear orbifold Square, scale 8, its 2 cones of 90 degrees split");
+    assert(r.report.split_cones.size() == 2 && r.report.euler_characteristic == 2);
+  }
 }
 
 // the quads of a mesh as cycles of 3D points, each from its smallest point (orientation kept), sorted
@@ -1090,11 +1174,18 @@ static void test_shared_data()
     const bool winds_twice = quarter_cone && qv.message.find("quarter turns: most likely a cone of 5") != std::string::npos;
     assert(qv.status == SS::SUCCESS || quarter_cone);
     if(quarter_cone) {
-      // with no vertex winding twice anywhere, the cone is most likely the map's own (the knight's field has it):
-      // said so, and no cone pair is blamed
-      const SS::Quad_mesh_report r = check_refused(m, uv, 1, SS::INVALID_INPUT, "valence 1", name);
-      assert(winds_twice || (r.message.find("singularity of index 3/4") != std::string::npos &&
-                             r.message.find("onto one integer point") == std::string::npos));
+      // by default its 2 x 2 cells become one quad (the knight's cone: 3 corners of valence 3 for it) ...
+      Quad_result r;
+      extract(m, uv, 1, r);
+      check_quad_mesh(m, uv, 1, r, name + ", its cone of 90 degrees split");
+      assert(!r.report.split_cones.empty() && r.report.irregular_vertices == r.report.cones + 2 * r.report.split_cones.size());
+      // ... and without split_valence_one_cones, refused: with no vertex winding twice anywhere, the cone is most
+      // likely the map's own (the knight's field has it): said so, and no cone pair is blamed
+      Quad_result kept;
+      kept.report = SS::extract_quad_mesh(m, uv, kept.q, SS::parameters::split_valence_one_cones(false));
+      assert(kept.report.status == SS::INVALID_INPUT && kept.q.number_of_faces() == 0);
+      assert(winds_twice || (kept.report.message.find("singularity of index 3/4") != std::string::npos &&
+                             kept.report.message.find("onto one integer point") == std::string::npos));
       ++quarter_cones;
       continue;
     }
@@ -1120,7 +1211,7 @@ static void test_shared_data()
   }
   std::cout << "quad: shared data: " << extracted << " quad meshes checked (" << recharted_maps << " of them the same, bit for "
             << "bit, with 8 face rings re-charted), " << folded << " maps with fold-overs refused, " << quarter_cones
-            << " with a cone of 90 degrees refused\n";
+            << " with a cone of 90 degrees split (refused without split_valence_one_cones)\n";
   assert(extracted >= 3);
 }
 
@@ -1305,6 +1396,7 @@ int main(int argc, char** argv)
   test_refusals();
   test_patch_refusals();
   test_branch_points();
+  test_valence_one_cones();
   if(!sanitizer_subset()) test_bear_orbifold();
   if(!sanitizer_subset()) test_cut_invariance();
   test_shared_data();

@@ -52,7 +52,7 @@ struct Quad_mesh_report
 
   /// \name The quad mesh
   /// @{
-  std::size_t quads = 0;                       ///< faces of the quad mesh: its complete cells
+  std::size_t quads = 0;                       ///< faces of the quad mesh: its complete cells (the 2 x 2 cells at a split cone one quad)
   std::size_t quad_vertices = 0;               ///< vertices: the integer points of the map that are corners of complete cells
   std::size_t quad_edges = 0;                  ///< edges: unit segments of integer isolines
   std::size_t border_edges = 0;                ///< edges with one quad
@@ -64,6 +64,7 @@ struct Quad_mesh_report
   std::size_t irregular_vertices = 0;          ///< interior quad vertices whose valence is not 4
   std::vector<std::size_t> valence_histogram;  ///< entry `d`: the quad vertices with `d` edges (border vertices included)
   std::size_t incomplete_cells = 0;            ///< cells cut by a border that is not on an integer isoline: dropped, not in the mesh
+  std::vector<std::size_t> split_cones;        ///< the cones of valence 1 (90 degrees; vertices of the map, in the order of `vertices(tm)`) whose 2 x 2 cells became one quad (`split_valence_one_cones`): each is no quad vertex, and three corners of that quad have valence 3 for it
   /// @}
 
   /// \name Times (wall clock, ms)
@@ -74,7 +75,8 @@ struct Quad_mesh_report
   double total_ms = 0;      ///< everything, writing the output included
   /// @}
 
-  /// the quad mesh covers the whole map: `SUCCESS` and no cell dropped; then `quads` equals `uv_area`
+  /// the quad mesh covers the whole map: `SUCCESS` and no cell dropped; then `quads` equals `uv_area` (less 3 per entry
+  /// of `split_cones`)
   bool covers_map() const { return status == SUCCESS && incomplete_cells == 0; }
 
   /// returns the report as one JSON object (`uv_area` as a string "p/q", or "p" when it is an integer)
@@ -108,6 +110,7 @@ struct Quad_mesh_report
     num("euler_characteristic", euler_characteristic); num("irregular_vertices", double(irregular_vertices));
     list("valence_histogram", valence_histogram);
     num("incomplete_cells", double(incomplete_cells));
+    list("split_cones", split_cones);
     o << "  \"covers_map\": " << (covers_map() ? "true" : "false") << ",\n";
     num("check_ms", check_ms); num("cells_ms", cells_ms); num("mesh_ms", mesh_ms);
     o << "  \"total_ms\": " << IO::internal::json_number(total_ms) << "\n}\n";

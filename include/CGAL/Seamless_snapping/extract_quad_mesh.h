@@ -77,9 +77,15 @@ struct Quad_vertex_origin
  *   point of the quad mesh, in `Quad_valences::border`);
  * - every vertex inside the quad mesh (not in `Quad_valences::border`) whose quad valence (`quad_valences()`) is not 4
  *   must lie on an integer point (the cones of
- *   the field do in an integer-grid map; a vertex with an angle sum of 8 quarter turns might not), and no cone may
- *   have valence 1 (a 90-degree cone: the cell at it would have two sides glued into one edge, which no polygon mesh
- *   has), else `INVALID_INPUT`;
+ *   the field do in an integer-grid map; a vertex with an angle sum of 8 quarter turns might not), else
+ *   `INVALID_INPUT`. A cone of valence 1 (90 degrees, a singularity of index 3/4 of the field, e.g. in Directional's
+ *   maps) has no cell: the one at it would have two sides glued into one edge, which no polygon mesh has. With
+ *   `split_valence_one_cones` (the default) its 2 x 2 cells (the cone at one corner, seven integer points of the surface)
+ *   become one quad: the cone is no quad vertex, the three corners of that quad next to the glued sides lose one edge
+ *   each (valence 3 where they had 4: the cone's index carried by three vertices of index 1/4), and the mesh around it
+ *   is unchanged; `Quad_mesh_report::split_cones` lists such cones. A cone whose 2 x 2 cells are not that (another
+ *   cone, the border or a dropped cell within two cells of it; a larger `grid_scale` helps), or any cone of valence 1
+ *   without `split_valence_one_cones`, gives `INVALID_INPUT`;
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
  *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
  *   `grid_scale`; UVs beyond `2^30` grid units or more than `max_grid_cells` cells in the faces' UV bounding boxes
@@ -92,7 +98,9 @@ struct Quad_vertex_origin
  * gives a closed mesh; every quad vertex of the map's interior has the valence that `quad_valences()` gives its
  * point (4 away from the mesh vertices), so the irregular vertices are exactly the cones, of valence 4 minus their
  * index in quarter turns; and if no cell was dropped (`Quad_mesh_report::covers_map()`), the number of quads equals the
- * exact UV area of the map in grid units and `V - E + F` equals that of `tm`.
+ * exact UV area of the map in grid units and `V - E + F` equals that of `tm`. Where cones of valence 1 were split,
+ * the three corners of each merged quad next to the glued sides have one edge fewer than `quad_valences()` gives
+ * their point, and the quads are 3 fewer per split cone than the UV area (every other quad is one unit cell).
  *
  * Border: a cell cut by a border edge that does not lie on an integer isoline is incomplete; it is dropped (not in
  * the mesh) and counted in `Quad_mesh_report::incomplete_cells`, with the status still `SUCCESS`: the quad mesh then
@@ -135,6 +143,14 @@ struct Quad_vertex_origin
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{`default_max_grid_cells` (`2^24`: 16.8M cells, about 5 GB at most)}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::max_grid_cells()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{split_valence_one_cones}
+ *     \cgalParamDescription{if `true`, the 2 x 2 cells at each cone of valence 1 (90 degrees) become one quad whose three
+ *                           corners next to the cone have valence 3 (see above); if `false`, such a cone gives
+ *                           `INVALID_INPUT` and every quad is a unit cell}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::split_valence_one_cones()`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
@@ -189,6 +205,7 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   const double grid_scale = choose_parameter(get_parameter(np_in, snap_np::grid_scale), 1.);
   const std::size_t max_grid_cells = choose_parameter(get_parameter(np_in, snap_np::max_grid_cells),
                                                       default_max_grid_cells);
+  const bool split_ones = choose_parameter(get_parameter(np_in, snap_np::split_valence_one_cones), true);
   // output: vertex point map, origins
   typedef typename CGAL::GetVertexPointMap<QuadMesh, NamedParameters_out>::type VPM_out;
   VPM_out vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
@@ -205,8 +222,8 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   Face_origin_map face_origin_map = choose_parameter<Face_origin_map>(get_parameter(np_out, snap_np::face_origin_map));
 
   const bool covered_faces = !CGAL::parameters::is_default_parameter<NamedParameters_out, snap_np::face_origin_map_t>::value;
-  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, max_grid_cells, qm, vpm_out, origin_map,
-                                                face_origin_map, covered_faces);
+  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, max_grid_cells, split_ones, qm, vpm_out,
+                                                origin_map, face_origin_map, covered_faces);
 }
 
 } // namespace Seamless_snapping

@@ -64,7 +64,9 @@ struct Quad_valences
  * border point of the quad mesh (in `border`, its valence that of a border fan); one with two corners at one UV point
  * is refused too.
  * So is a vertex inside the quad mesh of valence 1 (an angle sum of 90 degrees: a cone of the map's own, or a cone of 5 quarter
- * turns that the map winds back to 1): no quad mesh has it. `extract_quad_mesh()` refuses the same maps.
+ * turns that the map winds back to 1): no quad mesh has it as a vertex (`extract_quad_mesh()` makes the 2 x 2 cells at such
+ * a cone one quad with `split_valence_one_cones`, the default, where nothing else lies in them, else refuses the map; a
+ * VVAL file has no valence for it either way).
  *
  * \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`, triangles only
  * \tparam HalfedgeUVMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%halfedge_descriptor`
@@ -110,7 +112,7 @@ Quad_valences quad_valences(const TriangleMesh& tm, HalfedgeUVMap uv)
       r.status = INVALID_INPUT;
       r.message = "vertex " + std::to_string(v) + " has a UV angle sum of 1 quarter turn (a cone of valence 1): the quad "
                   "there would have its two sides at the cone on one edge, a corner twice; no quad mesh has it "
-                  "(extract_quad_mesh() refuses it too)";
+                  "(extract_quad_mesh() makes the 2 x 2 cells at such a cone one quad, or refuses it)";
       const int w = internal::vertex_winding_twice(cm, q.valence);
       if(w >= 0)
         r.message += "; vertex " + std::to_string(w) + " has " + std::to_string(q.valence[std::size_t(w)]) +

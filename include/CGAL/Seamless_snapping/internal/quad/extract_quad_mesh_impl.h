@@ -106,7 +106,7 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
 template <class TriangleMesh, class HalfedgeUVMap, class VPM_in, class QuadMesh, class VPM_out, class Origin_map,
           class Face_origin_map>
 Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv, VPM_in vpm_in, double grid_scale,
-                                        std::size_t max_grid_cells, QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
+                                        std::size_t max_grid_cells, bool split_ones, QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
                                         Face_origin_map face_origin_map, bool covered_faces)
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -122,7 +122,7 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
   if(report.status == SUCCESS) {
     std::vector<typename boost::property_traits<VPM_in>::value_type> points;
     for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
-    report.status = extract_quads(scale_exponent, max_grid_cells, points, x, report);
+    report.status = extract_quads(scale_exponent, max_grid_cells, split_ones, points, x, report);
   }
   if(report.status != SUCCESS) { report.total_ms = ms_since(t0); return report; }
 
@@ -131,9 +131,13 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
                    std::to_string(report.irregular_vertices) + " irregular, " + std::to_string(report.cones) +
                    " cones in the map), Euler characteristic " + std::to_string(report.euler_characteristic) + ", " +
                    std::to_string(report.boundary_loops) + " boundary loops; " +
-                   (report.incomplete_cells == 0 ? std::string("the quads cover the map (as many as its UV area)")
+                   (report.incomplete_cells == 0 ? std::string("the quads cover the map (as many as its UV area") +
+                                                   (report.split_cones.empty() ? ")" : " less 3 per split cone)")
                                                  : std::to_string(report.incomplete_cells) + " cells cut by the border "
-                                                   "(not on integer isolines) were dropped");
+                                                   "(not on integer isolines) were dropped") +
+                   (report.split_cones.empty() ? std::string() : "; " + std::to_string(report.split_cones.size()) +
+                    " cone(s) of valence 1 (90 degrees) split: the 2 x 2 cells at each made one quad, three of whose "
+                    "corners have valence 3 for it");
   report.total_ms = ms_since(t0);
   return report;
 }

@@ -15,9 +15,10 @@
 //      of every cut edge), no fold-overs, no zero-area triangles but collinear ones with three distinct
 //      corners (collapsed onto their long side: collapsed_faces.h), the UVs in grid units (multiplied by the
 //      grid scale, exactly) and within 2^30, every vertex whose quad valence is not 4 (quad_valences(): a
-//      cone) on an integer point and not of valence 1; the map's Euler characteristic, border loops and
+//      cone) on an integer point, and not of valence 1 unless such cones are split (valence_one_cones.h); the map's Euler characteristic, border loops and
 //      exact UV area, for the verification;
-//   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h);
+//   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h); the
+//      2 x 2 cells at each cone of valence 1 made one quad where asked (valence_one_cones.h);
 //   3. the quad mesh: 3D positions (barycentric coordinates of each integer point, in double), the cells
 //      added face by face as Euler::add_face() adds them (on index arrays, internal/mesh/halfedge_arrays.h:
 //      a face with a corner twice or an edge already taken in its direction is refused), then copied onto a
@@ -31,6 +32,7 @@
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
 #include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_mesh_checks.h>
+#include <CGAL/Seamless_snapping/internal/quad/valence_one_cones.h>
 #include <CGAL/Seamless_snapping/internal/surface/cone_merging.h>
 #include <CGAL/Seamless_snapping/internal/surface/corner_mesh.h>
 #include <CGAL/Seamless_snapping/internal/surface/fold_overs.h>
@@ -59,6 +61,7 @@ struct Quad_extraction
 {
   Corner_mesh cm;                                  // the map, UVs in grid units
   Quad_cells cells;
+  Cone_splits splits;                              // the cones of valence 1 whose 2 x 2 cells became one quad
   std::vector<std::array<double, 3> > positions;   // per quad vertex
   Quad_surface mesh;                               // the verified quad mesh (vertices cells.points, faces cells.quads)
 };
@@ -147,17 +150,17 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
 
 // Every vertex inside the quad mesh (not `on_border`, quad_valences()) of quad valence other than 4 must lie on an
 // integer point (a field cone does in an IGM; a vertex of 8 quarter turns need not) and must not be of valence 1 (its
-// cell would have a corner twice). Where such a vertex lies next to a collapsed cone pair, the message says so; a cone
+// cell would have a corner twice) unless `split_ones` (valence_one_cones.h splits it after the cells are made). Where such a vertex lies next to a collapsed cone pair, the message says so; a cone
 // of valence 1 in a map where no vertex winds twice is most likely the map's own singularity, and the message says
 // that instead.
 inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<char>& on_border,
-                          const std::vector<int>& edge_k, std::string& message)
+                          const std::vector<int>& edge_k, bool split_ones, std::string& message)
 {
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h], q = valence[std::size_t(v)];
     if(cm.is_border_halfedge(h) || on_border[std::size_t(v)] || q == 4) continue;
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
-    if(on_integer && q != 1) continue;
+    if(on_integer && (q != 1 || split_ones)) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
     if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
     else {
@@ -175,8 +178,8 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
 }
 
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
-inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<int>& edge_k, Map_facts& facts,
-                               std::vector<int>& collinear, Quad_mesh_report& r)
+inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, bool split_ones, std::vector<int>& edge_k,
+                               Map_facts& facts, std::vector<int>& collinear, Quad_mesh_report& r)
 {
   r.faces = std::size_t(cm.n_faces);
   std::string why;
@@ -214,7 +217,7 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, std::vector<
   r.input_boundary_loops = facts.boundary_loops;
   r.cones = facts.cones;
   r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
-  return check_cones(cm, facts.valence, facts.on_border, edge_k, r.message);
+  return check_cones(cm, facts.valence, facts.on_border, edge_k, split_ones, r.message);
 }
 
 // The 3D point of an integer point p: the combination of the vertices of its edge or face with the
@@ -260,16 +263,17 @@ std::array<double, 3> integer_point_position(const Corner_mesh& cm, const Intege
   return r;
 }
 
-// Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm.
+// Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm. `split_ones`: the
+// cones of valence 1 are split (valence_one_cones.h), else refused.
 template <class Point3>
-Status extract_quads(int scale_exponent, std::size_t max_grid_cells, const std::vector<Point3>& vertex_point,
+Status extract_quads(int scale_exponent, std::size_t max_grid_cells, bool split_ones, const std::vector<Point3>& vertex_point,
                      Quad_extraction& out, Quad_mesh_report& r)
 {
   auto t0 = std::chrono::steady_clock::now();
   Corner_mesh& cm = out.cm;
   Map_facts facts;
   std::vector<int> edge_k, collinear;
-  Status s = check_quad_input(cm, scale_exponent, edge_k, facts, collinear, r);
+  Status s = check_quad_input(cm, scale_exponent, split_ones, edge_k, facts, collinear, r);
   r.check_ms = ms_since(t0);
   if(s != SUCCESS) return s;
 
@@ -282,6 +286,16 @@ Status extract_quads(int scale_exponent, std::size_t max_grid_cells, const std::
     Cell_pieces pieces;                              // freed before the mesh is built (the peak memory: see below)
     s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, max_grid_cells, pieces, r.message);
     if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, out.cells, r.message);
+  }
+  if(s == SUCCESS) {
+    std::vector<int> ones;                           // the quad vertices at cones of valence 1 (only with split_ones)
+    for(std::size_t i = 0; i < out.cells.points.size(); ++i) {
+      const Integer_point& p = out.cells.points[i];
+      if(p.kind == AT_VERTEX && !facts.on_border[std::size_t(p.element)] && facts.valence[std::size_t(p.element)] == 1)
+        ones.push_back(int(i));
+    }
+    s = split_valence_one_cones(out.cells, ones, out.splits, r.message);
+    r.split_cones.assign(out.splits.cones.begin(), out.splits.cones.end());
   }
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
@@ -328,7 +342,7 @@ Status extract_quads(int scale_exponent, std::size_t max_grid_cells, const std::
     r.mesh_ms = ms_since(t0);
     return INVALID_INPUT;
   }
-  const bool verified = verify_quad_guarantees(m, cells, facts, r, r.message);
+  const bool verified = verify_quad_guarantees(m, cells, facts, out.splits, r, r.message);
   r.mesh_ms = ms_since(t0);
   return verified ? SUCCESS : EXACTNESS_CHECK_FAILED;
 }

@@ -19,10 +19,13 @@
 //   says, exactly: all quads, manifold, closed if the map is closed; if no cell was dropped, as many quads
 //   as the map's exact UV area and the map's Euler characteristic; every quad vertex of the valence the
 //   map gives it (quad_valences(): a mesh vertex its integer-direction count, a point of an edge or of a
-//   face 4, a point of a border edge 3), so that the irregular vertices are exactly the cones.
+//   face 4, a point of a border edge 3), so that the irregular vertices are exactly the cones. A cone of valence 1
+//   split (valence_one_cones.h) is no quad vertex; its 2 x 2 cells are one quad (3 quads fewer than the UV area) and
+//   three of their corners have one edge fewer than the map gives them (three irregular vertices for the cone).
 
 #include <CGAL/Seamless_snapping/Quad_mesh_report.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
+#include <CGAL/Seamless_snapping/internal/quad/valence_one_cones.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
@@ -111,7 +114,7 @@ inline void measure_quad_mesh(const Quad_surface& m, Quad_mesh_report& r)
 
 // Precondition: the vertices of m are cells.points in order, and r holds measure_quad_mesh(m).
 inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cells, const Map_facts& map,
-                                   const Quad_mesh_report& r, std::string& message)
+                                   const Cone_splits& splits, const Quad_mesh_report& r, std::string& message)
 {
   auto fail = [&](const std::string& what) { message = "internal error: the quad mesh " + what; return false; };
   for(Quad_surface::Face_index f : m.faces())
@@ -120,28 +123,32 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
   if(map.boundary_loops == 0 && r.border_edges > 0)
     return fail("of a closed map has " + std::to_string(r.border_edges) + " border edges");
   const bool covers = cells.incomplete == 0;
-  if(covers && CGAL::Mpzf(double(2 * r.quads)) != map.twice_area)
-    return fail("has " + std::to_string(r.quads) + " quads, but the UV area of the map is " +
+  const std::size_t split = splits.cones.size();
+  if(covers && CGAL::Mpzf(double(2 * (r.quads + 3 * split))) != map.twice_area)
+    return fail("has " + std::to_string(r.quads) + " quads" + (split > 0 ? " (and " + std::to_string(split) +
+                " cones of valence 1 split, 3 cells fewer each)" : std::string()) + ", but the UV area of the map is " +
                 std::to_string(CGAL::to_double(map.twice_area) / 2) + " grid units");
   if(covers && r.euler_characteristic != map.euler_characteristic)
     return fail("has the Euler characteristic " + std::to_string(r.euler_characteristic) + ", the map " +
                 std::to_string(map.euler_characteristic));
-  std::size_t cones_met = 0;
+  std::size_t irregular = 0, cones_met = 0;
   for(Quad_surface::Vertex_index v : m.vertices()) {
     const Integer_point& p = cells.points[std::size_t(v)];
     const bool border = m.is_border(v);
     if(border && !covers) continue;                  // next to dropped cells: fewer edges
-    int expected = p.kind == AT_VERTEX ? map.valence[std::size_t(p.element)] : (border ? 3 : 4);
+    const int expected = (p.kind == AT_VERTEX ? map.valence[std::size_t(p.element)] : (border ? 3 : 4)) +
+                         splits.valence_change[std::size_t(v)];
     if(int(m.degree(v)) != expected)
       return fail("has a vertex of valence " + std::to_string(m.degree(v)) + " where the map has " +
                   std::to_string(expected) + " integer directions (" +
                   (p.kind == AT_VERTEX ? "mesh vertex " : p.kind == ON_EDGE ? "on edge " : "in face ") +
                   std::to_string(p.element) + ")");
-    cones_met += !border && p.kind == AT_VERTEX && expected != 4 ? 1 : 0;
+    irregular += !border && expected != 4 ? 1 : 0;
+    cones_met += !border && p.kind == AT_VERTEX && map.valence[std::size_t(p.element)] != 4 ? 1 : 0;
   }
-  if(covers && (cones_met != map.cones || r.irregular_vertices != map.cones))
+  if(covers && (cones_met + split != map.cones || r.irregular_vertices != irregular))
     return fail("has " + std::to_string(r.irregular_vertices) + " irregular vertices for the " + std::to_string(map.cones) +
-                " cones of the map");
+                " cones of the map" + (split > 0 ? " (" + std::to_string(split) + " of them of valence 1, split)" : std::string()));
   return true;
 }
 

@@ -1,0 +1,165 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_VALENCE_ONE_CONES_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_VALENCE_ONE_CONES_H
+
+// A cone of 90 degrees (quad valence 1, a singularity of index 3/4 of the field, e.g. in Directional's maps) has no
+// quad mesh of unit cells: its cell F is a quad whose two sides at the cone p are one edge, so its corner a next to p
+// comes twice, F = (p, a, b, a), and F shares two edges with b's other cells. Around p the grid is a quarter plane with
+// its two sides glued: in the chart where p = (0, 0) and the sides are the u and v axes, a = (1, 0) ~ (0, 1),
+// c = (2, 0) ~ (0, 2), b = (1, 1), d = (2, 1), e = (1, 2), g = (2, 2), and the four cells of [0, 2]^2 are
+//   F = (p, a, b, a),  A = (a, c, d, b),  B = (a, b, e, c),  C = (b, d, g, e),
+// a disk whose border is the loop c, d, g, e (its sides on the axes are glued). split_valence_one_cones() replaces
+// them by the one quad (c, d, g, e): p, a and b and their six edges go, the border of the disk stays, so the mesh
+// around it is untouched, V - E + F is kept (-3 + 6 - 3), and c, d and e lose one edge each: the cone's index 3/4 is
+// carried by three vertices of index 1/4 (valence 3 where they had 4). The quads are then no longer the unit cells
+// there (three cells fewer than the UV area), which the verification accounts for (quad_mesh_checks.h).
+// The replacement needs exactly that neighbourhood: a and b of valence 4 with no other cells, and c, d, e, g four
+// other points; else (another cone, the border or a dropped cell within two cells of p) the cone is refused, with
+// the reason.
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+struct Cone_splits
+{
+  std::vector<int> cones;              // the mesh vertices (Corner_mesh numbering) of the split cones
+  std::vector<int> valence_change;     // per quad vertex (after the split): -1 at c, d and e of a split, else 0
+};
+
+// q rotated so that its corner i comes first
+inline std::array<int, 4> starting_at(const std::array<int, 4>& q, int i)
+{
+  return {{q[std::size_t(i)], q[std::size_t((i + 1) % 4)], q[std::size_t((i + 2) % 4)], q[std::size_t((i + 3) % 4)]}};
+}
+
+// Splits the cells at the quad vertices `cones` (points of valence-1 cones, see the header) in `cells`; the
+// points and quads that go are removed, the others keep their order. Returns INVALID_INPUT, naming the first cone
+// whose neighbourhood is not the 2 x 2 cells, with `cells` unchanged.
+inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>& cones, Cone_splits& out,
+                                      std::string& message)
+{
+  out.cones.clear();
+  out.valence_change.assign(cells.points.size(), 0);
+  if(cones.empty()) return SUCCESS;
+  Index_lists quads_of;                                   // point -> its quads (once per corner)
+  quads_of.build(int(cells.points.size()), [&](auto emit) {
+    for(std::size_t q = 0; q < cells.quads.size(); ++q)
+      for(int p : cells.quads[q]) emit(p, int(q));
+  });
+  // the quad other than `not_q` with the directed side from -> to, rotated to start at `from`; {-1} if none
+  auto with_side = [&](int from, int to, int not_q, int& found) {
+    found = -1;
+    for(int q : quads_of[from]) {
+      if(q == not_q) continue;
+      for(int i = 0; i < 4; ++i)
+        if(cells.quads[std::size_t(q)][std::size_t(i)] == from && cells.quads[std::size_t(q)][std::size_t((i + 1) % 4)] == to) {
+          found = q;
+          return starting_at(cells.quads[std::size_t(q)], i);
+        }
+    }
+    return std::array<int, 4>{{-1, -1, -1, -1}};
+  };
+  std::vector<char> quad_gone(cells.quads.size(), 0), point_gone(cells.points.size(), 0);
+  std::vector<std::array<int, 4> > merged;                // per split: (c, d, g, e)
+  std::vector<std::array<int, 4> > merged_from;           // per split: F, A, B, C
+  for(int p : cones) {
+    const Integer_point& cone = cells.points[std::size_t(p)];
+    auto refuse = [&](const std::string& why) {
+      message = "vertex " + std::to_string(cone.element) + " is a cone of valence 1 (an angle sum of 1 quarter turn): "
+                "its cell would be a quad whose two sides at the cone are one edge, a corner twice, and it cannot be "
+                "replaced with its 2 x 2 cells by one quad: " + why + "; a larger grid_scale makes the cells smaller";
+      return INVALID_INPUT;
+    };
+    const auto fq = quads_of[p];
+    if(fq.size() != 1) return refuse("it is a corner of " + std::to_string(fq.size()) + " cells, not of 1");
+    const int f = *fq.begin();
+    int i = 0;
+    while(cells.quads[std::size_t(f)][std::size_t(i)] != p) ++i;
+    const std::array<int, 4> F = starting_at(cells.quads[std::size_t(f)], i);
+    const int a = F[1], b = F[2];
+    if(F[3] != a) return refuse("its cell does not have the corner next to it twice");
+    int ia, ib, ic;
+    const std::array<int, 4> A = with_side(b, a, f, ia), B = with_side(a, b, f, ib);
+    if(ia < 0 || ib < 0) return refuse("a cell next to it is missing (the border or a dropped cell)");
+    const std::array<int, 4> Ar = starting_at(A, 1), Br = B;   // A = (a, c, d, b), B = (a, b, e, c)
+    const int c = Ar[1], d = Ar[2], e = Br[2];
+    if(Br[3] != c) return refuse("the cells next to it do not meet at one point");
+    const std::array<int, 4> C = with_side(b, d, -1, ic);      // C = (b, d, g, e)
+    if(ic < 0 || C[3] != e) return refuse("the cell across from it is missing or does not close the 2 x 2 cells");
+    const int g = C[2];
+    if(quads_of[a].size() != 4 || quads_of[b].size() != 4)
+      return refuse("the points next to it are corners of other cells too (another cone within two cells)");
+    std::array<int, 7> all = {{p, a, b, c, d, e, g}};
+    std::sort(all.begin(), all.end());
+    if(std::adjacent_find(all.begin(), all.end()) != all.end())
+      return refuse("the 2 x 2 cells around it do not have 7 distinct corners");
+    for(int q : {f, ia, ib, ic})
+      if(quad_gone[std::size_t(q)]) return refuse("its 2 x 2 cells overlap those of another cone of valence 1");
+    for(int q : {f, ia, ib, ic}) quad_gone[std::size_t(q)] = 1;
+    for(int q : {p, a, b}) point_gone[std::size_t(q)] = 1;
+    merged.push_back({{c, d, g, e}});
+    merged_from.push_back({{f, ia, ib, ic}});
+  }
+  // renumber: the points and quads that stay, in order, then the merged quads
+  std::vector<int> new_index(cells.points.size(), -1);
+  Quad_cells result;
+  result.incomplete = cells.incomplete;
+  result.first_incomplete_face = cells.first_incomplete_face;
+  for(std::size_t i = 0; i < cells.points.size(); ++i)
+    if(!point_gone[i]) { new_index[i] = int(result.points.size()); result.points.push_back(cells.points[i]); }
+  result.faces_first.assign(1, 0);
+  auto add_quad = [&](const std::array<int, 4>& q, const std::vector<int>& covered) {
+    result.quads.push_back({{new_index[std::size_t(q[0])], new_index[std::size_t(q[1])], new_index[std::size_t(q[2])],
+                             new_index[std::size_t(q[3])]}});
+    result.faces.insert(result.faces.end(), covered.begin(), covered.end());
+    result.faces_first.push_back(result.faces.size());
+  };
+  auto faces_of = [&](int q) {
+    return std::vector<int>(cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
+                            cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
+  };
+  for(std::size_t q = 0; q < cells.quads.size(); ++q)
+    if(!quad_gone[q]) add_quad(cells.quads[q], faces_of(int(q)));
+  out.valence_change.assign(result.points.size(), 0);
+  for(std::size_t s = 0; s < merged.size(); ++s) {
+    std::vector<int> covered;
+    for(int q : merged_from[s]) { const std::vector<int> fs = faces_of(q); covered.insert(covered.end(), fs.begin(), fs.end()); }
+    std::sort(covered.begin(), covered.end());
+    covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
+    add_quad(merged[s], covered);
+    for(int k : {0, 1, 3}) --out.valence_change[std::size_t(new_index[std::size_t(merged[s][std::size_t(k)])])];   // c, d, e
+  }
+  for(int p : cones) out.cones.push_back(cells.points[std::size_t(p)].element);
+  cells.points.swap(result.points);
+  cells.quads.swap(result.quads);
+  cells.faces.swap(result.faces);
+  cells.faces_first.swap(result.faces_first);
+  return SUCCESS;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_VALENCE_ONE_CONES_H
