@@ -259,7 +259,8 @@ unreadable, unreadable_report = os.path.join(work, "missing.obj"), os.path.join(
 rc, text = run(unreadable, os.path.join(work, "missing_out.obj"), "--report", unreadable_report)
 rep = json.load(open(unreadable_report)) if os.path.exists(unreadable_report) else {}
 check(rc == 1 and not os.path.exists(os.path.join(work, "missing_out.obj")) and rep.get("quad_mesh", 0) is None and
-      rep.get("snap", {}).get("status") == "INVALID_INPUT" and "cannot read input" in rep.get("snap", {}).get("message", ""),
+      rep.get("snap", {}).get("status") == "INVALID_INPUT" and "cannot read input" in rep.get("snap", {}).get("message", "") and
+      rep.get("output", 0) is None and "cannot read input" in rep.get("error", ""),   # "output" was OUT's name, no "error"
       "unreadable input: exit 1, the report written: %d %s %s" % (rc, text, rep))
 
 # a --layout file that cannot be written: OUT was written first, and the report said "output": null; now the layout

@@ -246,7 +246,7 @@ int main(int argc, char** argv)
       refused.status = SS::INVALID_INPUT;
       refused.message = why;
       const std::string saved = message;
-      if(!write_report(refused, "null", "null", "null")) fail(message);
+      if(!write_report(refused, "null", "null", "null", why)) fail(message);   // "output": null, "error": why
       message = saved;
     }
     return fail(why);
