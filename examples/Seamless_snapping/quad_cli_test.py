@@ -5,7 +5,9 @@ every quad a cell of its patch's grid whose corners, read from patch_corner, giv
 vertex, the report's patch sizes covering the quads; the --layout file: one polygon per patch, at the quad vertices'
 points, through its patch's four grid corners in order, V - E + F = 2), and from it as a cut
 mesh (welded automatically; refused with --no-weld); refusals with
-exit 1 and nothing written: the Square map (cones of 90 degrees: valence 1), a map with fold-overs kept by
+exit 1 and nothing written: the Square map at grid scale 1 (its cones of 90 degrees, valence 1, within two cells of
+each other; at grid scale 8 each cone's 2 x 2 cells are one quad, listed in the report's "split_cones", and
+--no-cone-split refuses them), a map with fold-overs kept by
 --no-untangle (FOLD_OVERS; untangled by default, it gives its quads),
 a grid scale that is not a power of two; command-line errors (exit 2). With the shared data directory (optional
 SHARED_DATA argument, skipped where it does not exist): libQEx's fandisk map, whose integer translations put a cone
@@ -161,6 +163,19 @@ for src, args, words, where in [(square, [], "valence 1", "quad_mesh"), (folds, 
     check(r[where]["status"] != "SUCCESS", "refused (%s): the report says so" % words)
     if words == "FOLD_OVERS":
         check(len(r["quad_mesh"]["fold_overs"]) > 0, "FOLD_OVERS: the report lists the fold-overs")
+
+# the Square map at grid scale 8: its two cones of 90 degrees split (3 quads fewer than the UV area each), a closed
+# quad mesh; with --no-cone-split refused, nothing written
+out = os.path.join(work, "square_quads.obj")
+rc, text = run(square, out, "--grid-scale", "8", "--report", report)
+q = json.load(open(report))["quad_mesh"]
+nv, faces = faces_of(out) if rc == 0 else (0, [])
+check(rc == 0 and len(q["split_cones"]) == 2 and len(faces) == q["quads"] and nv == q["quad_vertices"] and q["euler_characteristic"] == 2 and
+      q["quads"] + 6 == int(q["uv_area"]) and "2 of valence 1 split into 3 of valence 3" in text,
+      "Square map at grid scale 8: its two cones of 90 degrees split: %d %s" % (rc, text))
+os.remove(out)
+rc, text = run(square, out, "--grid-scale", "8", "--no-cone-split")
+check(rc == 1 and "(a cone of valence 1)" in text and not os.path.exists(out), "--no-cone-split: refused: %d %s" % (rc, text))
 
 # a grid scale that is not a power of two is a command-line error (exit 2, as a value that is not a number; it was
 # exit 1, refused by the snap), nothing written

@@ -1,7 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]
-//                 [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
+//                 [--no-cone-split] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -53,7 +53,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
+  "                     [--no-cone-split] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
@@ -64,14 +64,17 @@ static const char* help_text =
   "extracts its quad mesh: the vertices are the integer points of the map, the edges the unit segments\n"
   "of its integer isolines, the faces its unit cells, all decided exactly. The result is verified\n"
   "before it is written: every face a quad, manifold, closed if the input is, Euler characteristic and\n"
-  "number of quads (= the exact UV area) those of the map, irregular vertices exactly the cones.\n"
+  "number of quads (= the exact UV area) those of the map, irregular vertices exactly the cones. A cone\n"
+  "of 90 degrees (valence 1, e.g. in Directional's maps) has no cell of its own: its 2 x 2 cells are made\n"
+  "one quad, whose three corners next to the cone have valence 3 for it (split_valence_one_cones(true);\n"
+  "the quad mesh report's \"split_cones\" lists them, 3 quads fewer than the UV area each).\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
   "(scale it with --grid-scale, or --quantize it), a map left with fold-overs or zero-area UV triangles with two corners\n"
   "at one point (listed, with the reason the constraints force them in the snap report's \"folds\"; a\n"
   "zero-area triangle with three distinct collinear corners is collapsed onto its long side), a cone of\n"
-  "90 degrees (valence 1: no quad mesh has it), a grid too coarse for the surface (cells that wrap\n"
-  "around or share more than a side: use a larger --grid-scale).\n"
+  "90 degrees with another cone or the border within two cells (or any, with --no-cone-split), a grid\n"
+  "too coarse for the surface (cells that wrap around or share more than a side: use a larger --grid-scale).\n"
   "\n"
   "Options:\n"
   "  --weld               merge vertices with bit-identical positions first (cut meshes, e.g.\n"
@@ -95,6 +98,8 @@ static const char* help_text =
   "                       regular vertices (the map then folds around them and is refused; libQEx\n"
   "                       merges such pairs too), and other pairs on one point are not joined into one\n"
   "                       cone. The snap report lists the merged pairs\n"
+  "  --no-cone-split      refuse a cone of 90 degrees instead of making its 2 x 2 cells one quad (every\n"
+  "                       quad then a unit cell of the grid)\n"
   "  --layout FILE        also write the quad layout (quad_layout()): one polygon per patch, its vertices the\n"
   "                       quad vertices at patch corners (cones, border corners, T-junctions where a trace ends\n"
   "                       on another), its edges the arcs between them (the 'coarse mesh' of the patches);\n"
@@ -154,7 +159,7 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::string in, out, report_file, layout_file;
-  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false;
+  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false, split_cones = true;
   double grid_scale = 1;
   std::size_t max_grid_cells = SS::default_max_grid_cells;
   unsigned threads = 0;                 // 0: the machine's cores
@@ -166,6 +171,7 @@ int main(int argc, char** argv)
     else if(a == "--quiet") quiet = true;
     else if(a == "--no-untangle") untangle = false;
     else if(a == "--keep-cone-pairs") merge = false;
+    else if(a == "--no-cone-split") split_cones = false;
     else if(a == "--quantize") quantize = true;
     else if(a == "--grid-scale") {
       if(i + 1 >= argc || !SS::IO::internal::parse_grid_scale(argv[i + 1], grid_scale)) {
@@ -291,7 +297,8 @@ int main(int argc, char** argv)
   auto covered = quads.add_property_map<Mesh::Face_index, std::vector<Mesh::Face_index> >("f:covered").first;
   SS::Quad_mesh_report q;
   if(snap.status == SS::SUCCESS && SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale)))
-    q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale).max_grid_cells(max_grid_cells),
+    q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale).max_grid_cells(max_grid_cells)
+                                                .split_valence_one_cones(split_cones),
                               params::vertex_origin_map(origin).face_origin_map(covered));
   else if(snap.status == SS::SUCCESS)
     return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
@@ -344,10 +351,13 @@ int main(int argc, char** argv)
   }
   if(!quiet) {
     std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());
-    std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones)%s\n",
+    const std::string split = q.split_cones.empty() ? std::string()
+                            : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split into 3 of valence 3";
+    std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones%s)%s\n",
                 q.boundary_loops == 0 ? "closed" : (std::to_string(q.boundary_loops) + " boundary loops").c_str(),
-                q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones,
-                q.covers_map() ? ", as many quads as the exact UV area" : "");
+                q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones, split.c_str(),
+                !q.covers_map() ? "" : q.split_cones.empty() ? ", as many quads as the exact UV area"
+                                                             : ", as many quads as the exact UV area less 3 per split cone");
     std::printf("patches: %s\n", patches.message.c_str());
     if(!layout_file.empty()) std::printf("layout: %s\n", lay.message.c_str());
   }

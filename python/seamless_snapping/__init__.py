@@ -431,7 +431,8 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
     return d
 
 
-def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cells=None, raise_on_failure=True):
+def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cells=None, split_valence_one_cones=True,
+                      raise_on_failure=True):
     """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
     snap(..., integer_grid_map=True)): its vertices are the integer points of the map (UV times `grid_scale`, a
     power of 2), its edges the unit segments of the integer isolines, its faces the unit cells, all decided exactly.
@@ -452,8 +453,13 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
               (i, j) (QF[q, (k + 1) % 4] is at (i + 1, j), and so on counter-clockwise);
       "patches": a dict ("status", "patches", "rectangles", "all_rectangles", "nodes", "motorcycles", "sizes"
               ([width, height] per patch), ...).
+    A cone of 90 degrees (valence 1, a singularity of index 3/4, e.g. in Directional's maps) has no cell: with
+    split_valence_one_cones=True its 2 x 2 cells are made one quad, three of whose corners have valence 3 for it (the
+    cone is no quad vertex; report["split_cones"]: the rows of V of such cones; the quads are 3 fewer than the UV area
+    per split cone).
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
-    integer-grid map, a cone of valence 1, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
+    integer-grid map, a cone of valence 1 with another cone or the border within two cells, or any with
+    split_valence_one_cones=False, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
     zero-area UV triangles with two corners at one point, listed in report["fold_overs"] and
     report["zero_area_faces"]; report["advice"] says to untangle first where that can remove them), "RANGE_EXCEEDED". A zero-area UV triangle with three distinct (collinear) corners is
     collapsed onto its long side (listed in report["zero_area_faces"] on success too).
@@ -465,7 +471,8 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
     if not 0 <= n < 2**64:
         raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
-    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale), n)
+    QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale), n,
+                                                    bool(split_valence_one_cones))
     report = json.loads(text)
     report.update(origins)
     if "patches" in report:

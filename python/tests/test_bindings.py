@@ -890,6 +890,53 @@ def test_extract_quad_mesh_generated():
     assert len(QF) == 256 and r["boundary_loops"] == 1
 
 
+def quarter_plane_cone(n):
+    """The quarter plane [0, n]^2 with its sides glued ((t, 0) ~ (0, t): cut edges with a quarter turn): a cone of 90
+    degrees (valence 1) at (0, 0), row 0 of V; triangles of half a unit, a fan of 4 around the cone. 3D on a paper cone."""
+    rows, V, UV, F, FUV = {}, [], [], [], []
+    def vertex(i, j):
+        key = (j, 0) if i == 0 and j > 0 else (i, j)
+        if key not in rows:
+            r, t = np.hypot(*key) / 2, np.arctan2(key[1], key[0])
+            rows[key] = len(V)
+            V.append([r / 4 * np.cos(4 * t), r / 4 * np.sin(4 * t), r * np.sqrt(15.0) / 4])
+        return rows[key]
+    def triangle(*corners):
+        F.append([vertex(i, j) for i, j in corners])
+        FUV.append(list(range(len(UV), len(UV) + 3)))
+        UV.extend([[i / 2, j / 2] for i, j in corners])
+    ring = [(2, 0), (2, 1), (2, 2), (1, 2), (0, 2)]
+    for k in range(4):
+        triangle((0, 0), ring[k], ring[k + 1])
+    for i in range(2 * n):
+        for j in range(2 * n):
+            if i >= 2 or j >= 2:
+                triangle((i, j), (i + 1, j), (i + 1, j + 1))
+                triangle((i, j), (i + 1, j + 1), (i, j + 1))
+    return np.array(V), np.array(F), np.array(UV), np.array(FUV)
+
+
+def test_extract_quad_mesh_splits_a_cone_of_90_degrees():
+    V, F, UV, FUV = quarter_plane_cone(3)
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV)
+    UV_before = UV.copy()
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
+    # 9 cells, the 4 at the cone one quad; 16 integer points less 3 glued and the cone and its two neighbours
+    assert len(QF) == 6 and len(QV) == 10 and list(r["split_cones"]) == [0] and r["euler_characteristic"] == 1
+    assert 0 not in r["QV_vertex"]                          # the cone is no quad vertex
+    sides = [tuple(sorted((a, b))) for q in QF for a, b in zip(q, np.roll(q, -1))]
+    uses = {e: sides.count(e) for e in sides}               # 1 on the border, 2 inside
+    degree = np.bincount([v for e in uses for v in e], minlength=len(QV))
+    border = {v for e, k in uses.items() if k == 1 for v in e}
+    assert sorted(degree[v] for v in range(len(QV)) if v not in border) == [3, 3, 3, 4] and r["irregular_vertices"] == 3
+    assert Fraction(r["uv_area"]) == 9 and r["quads"] == 9 - 3 and r["covers_map"]
+    assert r["patches"]["all_rectangles"]
+    with pytest.raises(ss.SnapError) as e:                  # refused without the split, the arrays untouched
+        ss.extract_quad_mesh(V, F, UV, FUV, split_valence_one_cones=False)
+    assert e.value.report["status"] == "INVALID_INPUT" and "(a cone of valence 1)" in e.value.report["message"]
+    assert np.array_equal(UV, UV_before)
+
+
 def test_extract_quad_mesh_refusals():
     V, F, UV, FUV = flat_torus(n=4, noise=1e-10)          # not exactly seamless
     with pytest.raises(ss.SnapError) as e:
