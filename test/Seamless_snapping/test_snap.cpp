@@ -17,6 +17,8 @@
 //   snap: failing inputs                   NaN UV, empty mesh, Triangle orbifold: status, map bit-identical
 //   snap: node system vs exact optimum     CGAL QP solver (Gmpzf) on the node system of small real meshes
 //   flip repair: synthetic                 a sliver next to a cut that snapping inverts is repaired, still exact
+//   flip repair: scale covariance          generated grids with slivers along a cut that snapping flips: UVs times
+//                                          2^j with grid_scale 2^-j snap and repair to the scaled result, bit for bit
 //   flip repair: data meshes               negative / degenerate triangles: input, after snap, after repair, introduced
 //                                          and left (measured = reported), both modes; exact, no triangle worse, no
 //                                          new negative one, every new degenerate one proven forced
@@ -41,6 +43,7 @@
 #include <CGAL/Seamless_snapping/is_exactly_seamless.h>
 #include <CGAL/Seamless_snapping/IO/OBJ.h>
 #include <CGAL/Seamless_snapping/internal/inputs/orbifold_tutte_input.h>
+#include <CGAL/Seamless_snapping/internal/surface/uv_area.h>
 
 #include <CGAL/Gmpq.h>
 
@@ -873,6 +876,73 @@ static void test_flip_repair_synthetic()
               r1.flips_before, r1.flips_after, r1.flips_after_repair, r1.repair_moves, r1.max_change, r0.max_change);
 }
 
+// flip repair: scale covariance. A group move puts a vertex into the kernel of its fan, built from the exact face
+// orientations converted to doubles (flip_repair.h); CGAL::Mpzf::to_double() rounds by 64-bit limbs, so the
+// orientations of a map and of the map times 2^j could convert 1 ulp apart (at grid scale 1 the UVs are normalized by
+// the power of two of their largest coordinate, at grid scale 2^-j by 2^j: the two runs see UVs 2^E apart), and the
+// vertex landed 1 ulp apart (found on libQEx's duck with a connection constraint: the 7 corners of one vertex). The
+// input, generated: an n x n grid cut along y = n/2 (k = 1, the faces above mapped by a quarter turn), its vertices
+// jittered by up to 0.3 cells, the rows next to the cut pushed 0.81-0.99 cells towards it (slivers), the cut corners
+// below it offset by up to 0.1 cells (the violation); snapping flips slivers and the repair moves free vertices into
+// their kernels. Before the fix, 3 of these 60 seeds snapped 1 ulp off the scaled result at every j below.
+static void test_flip_repair_scale_covariance()
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  const int n = 32, seeds = 60;
+  const int js[] = {1, -1, 3, -5, 40};
+  std::size_t moves = 0, differing = 0;
+  for(int seed = 1; seed <= seeds; ++seed) {
+    Mesh m;
+    const std::vector<vertex_descriptor> vs = triangulated_grid(m, n, false);
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));   // the raw stream only: the same input with every library
+    auto unit = [&]() { return std::ldexp(double(rng() >> 11), -52) - 1; };   // in [-1, 1)
+    std::vector<double> jx(vs.size()), jy(vs.size()), ox(vs.size()), oy(vs.size());
+    for(std::size_t i = 0; i < vs.size(); ++i) {
+      jx[i] = 0.3 * unit(); jy[i] = 0.3 * unit(); ox[i] = 0.1 * unit(); oy[i] = 0.1 * unit();
+    }
+    UV_map uv = uv_of(m);
+    for(halfedge_descriptor h : m.halfedges()) {
+      if(m.is_border(h)) continue;
+      const bool above = above_cut(m, h, n);
+      const std::size_t v = m.target(h).idx();
+      const int i = int(m.point(m.target(h)).x()), j = int(m.point(m.target(h)).y());
+      const bool side = i == 0 || i == n, end = j == 0 || j == n;
+      double x = double(i) / n, y = double(j) / n;
+      if(!side) x += jx[v] / n;                              // border vertices slide along the border
+      if(!end) y += jy[v] / n;
+      if(!side && !end && j == n / 2 - 1) y += (0.9 + 0.3 * jy[v]) / n;
+      if(!side && !end && j == n / 2 + 1) y -= (0.9 + 0.3 * jy[v]) / n;
+      if(!side && j == n / 2 && !above) { x += ox[v] / n; y += oy[v] / n; }
+      if(above) put(uv, h, Point_2(-y + 3.25, x + 0.5));   // R(x, y) + t
+      else      put(uv, h, Point_2(x, y));
+    }
+    Mesh m0 = m;
+    UV_map uv0 = uv_of(m0);
+    const SS::Snap_report r0 = SS::snap_seamless_parameterization(m0, uv0, SS::parameters::rotation_tolerance(30));
+    assert(r0.status == SS::SUCCESS);
+    moves += r0.repair_moves;
+    for(int j : js) {
+      Mesh mj = m;
+      UV_map uvj = uv_of(mj);
+      scale_uvs(mj, uvj, j);
+      const SS::Snap_report rj = SS::snap_seamless_parameterization(
+          mj, uvj, SS::parameters::rotation_tolerance(30).grid_scale(std::ldexp(1., -j)));
+      assert(rj.status == SS::SUCCESS && rj.repair_moves == r0.repair_moves);
+      std::size_t d = 0;
+      for(halfedge_descriptor h : mj.halfedges())
+        if(!mj.is_border(h) && (get(uvj, h).x() != std::ldexp(get(uv0, h).x(), j) ||
+                                get(uvj, h).y() != std::ldexp(get(uv0, h).y(), j)))
+          ++d;
+      if(d != 0) std::printf("  seed %d, j = %d: %zu corners are not the scaled result\n", seed, j, d);
+      differing += d;
+    }
+  }
+  assert(moves >= std::size_t(seeds));   // the repair acted (measured: 521 moves)
+  assert(differing == 0);
+  std::printf("flip repair: scale covariance: OK (%d generated maps, %zu repair moves, 2^j for %zu j each, bit for bit, "
+              "%.0f ms)\n", seeds, moves, sizeof js / sizeof js[0], ms_since(t0));
+}
+
 // UV orientation per face (exact predicate): -1, 0, 1
 static std::vector<int> face_signs(const Mesh& m, UV_map uv)
 {
@@ -1010,8 +1080,26 @@ static void test_exact_helpers()
     worst = (std::max)(worst, std::fabs(SI::atan2_within_3e_9(y, x) - std::atan2(y, x)));
   }
   assert(worst < 3e-9);
+  // nearest_double: the double nearest to an exact triangle orientation (Gmpq), and 2^(2e) times it for the triangle
+  // scaled by 2^e (CGAL::Mpzf::to_double() is neither: it rounds by 64-bit limbs; counted)
+  std::size_t limb_rounded = 0;
+  const int nearest_checks = sanitizer_subset() ? 2000 : 20000;
+  for(int i = 0; i < nearest_checks; ++i) {
+    double c[6];
+    for(double& t : c) t = std::ldexp(double(rng() >> 11), -52) - 1;
+    const CGAL::Mpzf z = SI::twice_triangle_uv_area(c[0], c[1], c[2], c[3], c[4], c[5]);
+    const double d = SI::nearest_double(z);
+    const CGAL::Gmpq q(z);
+    for(double o : {std::nextafter(d, 1.), std::nextafter(d, -1.)}) assert(CGAL::abs(q - CGAL::Gmpq(d)) <= CGAL::abs(q - CGAL::Gmpq(o)));
+    limb_rounded += z.to_double() != d ? 1 : 0;
+    const int e = int(rng() % 9) - 4;
+    double s[6];
+    for(int k = 0; k < 6; ++k) s[k] = std::ldexp(c[k], e);
+    assert(same(SI::nearest_double(SI::twice_triangle_uv_area(s[0], s[1], s[2], s[3], s[4], s[5])), std::ldexp(d, 2 * e)));
+  }
   std::printf("snap: exact helpers: ldexp/frexp bit for bit, Dyadic_sum = Gmpq on %zu of %zu sums (the rest do not fit), "
-              "atan2 within %.2g\n", fits, checked, worst);
+              "atan2 within %.2g, nearest_double = Gmpq nearest and scale covariant (Mpzf::to_double() differs on %zu of %d)\n",
+              fits, checked, worst, limb_rounded, nearest_checks);
 }
 
 int main(int argc, char** argv)
@@ -1032,6 +1120,7 @@ int main(int argc, char** argv)
   if(!sanitizer_subset()) test_orbifolds();
   if(!sanitizer_subset()) test_node_system_vs_qp();
   test_flip_repair_synthetic();
+  test_flip_repair_scale_covariance();
   test_flip_repair_data();
   std::printf("test_snap: all checks passed (%.1f s)\n", ms_since(t0) / 1000);
   return EXIT_SUCCESS;

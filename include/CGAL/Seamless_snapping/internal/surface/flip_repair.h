@@ -427,9 +427,11 @@ private:
       }
   }
 
+  // the exact orientation, rounded to the nearest double: Mpzf::to_double() rounds by the 64-bit limbs, 1 ulp apart
+  // for x and 2^j x (the half-planes of a kernel, and the move chosen in it, were then not scale covariant)
   static double exact_orient_to_double(double qx, double qy, double ax, double ay, double bx, double by)
   {
-    return twice_triangle_uv_area(qx, qy, ax, ay, bx, by).to_double();
+    return nearest_double(twice_triangle_uv_area(qx, qy, ax, ay, bx, by));
   }
 
   // Clips the convex polygon `poly` (2D) by g . t >= h.
