@@ -46,7 +46,10 @@
 //                               on its own: two rectangles) (every extracted mesh above and below gets its patches, their
 //                               independence of the numbering and its quad layout checked too)
 //   quad: branch points         a vertex of 8 quarter turns in one chart: on an integer point a vertex of valence 8
-//                               (8 quads around it), off the integer points refused (INVALID_INPUT)
+//                               (8 quads around it); inside a cell of a disk wound 2 or 3 times: the cell's 4m-gon
+//                               filled with 2m - 1 quads (4(m - 1) vertices of valence 5, the branch point no quad
+//                               vertex), refused without fill_branched_cells; on a grid line, or in a cell whose
+//                               neighbours the border cuts: refused (INVALID_INPUT)
 //   quad: bear orbifold         CGAL's bear, Orbifold Tutte Parallelogram map (4 cones of 180 degrees) snapped
 //                               with integer_grid_map(true) at grid scales 2, 4, 8: chi 2, 4 cones of valence 2,
 //                               scale covariance; the Square map (cones of 90 degrees): at grid scale 1 refused
@@ -193,18 +196,21 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   const Q area = uv_area(m, uv, S);
   assert(rep.uv_area == area);
   // cones of valence 1 split (valence_one_cones.h): each is no quad vertex, its 2 x 2 cells one quad, three corners of
-  // valence 3 for it; quad_valences() refuses such a map (no VERTEX gets a valence of 1), so the valences are
-  // checked by their count only
-  const std::size_t split = rep.split_cones.size();
+  // valence 3 for it; quad_valences() refuses such a map (no VERTEX gets a valence of 1); branch points filled
+  // (branched_cells.h): no quad vertex, its cell of area m 2m - 1 quads, the rungs' ends of valence 5. Where the map
+  // was repaired so, the valences are checked by their count only
+  const std::size_t split = rep.split_cones.size(), filled = rep.filled_branch_points.size();
+  const SS::Quad_valences qv = SS::quad_valences(m, uv);
+  long extra = 0;                                               // quads the fills add beyond the area: m - 1 each
+  for(std::size_t w : rep.filled_branch_points) extra += qv.status == SS::SUCCESS ? qv.valence[w] / 4 - 1 : 1;
   if(covers) {
-    assert(Q(int(q.number_of_faces() + 3 * split)) == area);     // as many quads as the exact UV area (3 fewer per split)
+    assert(Q(long(q.number_of_faces() + 3 * split) - extra) == area);   // the exact UV area (3 fewer per split, m - 1 more per fill)
     assert(euler(q) == euler(m));
     assert(!CGAL::is_closed(m) || CGAL::is_closed(q));
   } else {
     assert(Q(int(q.number_of_faces())) < area && !CGAL::is_closed(q));
   }
   // origins, valences, cones
-  const SS::Quad_valences qv = SS::quad_valences(m, uv);
   assert(qv.status == SS::SUCCESS || (split > 0 && qv.message.find("(a cone of valence 1)") != std::string::npos));
   std::size_t cones = split > 0 ? rep.cones : 0, irregular = 0, met_cones = 0;
   if(split == 0)
@@ -223,14 +229,16 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
     if(o.location == Origin::VERTEX) assert(++mesh_vertices[m.target(o.halfedge)] == 1);   // one quad vertex per mesh vertex
     if(o.location == Origin::VERTEX)
       for(std::size_t c : rep.split_cones) assert(std::size_t(m.target(o.halfedge)) != c);   // a split cone is none
-    if((border && !covers) || split > 0) continue;
+    if(o.location == Origin::VERTEX)
+      for(std::size_t w : rep.filled_branch_points) assert(std::size_t(m.target(o.halfedge)) != w);   // nor a branch point
+    if((border && !covers) || split + filled > 0) continue;
     const int expected = o.location == Origin::VERTEX ? qv.valence[std::size_t(m.target(o.halfedge))] : (border ? 3 : 4);
     if(d != expected) std::cerr << what << ": quad vertex " << v << " has valence " << d << ", expected " << expected << std::endl;
     assert(d == expected);
     met_cones += !border && o.location == Origin::VERTEX && expected != 4 ? 1 : 0;
   }
   assert(rep.irregular_vertices == irregular && rep.cones == cones);
-  if(covers && split == 0) assert(irregular == cones && met_cones == cones);   // the irregular vertices are exactly the cones
+  if(covers && split + filled == 0) assert(irregular == cones && met_cones == cones);   // the irregular vertices are exactly the cones
   // covered faces
   std::vector<char> covered(m.number_of_faces(), 0);
   for(face_descriptor f : q.faces()) {
@@ -254,7 +262,7 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
               covers ? "" : (", " + std::to_string(rep.incomplete_cells) + " cells dropped").c_str(), rep.total_ms,
               rep.check_ms, rep.cells_ms, rep.mesh_ms);
   const Patch_sizes sizes = check_quad_patches(q, what);
-  if(covers && split == 0) check_traced_layout(m, uv, S, q, what);   // the traced map has the cone of valence 1
+  if(covers && split + filled == 0) check_traced_layout(m, uv, S, q, what);   // the map has the cone or branch point
   if(covers && CGAL::is_closed(q) && cones > 0) check_traced_patch_charts(q, what);
   return sizes;
 }
@@ -821,6 +829,43 @@ static void make_double_fan(Mesh& m, UV_map& uv, const Point_2& center)
   }
 }
 
+// A disk that the map winds `turns` times around `center` (a branch point of that order, one chart, no cut): rings
+// of 16 turns x 16 vertices at radii 0.5 .. 5 around it; in 3D a flat disk whose angle is the UV angle / turns.
+static vertex_descriptor make_branched_disk(Mesh& m, UV_map& uv, const Point_2& center, int turns)
+{
+  const int N = 16, rings = 10;
+  const vertex_descriptor w = m.add_vertex(Point_3(0, 0, 0));
+  std::vector<std::vector<vertex_descriptor> > ring(rings + 1);
+  std::vector<std::vector<Point_2> > at(rings + 1);
+  for(int j = 1; j <= rings; ++j)
+    for(int k = 0; k < turns * N; ++k) {
+      const double r = 0.5 * j, theta = 2 * CGAL_PI * k / N;
+      ring[std::size_t(j)].push_back(m.add_vertex(Point_3(r * std::cos(theta / turns), r * std::sin(theta / turns), 0)));
+      at[std::size_t(j)].push_back(Point_2(center.x() + r * std::cos(theta), center.y() + r * std::sin(theta)));
+    }
+  uv = uv_of(m);
+  auto triangle = [&](std::array<std::pair<int, int>, 3> c) {   // (ring, index); ring 0 is w
+    std::array<vertex_descriptor, 3> v;
+    for(int i = 0; i < 3; ++i) v[std::size_t(i)] = c[std::size_t(i)].first == 0 ? w
+                                 : ring[std::size_t(c[std::size_t(i)].first)][std::size_t(c[std::size_t(i)].second % (turns * N))];
+    const face_descriptor f = m.add_face(v[0], v[1], v[2]);
+    assert(f != Mesh::null_face());
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      for(int i = 0; i < 3; ++i)
+        if(m.target(h) == v[std::size_t(i)])
+          put(uv, h, c[std::size_t(i)].first == 0 ? center
+                     : at[std::size_t(c[std::size_t(i)].first)][std::size_t(c[std::size_t(i)].second % (turns * N))]);
+  };
+  for(int k = 0; k < turns * N; ++k) {
+    triangle({{{0, 0}, {1, k}, {1, k + 1}}});
+    for(int j = 1; j < rings; ++j) {
+      triangle({{{j, k}, {j + 1, k}, {j + 1, k + 1}}});
+      triangle({{{j, k}, {j + 1, k + 1}, {j, k + 1}}});
+    }
+  }
+  return w;
+}
+
 static void test_branch_points()
 {
   // on an integer point: 8 quads around it, a vertex of valence 8 (the cells along the diagonal border are cut)
@@ -831,11 +876,33 @@ static void test_branch_points()
   extract(m, uv, 1, r);
   check_quad_mesh(m, uv, 1, r, "branch point of 8 quarter turns on (0, 0)");
   assert(r.report.quads == 8 && r.report.valence_histogram[8] == 1 && r.report.incomplete_cells > 0);
-  // off the integer points: refused
+  // off the integer points, in a cell whose neighbours the border cuts: its two sheets cannot be filled, refused
   Mesh b; UV_map uvb;
   make_double_fan(b, uvb, Point_2(0.5, 0.25));
   assert(SS::is_exact_integer_grid_map(b, uvb));
-  check_refused(b, uvb, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns off the grid");
+  check_refused(b, uvb, 1, SS::INVALID_INPUT, "do not close a loop around the cell", "branch point of 8 quarter turns off the grid");
+  // inside a cell of a larger disk wound 2 or 3 times around it: the cell's 4m-gon filled with 2m - 1 quads, its rungs'
+  // 4(m - 1) ends of valence 5; on a grid line off the integer points, or without fill_branched_cells: refused
+  for(int turns : {2, 3}) {
+    Mesh d; UV_map uvd;
+    const vertex_descriptor w = make_branched_disk(d, uvd, Point_2(0.5, 0.25), turns);
+    assert(SS::is_exact_integer_grid_map(d, uvd) && SS::quad_valences(d, uvd).valence[std::size_t(w)] == 4 * turns);
+    Quad_result rd;
+    extract(d, uvd, 1, rd);
+    check_quad_mesh(d, uvd, 1, rd, "disk wound " + std::to_string(turns) + " times around (0.5, 0.25)");
+    assert(rd.report.filled_branch_points == std::vector<std::size_t>(1, std::size_t(w)));
+    std::size_t valence_5 = 0;
+    for(vertex_descriptor v : rd.q.vertices()) valence_5 += !rd.q.is_border(v) && rd.q.degree(v) == 5 ? 1 : 0;
+    assert(valence_5 == std::size_t(4 * (turns - 1)) && rd.report.irregular_vertices == valence_5);
+    Quad_result kept;
+    kept.report = SS::extract_quad_mesh(d, uvd, kept.q, SS::parameters::fill_branched_cells(false));
+    assert(kept.report.status == SS::INVALID_INPUT && kept.report.message.find("branches inside a cell") != std::string::npos &&
+           kept.q.number_of_faces() == 0);
+    if(turns == 3) continue;
+    Mesh e; UV_map uve;
+    make_branched_disk(e, uve, Point_2(0.5, 0), turns);
+    check_refused(e, uve, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns on a grid line");
+  }
 }
 
 // The quarter plane [0, n]^2 with its two sides glued ((t, 0) ~ (0, t), the cut edges with a quarter turn and translation

@@ -85,7 +85,15 @@ struct Quad_vertex_origin
  *   each (valence 3 where they had 4: the cone's index carried by three vertices of index 1/4), and the mesh around it
  *   is unchanged; `Quad_mesh_report::split_cones` lists such cones. A cone whose 2 x 2 cells are not that (another
  *   cone, the border or a dropped cell within two cells of it; a larger `grid_scale` helps), or any cone of valence 1
- *   without `split_valence_one_cones`, gives `INVALID_INPUT`;
+ *   without `split_valence_one_cones`, gives `INVALID_INPUT`. A vertex around which the map winds `m > 1` times (an
+ *   angle sum of `4m` quarter turns, e.g. a regular vertex the untangling left wound twice) is a branch point: on an
+ *   integer point a quad vertex of valence `4m`; inside an open cell (no coordinate an integer) that cell is covered `m`
+ *   times, a `4m`-gon of its corners' `m` surface points each, and with `fill_branched_cells` (the default) it becomes
+ *   `2m - 1` quads, a ladder of rungs between those corners that repeats no edge (the branch point is no quad vertex,
+ *   the `4(m - 1)` ends of the rungs have one edge more, valence 5 where they had 4; `Quad_mesh_report::filled_branch_points`
+ *   lists them). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
+ *   not surrounded by quads (another branch point, cone or dropped cell next to it), and any without
+ *   `fill_branched_cells`;
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
  *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
  *   `grid_scale`; UVs beyond `2^30` grid units or more than `max_grid_cells` cells in the faces' UV bounding boxes
@@ -100,7 +108,8 @@ struct Quad_vertex_origin
  * index in quarter turns; and if no cell was dropped (`Quad_mesh_report::covers_map()`), the number of quads equals the
  * exact UV area of the map in grid units and `V - E + F` equals that of `tm`. Where cones of valence 1 were split,
  * the three corners of each merged quad next to the glued sides have one edge fewer than `quad_valences()` gives
- * their point, and the quads are 3 fewer per split cone than the UV area (every other quad is one unit cell).
+ * their point, and the quads are 3 fewer per split cone than the UV area; where branched cells were filled, the rungs'
+ * ends have one edge more and the quads are `m - 1` more per cell (every other quad is one unit cell).
  *
  * Border: a cell cut by a border edge that does not lie on an integer isoline is incomplete; it is dropped (not in
  * the mesh) and counted in `Quad_mesh_report::incomplete_cells`, with the status still `SUCCESS`: the quad mesh then
@@ -151,6 +160,13 @@ struct Quad_vertex_origin
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::split_valence_one_cones()`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{fill_branched_cells}
+ *     \cgalParamDescription{if `true`, a cell covered `m > 1` times around a branch point inside it becomes `2m - 1`
+ *                           quads (see above); if `false`, such a vertex gives `INVALID_INPUT`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::fill_branched_cells()`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *
@@ -205,7 +221,10 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   const double grid_scale = choose_parameter(get_parameter(np_in, snap_np::grid_scale), 1.);
   const std::size_t max_grid_cells = choose_parameter(get_parameter(np_in, snap_np::max_grid_cells),
                                                       default_max_grid_cells);
-  const bool split_ones = choose_parameter(get_parameter(np_in, snap_np::split_valence_one_cones), true);
+  internal::quad::Quad_options opt;
+  opt.max_grid_cells = max_grid_cells;
+  opt.split_valence_one_cones = choose_parameter(get_parameter(np_in, snap_np::split_valence_one_cones), true);
+  opt.fill_branched_cells = choose_parameter(get_parameter(np_in, snap_np::fill_branched_cells), true);
   // output: vertex point map, origins
   typedef typename CGAL::GetVertexPointMap<QuadMesh, NamedParameters_out>::type VPM_out;
   VPM_out vpm_out = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
@@ -222,8 +241,8 @@ Quad_mesh_report extract_quad_mesh(const TriangleMesh& tm, HalfedgeUVMap uv, Qua
   Face_origin_map face_origin_map = choose_parameter<Face_origin_map>(get_parameter(np_out, snap_np::face_origin_map));
 
   const bool covered_faces = !CGAL::parameters::is_default_parameter<NamedParameters_out, snap_np::face_origin_map_t>::value;
-  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, max_grid_cells, split_ones, qm, vpm_out,
-                                                origin_map, face_origin_map, covered_faces);
+  return internal::quad::extract_quad_mesh_impl(tm, uv, vpm_in, grid_scale, opt, qm, vpm_out, origin_map,
+                                                face_origin_map, covered_faces);
 }
 
 } // namespace Seamless_snapping

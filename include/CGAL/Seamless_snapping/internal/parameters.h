@@ -42,6 +42,7 @@ enum vertex_origin_map_t { vertex_origin_map }; // quad mesh vertex -> Quad_vert
 enum face_origin_map_t   { face_origin_map };   // quad mesh face -> std::vector of the map's faces it covers (extract_quad_mesh)
 enum max_grid_cells_t    { max_grid_cells };    // std::size_t: cells the faces' UV bounding boxes may hold (extract_quad_mesh)
 enum split_valence_one_cones_t { split_valence_one_cones };  // bool: one quad for the 2 x 2 cells at a 90-degree cone (extract_quad_mesh, default true)
+enum fill_branched_cells_t { fill_branched_cells };  // bool: quads for a cell covered m > 1 times around a branch point (extract_quad_mesh, default true)
 enum number_of_threads_t { number_of_threads }; // unsigned: threads for independent steps (default 1; 0 = the machine's cores)
 } // namespace snap_np
 
@@ -72,6 +73,7 @@ enum number_of_threads_t { number_of_threads }; // unsigned: threads for indepen
   SS_NP(face_origin_map_t,         face_origin_map)          \
   SS_NP(max_grid_cells_t,          max_grid_cells)           \
   SS_NP(split_valence_one_cones_t, split_valence_one_cones)  \
+  SS_NP(fill_branched_cells_t,     fill_branched_cells)      \
   SS_NP(number_of_threads_t,       number_of_threads)
 
 namespace parameters {

@@ -106,7 +106,7 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
 template <class TriangleMesh, class HalfedgeUVMap, class VPM_in, class QuadMesh, class VPM_out, class Origin_map,
           class Face_origin_map>
 Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv, VPM_in vpm_in, double grid_scale,
-                                        std::size_t max_grid_cells, bool split_ones, QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
+                                        const Quad_options& opt, QuadMesh& qm, VPM_out vpm_out, Origin_map origin_map,
                                         Face_origin_map face_origin_map, bool covered_faces)
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -122,7 +122,7 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
   if(report.status == SUCCESS) {
     std::vector<typename boost::property_traits<VPM_in>::value_type> points;
     for(const auto& v : desc.vertices) points.push_back(get(vpm_in, v));
-    report.status = extract_quads(scale_exponent, max_grid_cells, split_ones, points, x, report);
+    report.status = extract_quads(scale_exponent, opt, points, x, report);
   }
   if(report.status != SUCCESS) { report.total_ms = ms_since(t0); return report; }
 
@@ -132,12 +132,17 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
                    " cones in the map), Euler characteristic " + std::to_string(report.euler_characteristic) + ", " +
                    std::to_string(report.boundary_loops) + " boundary loops; " +
                    (report.incomplete_cells == 0 ? std::string("the quads cover the map (as many as its UV area") +
-                                                   (report.split_cones.empty() ? ")" : " less 3 per split cone)")
+                                                   (report.split_cones.empty() && report.filled_branch_points.empty()
+                                                        ? ")" : " less 3 per split cone, plus m - 1 per filled branch point)")
                                                  : std::to_string(report.incomplete_cells) + " cells cut by the border "
                                                    "(not on integer isolines) were dropped") +
                    (report.split_cones.empty() ? std::string() : "; " + std::to_string(report.split_cones.size()) +
                     " cone(s) of valence 1 (90 degrees) split: the 2 x 2 cells at each made one quad, three of whose "
-                    "corners have valence 3 for it");
+                    "corners have valence 3 for it") +
+                   (report.filled_branch_points.empty() ? std::string() : "; " +
+                    std::to_string(report.filled_branch_points.size()) + " branch point(s) off the integer points (the "
+                    "map winds m > 1 times around a vertex inside a cell) filled: the 4m-gon of the cell's m sheets "
+                    "made 2m - 1 quads (m - 1 more than its UV area each)");
   report.total_ms = ms_since(t0);
   return report;
 }

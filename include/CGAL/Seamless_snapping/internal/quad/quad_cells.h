@@ -25,6 +25,10 @@
 //      exactly one surface point.
 // A complete cell is then a quad: its four corners counter-clockwise from the lower-left one in the
 // chart of its first piece (transitions keep the orientation), and the faces of its pieces.
+// A branched cell, one that holds in its open cell the point of a vertex around which the map winds m > 1 times
+// (`branch_vertex`: an angle sum of 4m quarter turns off the integer points), is covered m times: its pieces form one
+// set whose chart corners are m surface points each. It is no quad; its corner points and faces are kept
+// (Quad_cells::branched) for branched_cells.h, which fills the 4m-gon they bound with quads.
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
@@ -53,6 +57,23 @@ struct Quad_cells
   std::vector<int> faces;                       // faces[faces_first[q] .. faces_first[q + 1] - 1]
   std::size_t incomplete = 0;                   // cells cut by the border, dropped
   int first_incomplete_face = -1;               // a face with a piece of the first of them
+  struct Branched
+  {
+    std::vector<int> corners;                   // its corner points (indices into points), ascending: 4m of them
+    std::vector<int> faces;                     // the faces of its pieces, ascending
+    int vertex = -1;                            // the vertex it winds around (Corner_mesh numbering)
+  };
+  std::vector<Branched> branched;               // complete branched cells (see the header), not in quads
+};
+
+// What extract_quads() changed in the cells beyond the unit cells (branched_cells.h, valence_one_cones.h), for the
+// verification (quad_mesh_checks.h)
+struct Cell_repairs
+{
+  std::vector<int> split_cones;        // the mesh vertices (Corner_mesh numbering) of the cones of valence 1 split
+  std::vector<int> filled_vertices;    // the vertices whose branched cells were filled
+  std::size_t extra_quads = 0;         // quads beyond the UV area that the fills added (m - 1 per cell covered m times)
+  std::vector<int> valence_change;     // per quad vertex: its edges beyond (or below) what the map gives its point
 };
 
 inline std::string cell_name(const Grid_point& c, int f)
@@ -136,9 +157,12 @@ inline Status glue_pieces(const Corner_mesh& cm, const std::vector<Grid_transfor
   return SUCCESS;
 }
 
+// `branch_vertex`: per vertex, 1 where the map winds around it more than once off the integer points (the cells
+// holding its point are branched, see the header); empty: none
 inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_halfedge,
                            const std::vector<Grid_transform>& transition, const Cell_pieces& pieces,
-                           const Collapsed_faces& collapsed, Quad_cells& out, std::string& message)
+                           const Collapsed_faces& collapsed, const std::vector<char>& branch_vertex, Quad_cells& out,
+                           std::string& message)
 {
   out = Quad_cells();
   Chart_union_find uf(int(pieces.size()));
@@ -166,6 +190,17 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
   for(std::size_t x = 0; x < pieces.size(); ++x)
     if(pieces.cut[x]) drop(x);
   for(std::size_t x : crossings.cut) drop(x);
+  // branched cells: a piece whose face has a branch vertex strictly inside the piece's open cell
+  std::vector<int> branched_by(roots.size(), -1);
+  if(!branch_vertex.empty())
+    for(std::size_t x = 0; x < pieces.size(); ++x)
+      for(int h = face_halfedge[std::size_t(pieces.face[x])], k = 0; k < 3; ++k, h = cm.next[h]) {
+        const Grid_point& c = pieces.cell[x];
+        if(branch_vertex[std::size_t(cm.target[h])] && double(c.u) < cm.u[h] && cm.u[h] < double(c.u + 1) &&
+           double(c.v) < cm.v[h] && cm.v[h] < double(c.v + 1))
+          branched_by[std::size_t(cell_of[x])] = cm.target[h];
+      }
+  std::vector<std::vector<int> > branched_corners(roots.size());
 
   // corners
   Integer_point_index index(cm.n_vertices);
@@ -200,6 +235,7 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
         while(i < 3 && !(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1])) ++i;
         CGAL_assertion(q.u - root_cell.u == cell_corner_offset[i][0] && q.v - root_cell.v == cell_corner_offset[i][1]);
         const int id = index.id_in_face(p, [&] { return locate_integer_point(cm, face_halfedge[std::size_t(f)], p, place, transition); });
+        if(branched_by[cell] >= 0) { branched_corners[cell].push_back(id); continue; }
         int& slot = corner[4 * cell + std::size_t(i)];
         if(slot >= 0 && slot != id) {
           message = "the " + cell_name(c, f) + " has two surface points at one corner (" + std::to_string(p.u) + ", " +
@@ -223,6 +259,18 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
   for(const std::pair<std::size_t, int>& c : crossings.faces) faces_of_cell[fill[std::size_t(cell_of[c.first])]++] = c.second;
   for(std::size_t cell = 0; cell < roots.size(); ++cell) {
     if(!complete[cell]) continue;
+    const auto b = faces_of_cell.begin() + std::ptrdiff_t(count[cell]), e = faces_of_cell.begin() + std::ptrdiff_t(count[cell + 1]);
+    if(!crossings.faces.empty() || branched_by[cell] >= 0) std::sort(b, e);
+    if(branched_by[cell] >= 0) {
+      Quad_cells::Branched br;
+      br.corners.swap(branched_corners[cell]);
+      std::sort(br.corners.begin(), br.corners.end());
+      br.corners.erase(std::unique(br.corners.begin(), br.corners.end()), br.corners.end());
+      br.faces.assign(b, std::unique(b, e));
+      br.vertex = branched_by[cell];
+      out.branched.push_back(std::move(br));
+      continue;
+    }
     std::array<int, 4> q;
     for(int i = 0; i < 4; ++i) {
       q[std::size_t(i)] = corner[4 * cell + std::size_t(i)];
@@ -234,8 +282,6 @@ inline Status stitch_cells(const Corner_mesh& cm, const std::vector<int>& face_h
       }
     }
     out.quads.push_back(q);
-    const auto b = faces_of_cell.begin() + std::ptrdiff_t(count[cell]), e = faces_of_cell.begin() + std::ptrdiff_t(count[cell + 1]);
-    if(!crossings.faces.empty()) std::sort(b, e);
     out.faces.insert(out.faces.end(), b, std::unique(b, e));
     out.faces_first.push_back(out.faces.size());
   }

@@ -15,10 +15,12 @@
 //      of every cut edge), no fold-overs, no zero-area triangles but collinear ones with three distinct
 //      corners (collapsed onto their long side: collapsed_faces.h), the UVs in grid units (multiplied by the
 //      grid scale, exactly) and within 2^30, every vertex whose quad valence is not 4 (quad_valences(): a
-//      cone) on an integer point, and not of valence 1 unless such cones are split (valence_one_cones.h); the map's Euler characteristic, border loops and
+//      cone) on an integer point, and not of valence 1, unless the repairs below handle it (a cone of valence 1 split,
+//      a branch point of 4m quarter turns off the integer points filled); the map's Euler characteristic, border loops and
 //      exact UV area, for the verification;
-//   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h); the
-//      2 x 2 cells at each cone of valence 1 made one quad where asked (valence_one_cones.h);
+//   2. the cells: the pieces of the faces (cell_pieces.h) stitched by the edges' transitions (quad_cells.h); where
+//      asked (Quad_options), the cells covered several times around branch points filled with quads
+//      (branched_cells.h) and the 2 x 2 cells at each cone of valence 1 made one quad (valence_one_cones.h);
 //   3. the quad mesh: 3D positions (barycentric coordinates of each integer point, in double), the cells
 //      added face by face as Euler::add_face() adds them (on index arrays, internal/mesh/halfedge_arrays.h:
 //      a face with a corner twice or an edge already taken in its direction is refused), then copied onto a
@@ -28,6 +30,7 @@
 // doubles and integers (the tracer's and the patch layout's rationals are not needed on the grid).
 
 #include <CGAL/Seamless_snapping/Quad_mesh_report.h>
+#include <CGAL/Seamless_snapping/internal/quad/branched_cells.h>
 #include <CGAL/Seamless_snapping/internal/quad/cell_pieces.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
 #include <CGAL/Seamless_snapping/internal/mesh/halfedge_arrays.h>
@@ -61,7 +64,7 @@ struct Quad_extraction
 {
   Corner_mesh cm;                                  // the map, UVs in grid units
   Quad_cells cells;
-  Cone_splits splits;                              // the cones of valence 1 whose 2 x 2 cells became one quad
+  Cell_repairs repairs;                            // what the repairs of stage 2 changed
   std::vector<std::array<double, 3> > positions;   // per quad vertex
   Quad_surface mesh;                               // the verified quad mesh (vertices cells.points, faces cells.quads)
 };
@@ -92,6 +95,17 @@ inline Map_facts map_facts(const Corner_mesh& cm)
   facts.euler_characteristic = int(vertices) - cm.n_edges + cm.n_faces;
   return facts;
 }
+
+// extract_quad_mesh()'s named parameters
+struct Quad_options
+{
+  std::size_t max_grid_cells = 0;
+  bool split_valence_one_cones = true;   // valence_one_cones.h
+  bool fill_branched_cells = true;       // branched_cells.h
+};
+
+// a vertex of angle sum q (quarter turns) whose cells fill_branched_cells() fills, off the integer points
+inline bool is_branch_point(int q) { return q >= 8 && q % 4 == 0; }
 
 // Quad_mesh_report::advice with FOLD_OVERS, where untangling can remove the faces
 constexpr const char* untangle_advice = "untangle the map first (the snap with untangle(true)), which removes such faces "
@@ -150,17 +164,21 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
 
 // Every vertex inside the quad mesh (not `on_border`, quad_valences()) of quad valence other than 4 must lie on an
 // integer point (a field cone does in an IGM; a vertex of 8 quarter turns need not) and must not be of valence 1 (its
-// cell would have a corner twice) unless `split_ones` (valence_one_cones.h splits it after the cells are made). Where such a vertex lies next to a collapsed cone pair, the message says so; a cone
+// cell would have a corner twice), but for what the repairs in `opt` handle after the cells are made (a cone of valence
+// 1 split, a branch point inside an open cell filled; one on a grid line is refused). Where such a vertex lies next to
+// a collapsed cone pair, the message says so; a cone
 // of valence 1 in a map where no vertex winds twice is most likely the map's own singularity, and the message says
 // that instead.
 inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<char>& on_border,
-                          const std::vector<int>& edge_k, bool split_ones, std::string& message)
+                          const std::vector<int>& edge_k, const Quad_options& opt, std::string& message)
 {
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h], q = valence[std::size_t(v)];
     if(cm.is_border_halfedge(h) || on_border[std::size_t(v)] || q == 4) continue;
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
-    if(on_integer && (q != 1 || split_ones)) continue;
+    if(on_integer && (q != 1 || opt.split_valence_one_cones)) continue;
+    const bool in_open_cell = cm.u[h] != std::floor(cm.u[h]) && cm.v[h] != std::floor(cm.v[h]);
+    if(in_open_cell && opt.fill_branched_cells && is_branch_point(q)) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
     if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
     else {
@@ -178,7 +196,7 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
 }
 
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
-inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, bool split_ones, std::vector<int>& edge_k,
+inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, const Quad_options& opt, std::vector<int>& edge_k,
                                Map_facts& facts, std::vector<int>& collinear, Quad_mesh_report& r)
 {
   r.faces = std::size_t(cm.n_faces);
@@ -217,7 +235,7 @@ inline Status check_quad_input(Corner_mesh& cm, int scale_exponent, bool split_o
   r.input_boundary_loops = facts.boundary_loops;
   r.cones = facts.cones;
   r.uv_area = CGAL::Gmpq(facts.twice_area) / 2;
-  return check_cones(cm, facts.valence, facts.on_border, edge_k, split_ones, r.message);
+  return check_cones(cm, facts.valence, facts.on_border, edge_k, opt, r.message);
 }
 
 // The 3D point of an integer point p: the combination of the vertices of its edge or face with the
@@ -263,17 +281,16 @@ std::array<double, 3> integer_point_position(const Corner_mesh& cm, const Intege
   return r;
 }
 
-// Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm. `split_ones`: the
-// cones of valence 1 are split (valence_one_cones.h), else refused.
+// Stages 1-3 on a corner mesh built from the caller's mesh; `vertex_point` in the numbering of cm.
 template <class Point3>
-Status extract_quads(int scale_exponent, std::size_t max_grid_cells, bool split_ones, const std::vector<Point3>& vertex_point,
+Status extract_quads(int scale_exponent, const Quad_options& opt, const std::vector<Point3>& vertex_point,
                      Quad_extraction& out, Quad_mesh_report& r)
 {
   auto t0 = std::chrono::steady_clock::now();
   Corner_mesh& cm = out.cm;
   Map_facts facts;
   std::vector<int> edge_k, collinear;
-  Status s = check_quad_input(cm, scale_exponent, split_ones, edge_k, facts, collinear, r);
+  Status s = check_quad_input(cm, scale_exponent, opt, edge_k, facts, collinear, r);
   r.check_ms = ms_since(t0);
   if(s != SUCCESS) return s;
 
@@ -284,18 +301,34 @@ Status extract_quads(int scale_exponent, std::size_t max_grid_cells, bool split_
   const Collapsed_faces collapsed(cm.n_faces, collinear);
   {
     Cell_pieces pieces;                              // freed before the mesh is built (the peak memory: see below)
-    s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, max_grid_cells, pieces, r.message);
-    if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, out.cells, r.message);
+    std::vector<char> branch_vertex;                 // off the integer points, filled (check_cones() let them through)
+    if(opt.fill_branched_cells)
+      for(int h = 0; h < cm.n_halfedges; ++h) {
+        const int v = cm.target[h];
+        if(cm.is_border_halfedge(h) || facts.on_border[std::size_t(v)] || !is_branch_point(facts.valence[std::size_t(v)]) ||
+           cm.u[h] == std::floor(cm.u[h]) || cm.v[h] == std::floor(cm.v[h]))
+          continue;
+        branch_vertex.resize(std::size_t(cm.n_vertices), 0);
+        branch_vertex[std::size_t(v)] = 1;
+      }
+    s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, opt.max_grid_cells, pieces, r.message);
+    if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, branch_vertex, out.cells, r.message);
   }
   if(s == SUCCESS) {
-    std::vector<int> ones;                           // the quad vertices at cones of valence 1 (only with split_ones)
+    int failed = -1;
+    s = fill_branched_cells(out.cells, facts.valence, out.repairs, failed, r.message);
+    if(failed >= 0) r.message += collapsed_cone_pairs_clause(cm, edge_k, failed);
+  }
+  if(s == SUCCESS) {
+    std::vector<int> ones;                           // the quad vertices at cones of valence 1 (only with the split)
     for(std::size_t i = 0; i < out.cells.points.size(); ++i) {
       const Integer_point& p = out.cells.points[i];
       if(p.kind == AT_VERTEX && !facts.on_border[std::size_t(p.element)] && facts.valence[std::size_t(p.element)] == 1)
         ones.push_back(int(i));
     }
-    s = split_valence_one_cones(out.cells, ones, out.splits, r.message);
-    r.split_cones.assign(out.splits.cones.begin(), out.splits.cones.end());
+    s = split_valence_one_cones(out.cells, ones, out.repairs, r.message);
+    r.split_cones.assign(out.repairs.split_cones.begin(), out.repairs.split_cones.end());
+    r.filled_branch_points.assign(out.repairs.filled_vertices.begin(), out.repairs.filled_vertices.end());
   }
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
@@ -342,7 +375,7 @@ Status extract_quads(int scale_exponent, std::size_t max_grid_cells, bool split_
     r.mesh_ms = ms_since(t0);
     return INVALID_INPUT;
   }
-  const bool verified = verify_quad_guarantees(m, cells, facts, out.splits, r, r.message);
+  const bool verified = verify_quad_guarantees(m, cells, facts, out.repairs, r, r.message);
   r.mesh_ms = ms_since(t0);
   return verified ? SUCCESS : EXACTNESS_CHECK_FAILED;
 }

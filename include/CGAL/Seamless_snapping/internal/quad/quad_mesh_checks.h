@@ -19,13 +19,13 @@
 //   says, exactly: all quads, manifold, closed if the map is closed; if no cell was dropped, as many quads
 //   as the map's exact UV area and the map's Euler characteristic; every quad vertex of the valence the
 //   map gives it (quad_valences(): a mesh vertex its integer-direction count, a point of an edge or of a
-//   face 4, a point of a border edge 3), so that the irregular vertices are exactly the cones. A cone of valence 1
-//   split (valence_one_cones.h) is no quad vertex; its 2 x 2 cells are one quad (3 quads fewer than the UV area) and
-//   three of their corners have one edge fewer than the map gives them (three irregular vertices for the cone).
+//   face 4, a point of a border edge 3), so that the irregular vertices are exactly the cones. The repairs
+//   (Cell_repairs) change that where they act: a cone of valence 1 split (valence_one_cones.h) is no quad vertex, its
+//   2 x 2 cells one quad (3 quads fewer than the UV area), three of their corners with one edge fewer; a branch point
+//   filled (branched_cells.h) is no quad vertex, its cell of area m 2m - 1 quads, the rungs' ends with one edge more.
 
 #include <CGAL/Seamless_snapping/Quad_mesh_report.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
-#include <CGAL/Seamless_snapping/internal/quad/valence_one_cones.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
@@ -114,7 +114,7 @@ inline void measure_quad_mesh(const Quad_surface& m, Quad_mesh_report& r)
 
 // Precondition: the vertices of m are cells.points in order, and r holds measure_quad_mesh(m).
 inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cells, const Map_facts& map,
-                                   const Cone_splits& splits, const Quad_mesh_report& r, std::string& message)
+                                   const Cell_repairs& repairs, const Quad_mesh_report& r, std::string& message)
 {
   auto fail = [&](const std::string& what) { message = "internal error: the quad mesh " + what; return false; };
   for(Quad_surface::Face_index f : m.faces())
@@ -123,10 +123,11 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
   if(map.boundary_loops == 0 && r.border_edges > 0)
     return fail("of a closed map has " + std::to_string(r.border_edges) + " border edges");
   const bool covers = cells.incomplete == 0;
-  const std::size_t split = splits.cones.size();
-  if(covers && CGAL::Mpzf(double(2 * (r.quads + 3 * split))) != map.twice_area)
-    return fail("has " + std::to_string(r.quads) + " quads" + (split > 0 ? " (and " + std::to_string(split) +
-                " cones of valence 1 split, 3 cells fewer each)" : std::string()) + ", but the UV area of the map is " +
+  const std::size_t split = repairs.split_cones.size(), filled = repairs.filled_vertices.size();
+  if(covers && CGAL::Mpzf(double(2 * (r.quads + 3 * split - repairs.extra_quads))) != map.twice_area)
+    return fail("has " + std::to_string(r.quads) + " quads" + (split + filled > 0 ? " (" + std::to_string(split) +
+                " cones of valence 1 split, 3 cells fewer each; " + std::to_string(repairs.extra_quads) + " quads more "
+                "in branched cells)" : std::string()) + ", but the UV area of the map is " +
                 std::to_string(CGAL::to_double(map.twice_area) / 2) + " grid units");
   if(covers && r.euler_characteristic != map.euler_characteristic)
     return fail("has the Euler characteristic " + std::to_string(r.euler_characteristic) + ", the map " +
@@ -137,7 +138,7 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
     const bool border = m.is_border(v);
     if(border && !covers) continue;                  // next to dropped cells: fewer edges
     const int expected = (p.kind == AT_VERTEX ? map.valence[std::size_t(p.element)] : (border ? 3 : 4)) +
-                         splits.valence_change[std::size_t(v)];
+                         repairs.valence_change[std::size_t(v)];
     if(int(m.degree(v)) != expected)
       return fail("has a vertex of valence " + std::to_string(m.degree(v)) + " where the map has " +
                   std::to_string(expected) + " integer directions (" +
@@ -146,9 +147,10 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
     irregular += !border && expected != 4 ? 1 : 0;
     cones_met += !border && p.kind == AT_VERTEX && map.valence[std::size_t(p.element)] != 4 ? 1 : 0;
   }
-  if(covers && (cones_met + split != map.cones || r.irregular_vertices != irregular))
+  if(covers && (cones_met + split + filled != map.cones || r.irregular_vertices != irregular))
     return fail("has " + std::to_string(r.irregular_vertices) + " irregular vertices for the " + std::to_string(map.cones) +
-                " cones of the map" + (split > 0 ? " (" + std::to_string(split) + " of them of valence 1, split)" : std::string()));
+                " cones of the map" + (split + filled > 0 ? " (" + std::to_string(split) + " of them of valence 1, split, " +
+                std::to_string(filled) + " branch points filled)" : std::string()));
   return true;
 }
 

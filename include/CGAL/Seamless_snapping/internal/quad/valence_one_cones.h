@@ -40,12 +40,6 @@ namespace Seamless_snapping {
 namespace internal {
 namespace quad {
 
-struct Cone_splits
-{
-  std::vector<int> cones;              // the mesh vertices (Corner_mesh numbering) of the split cones
-  std::vector<int> valence_change;     // per quad vertex (after the split): -1 at c, d and e of a split, else 0
-};
-
 // q rotated so that its corner i comes first
 inline std::array<int, 4> starting_at(const std::array<int, 4>& q, int i)
 {
@@ -53,13 +47,12 @@ inline std::array<int, 4> starting_at(const std::array<int, 4>& q, int i)
 }
 
 // Splits the cells at the quad vertices `cones` (points of valence-1 cones, see the header) in `cells`; the
-// points and quads that go are removed, the others keep their order. Returns INVALID_INPUT, naming the first cone
-// whose neighbourhood is not the 2 x 2 cells, with `cells` unchanged.
-inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>& cones, Cone_splits& out,
+// points and quads that go are removed, the others keep their order (and their entries of repairs.valence_change,
+// sized to the points on entry, to which c, d and e add -1). Returns INVALID_INPUT, naming the first cone whose
+// neighbourhood is not the 2 x 2 cells, with `cells` and `repairs` unchanged.
+inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>& cones, Cell_repairs& repairs,
                                       std::string& message)
 {
-  out.cones.clear();
-  out.valence_change.assign(cells.points.size(), 0);
   if(cones.empty()) return SUCCESS;
   Index_lists quads_of;                                   // point -> its quads (once per corner)
   quads_of.build(int(cells.points.size()), [&](auto emit) {
@@ -140,16 +133,19 @@ inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>&
   };
   for(std::size_t q = 0; q < cells.quads.size(); ++q)
     if(!quad_gone[q]) add_quad(cells.quads[q], faces_of(int(q)));
-  out.valence_change.assign(result.points.size(), 0);
+  std::vector<int> change(result.points.size(), 0);
+  for(std::size_t i = 0; i < cells.points.size(); ++i)
+    if(new_index[i] >= 0) change[std::size_t(new_index[i])] = repairs.valence_change[i];
   for(std::size_t s = 0; s < merged.size(); ++s) {
     std::vector<int> covered;
     for(int q : merged_from[s]) { const std::vector<int> fs = faces_of(q); covered.insert(covered.end(), fs.begin(), fs.end()); }
     std::sort(covered.begin(), covered.end());
     covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
     add_quad(merged[s], covered);
-    for(int k : {0, 1, 3}) --out.valence_change[std::size_t(new_index[std::size_t(merged[s][std::size_t(k)])])];   // c, d, e
+    for(int k : {0, 1, 3}) --change[std::size_t(new_index[std::size_t(merged[s][std::size_t(k)])])];   // c, d, e
   }
-  for(int p : cones) out.cones.push_back(cells.points[std::size_t(p)].element);
+  for(int p : cones) repairs.split_cones.push_back(cells.points[std::size_t(p)].element);
+  repairs.valence_change.swap(change);
   cells.points.swap(result.points);
   cells.quads.swap(result.quads);
   cells.faces.swap(result.faces);

@@ -1,0 +1,146 @@
+// Copyright (c) 2026  The Seamless Snapping authors.
+// All rights reserved.
+//
+// This file is part of the Seamless Snapping package for CGAL; it is not part of CGAL itself.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The Seamless Snapping authors
+
+#ifndef CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_BRANCHED_CELLS_H
+#define CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_BRANCHED_CELLS_H
+
+// A vertex around which a fold-free map winds m > 1 times (an angle sum of 4m quarter turns, e.g. a regular vertex
+// wound twice where the untangling could not unwind it) is a branch point of order m. On an integer point it is a quad
+// vertex of valence 4m. Off the integer points, the cell holding its point is covered m times (quad_cells.h: a
+// branched cell): its preimage is a disk bounded by the cell's four sides m times, a 4m-gon whose corners are the m
+// surface points of each corner of the cell, and which holds no integer point. No unit cell is a face there.
+// fill_branched_cells() finds that 4m-gon as the loop of sides that the quads around it leave open (each side of a
+// quad on one side and none on the other, between corners of the cell), and fills it with 2m - 1 quads, a ladder of
+// rungs between its corners: for the loop L[0..n-1], the quads (L[i], L[i+1], L[n-2-i], L[n-1-i]), i < n/2 - 1, rotated
+// so that no rung is an edge the mesh has already. The fill keeps the disk's border, so V - E + F is kept; its two
+// ends of each rung gain one edge (the branch point's index -(m-1) carried by 4(m-1) vertices of index -1/4, valence
+// 5 where they had 4), and the quads are m - 1 more than the cell's UV area m. Refused where the loop is not that (a
+// neighbouring cell dropped or branched too, a corner point twice).
+
+#include <CGAL/Seamless_snapping/Status.h>
+#include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Seamless_snapping {
+namespace internal {
+namespace quad {
+
+// Fills every branched cell of `cells` (see the header); the quads are appended, with the faces of the cell each,
+// `repairs` gets the vertices, the extra quads and the rung ends' valence changes (valence_change sized to the points).
+// `valence`: per vertex its angle sum in quarter turns (quad_valences()). On INVALID_INPUT (the first cell whose loop
+// is not a 4m-gon of its corners; `failed_vertex` its branch point, named in `message`) `cells` is unchanged.
+inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& valence, Cell_repairs& repairs,
+                                  int& failed_vertex, std::string& message)
+{
+  repairs.valence_change.assign(cells.points.size(), 0);
+  if(cells.branched.empty()) return SUCCESS;
+  Index_lists quads_of;                                   // point -> its quads
+  quads_of.build(int(cells.points.size()), [&](auto emit) {
+    for(std::size_t q = 0; q < cells.quads.size(); ++q)
+      for(int p : cells.quads[q]) emit(p, int(q));
+  });
+  // a quad with the side from -> to (in that direction)
+  auto has_side = [&](int from, int to) {
+    for(int q : quads_of[from])
+      for(int i = 0; i < 4; ++i)
+        if(cells.quads[std::size_t(q)][std::size_t(i)] == from && cells.quads[std::size_t(q)][std::size_t((i + 1) % 4)] == to)
+          return true;
+    return false;
+  };
+  std::vector<std::array<int, 4> > added;
+  std::vector<std::size_t> added_from;                    // per added quad: its branched cell
+  std::vector<int> change(cells.points.size(), 0);
+  std::size_t extra = 0;
+  // the loop of cell c and its ladder, into `added`
+  auto fill = [&](std::size_t c) {
+    const Quad_cells::Branched& br = cells.branched[c];
+    const int turns = valence[std::size_t(br.vertex)];
+    auto refuse = [&](const std::string& why) {
+      failed_vertex = br.vertex;
+      message = "vertex " + std::to_string(br.vertex) + " has a UV angle sum of " + std::to_string(turns) +
+                " quarter turns off the integer points (the map winds " + std::to_string(turns / 4) + " times around "
+                "it, inside a cell), and the cell's preimage cannot be filled with quads: " + why +
+                "; a larger grid_scale makes the cells smaller";
+      return INVALID_INPUT;
+    };
+    const std::vector<int>& K = br.corners;
+    const std::size_t n = K.size();
+    if(n != std::size_t(turns))
+      return refuse("its cell has " + std::to_string(n) + " corner points, not 4 per turn (another branch point or a "
+                    "cone in it or next to it)");
+    auto in_cell = [&](int p) { return std::binary_search(K.begin(), K.end(), p); };
+    auto rank = [&](int p) { return std::size_t(std::lower_bound(K.begin(), K.end(), p) - K.begin()); };
+    // the loop: the sides between the cell's corners with a quad on one side only, reversed (the hole's direction)
+    std::vector<int> next(n, -1);
+    for(std::size_t i = 0; i < n; ++i)
+      for(int q : quads_of[K[i]])
+        for(int k = 0; k < 4; ++k) {
+          const int a = cells.quads[std::size_t(q)][std::size_t(k)], b = cells.quads[std::size_t(q)][std::size_t((k + 1) % 4)];
+          if(a != K[i] || !in_cell(b) || has_side(b, a)) continue;
+          if(next[rank(b)] >= 0 && next[rank(b)] != a) return refuse("a corner point has two open sides");
+          next[rank(b)] = a;                              // the hole runs b -> a
+        }
+    std::vector<int> loop(1, K[0]);
+    while(loop.size() <= n) {
+      const int a = next[rank(loop.back())];
+      if(a < 0) return refuse("the quads around it do not close a loop around the cell (a neighbouring cell is missing)");
+      if(a == loop.front()) break;
+      loop.push_back(a);
+    }
+    if(loop.size() != n) return refuse("the open sides around it form a loop of " + std::to_string(loop.size()) +
+                                       " of its " + std::to_string(n) + " corner points");
+    std::size_t start = n;                                // a rotation whose rungs are no edges yet
+    for(std::size_t s = 0; s < n && start == n; ++s) {
+      bool free = true;
+      for(std::size_t i = 0; i + 2 < n / 2 && free; ++i) {
+        const int a = loop[(s + i + 1) % n], b = loop[(s + n - 2 - i) % n];
+        free = !has_side(a, b) && !has_side(b, a);
+      }
+      if(free) start = s;
+    }
+    if(start == n) return refuse("every ladder of quads across it would repeat an edge of the mesh");
+    auto L = [&](std::size_t i) { return loop[(start + i) % n]; };
+    for(std::size_t i = 0; i + 1 < n / 2; ++i) {
+      added.push_back({{L(i), L(i + 1), L(n - 2 - i), L(n - 1 - i)}});
+      added_from.push_back(c);
+      if(i + 2 < n / 2) { ++change[std::size_t(L(i + 1))]; ++change[std::size_t(L(n - 2 - i))]; }
+    }
+    extra += n / 4 - 1;
+    return SUCCESS;
+  };
+  for(std::size_t c = 0; c < cells.branched.size(); ++c) {
+    const Status s = fill(c);
+    if(s != SUCCESS) return s;
+  }
+  for(std::size_t k = 0; k < added.size(); ++k) {
+    cells.quads.push_back(added[k]);
+    const std::vector<int>& f = cells.branched[added_from[k]].faces;
+    cells.faces.insert(cells.faces.end(), f.begin(), f.end());
+    cells.faces_first.push_back(cells.faces.size());
+  }
+  for(const Quad_cells::Branched& br : cells.branched) repairs.filled_vertices.push_back(br.vertex);
+  repairs.extra_quads = extra;
+  repairs.valence_change.swap(change);
+  cells.branched.clear();
+  return SUCCESS;
+}
+
+} // namespace quad
+} // namespace internal
+} // namespace Seamless_snapping
+} // namespace CGAL
+
+#endif // CGAL_SEAMLESS_SNAPPING_INTERNAL_QUAD_BRANCHED_CELLS_H
