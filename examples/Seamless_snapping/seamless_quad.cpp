@@ -1,7 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]
-//                 [--no-cone-split] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
+//                 [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -53,7 +53,7 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--no-cone-split] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
+  "                     [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
@@ -67,7 +67,10 @@ static const char* help_text =
   "number of quads (= the exact UV area) those of the map, irregular vertices exactly the cones. A cone\n"
   "of 90 degrees (valence 1, e.g. in Directional's maps) has no cell of its own: its 2 x 2 cells are made\n"
   "one quad, whose three corners next to the cone have valence 3 for it (split_valence_one_cones(true);\n"
-  "the quad mesh report's \"split_cones\" lists them, 3 quads fewer than the UV area each).\n"
+  "the quad mesh report's \"split_cones\" lists them, 3 quads fewer than the UV area each). A vertex\n"
+  "around which the map winds m > 1 times inside a cell (a branch point the untangling left) covers\n"
+  "that cell m times: the 4m-gon is filled with 2m - 1 quads, 4(m - 1) of whose corners have valence 5\n"
+  "(fill_branched_cells(true); \"filled_branch_points\", m - 1 quads more than the UV area each).\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
   "(scale it with --grid-scale, or --quantize it), a map left with fold-overs or zero-area UV triangles with two corners\n"
@@ -100,6 +103,8 @@ static const char* help_text =
   "                       cone. The snap report lists the merged pairs\n"
   "  --no-cone-split      refuse a cone of 90 degrees instead of making its 2 x 2 cells one quad (every\n"
   "                       quad then a unit cell of the grid)\n"
+  "  --no-branch-fill     refuse a map that winds more than once around a point inside a cell instead of\n"
+  "                       filling that cell's sheets with quads\n"
   "  --layout FILE        also write the quad layout (quad_layout()): one polygon per patch, its vertices the\n"
   "                       quad vertices at patch corners (cones, border corners, T-junctions where a trace ends\n"
   "                       on another), its edges the arcs between them (the 'coarse mesh' of the patches);\n"
@@ -159,7 +164,8 @@ int main(int argc, char** argv)
 {
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::string in, out, report_file, layout_file;
-  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false, split_cones = true;
+  bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false, split_cones = true,
+       fill_branches = true;
   double grid_scale = 1;
   std::size_t max_grid_cells = SS::default_max_grid_cells;
   unsigned threads = 0;                 // 0: the machine's cores
@@ -172,6 +178,7 @@ int main(int argc, char** argv)
     else if(a == "--no-untangle") untangle = false;
     else if(a == "--keep-cone-pairs") merge = false;
     else if(a == "--no-cone-split") split_cones = false;
+    else if(a == "--no-branch-fill") fill_branches = false;
     else if(a == "--quantize") quantize = true;
     else if(a == "--grid-scale") {
       if(i + 1 >= argc || !SS::IO::internal::parse_grid_scale(argv[i + 1], grid_scale)) {
@@ -298,7 +305,7 @@ int main(int argc, char** argv)
   SS::Quad_mesh_report q;
   if(snap.status == SS::SUCCESS && SS::is_exact_integer_grid_map(mesh, uv, params::grid_scale(grid_scale)))
     q = SS::extract_quad_mesh(mesh, uv, quads, params::grid_scale(grid_scale).max_grid_cells(max_grid_cells)
-                                                .split_valence_one_cones(split_cones),
+                                                .split_valence_one_cones(split_cones).fill_branched_cells(fill_branches),
                               params::vertex_origin_map(origin).face_origin_map(covered));
   else if(snap.status == SS::SUCCESS)
     return fail("verification failed: the snapped map is not exactly an integer-grid map (internal error; please report)");
@@ -351,13 +358,16 @@ int main(int argc, char** argv)
   }
   if(!quiet) {
     std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());
-    const std::string split = q.split_cones.empty() ? std::string()
-                            : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split into 3 of valence 3";
+    const std::string split = (q.split_cones.empty() ? std::string()
+                               : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split into 3 of valence 3") +
+                              (q.filled_branch_points.empty() ? std::string()
+                               : ", " + std::to_string(q.filled_branch_points.size()) + " branch points filled");
     std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones%s)%s\n",
                 q.boundary_loops == 0 ? "closed" : (std::to_string(q.boundary_loops) + " boundary loops").c_str(),
                 q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones, split.c_str(),
-                !q.covers_map() ? "" : q.split_cones.empty() ? ", as many quads as the exact UV area"
-                                                             : ", as many quads as the exact UV area less 3 per split cone");
+                !q.covers_map() ? "" : q.split_cones.empty() && q.filled_branch_points.empty()
+                                       ? ", as many quads as the exact UV area"
+                                       : ", as many quads as the exact UV area, less 3 per split cone, plus m - 1 per filled branch point");
     std::printf("patches: %s\n", patches.message.c_str());
     if(!layout_file.empty()) std::printf("layout: %s\n", lay.message.c_str());
   }

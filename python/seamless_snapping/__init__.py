@@ -432,7 +432,7 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
 
 
 def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cells=None, split_valence_one_cones=True,
-                      raise_on_failure=True):
+                      fill_branched_cells=True, raise_on_failure=True):
     """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
     snap(..., integer_grid_map=True)): its vertices are the integer points of the map (UV times `grid_scale`, a
     power of 2), its edges the unit segments of the integer isolines, its faces the unit cells, all decided exactly.
@@ -456,10 +456,14 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     A cone of 90 degrees (valence 1, a singularity of index 3/4, e.g. in Directional's maps) has no cell: with
     split_valence_one_cones=True its 2 x 2 cells are made one quad, three of whose corners have valence 3 for it (the
     cone is no quad vertex; report["split_cones"]: the rows of V of such cones; the quads are 3 fewer than the UV area
-    per split cone).
+    per split cone). A vertex around which the map winds m > 1 times inside a cell (a branch point, e.g. one the
+    untangling left) covers that cell m times: with fill_branched_cells=True that 4m-gon is filled with 2m - 1 quads,
+    4(m - 1) of whose corners have valence 5 (report["filled_branch_points"]: rows of V; m - 1 quads more than the UV
+    area each).
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
     integer-grid map, a cone of valence 1 with another cone or the border within two cells, or any with
-    split_valence_one_cones=False, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
+    split_valence_one_cones=False, a branch point on a grid line or next to another one, or any with
+    fill_branched_cells=False, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
     zero-area UV triangles with two corners at one point, listed in report["fold_overs"] and
     report["zero_area_faces"]; report["advice"] says to untangle first where that can remove them), "RANGE_EXCEEDED". A zero-area UV triangle with three distinct (collinear) corners is
     collapsed onto its long side (listed in report["zero_area_faces"] on success too).
@@ -472,7 +476,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     if not 0 <= n < 2**64:
         raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
     QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale), n,
-                                                    bool(split_valence_one_cones))
+                                                    bool(split_valence_one_cones), bool(fill_branched_cells))
     report = json.loads(text)
     report.update(origins)
     if "patches" in report:

@@ -435,7 +435,8 @@ void add_patches(Mesh& q, py::dict& out, const std::vector<long long>* row_of = 
 
 // The quad mesh of an exact integer-grid map: (QV, QF, report JSON, the origins as arrays); QV, QF are None on failure.
 py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const MatrixXdR& UV, const MatrixXlR& FUV, bool weld,
-                            double grid_scale, std::size_t max_grid_cells, bool split_valence_one_cones)
+                            double grid_scale, std::size_t max_grid_cells, bool split_valence_one_cones,
+                            bool fill_branched_cells)
 {
   SS::internal::Matrix_mesh_with_uv m;
   SS::Quad_mesh_report r;
@@ -451,7 +452,8 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   {
     py::gil_scoped_release release;
     r = SS::extract_quad_mesh(m.mesh, m.uv, q, SS::parameters::grid_scale(grid_scale).max_grid_cells(max_grid_cells)
-                                                .split_valence_one_cones(split_valence_one_cones),
+                                                .split_valence_one_cones(split_valence_one_cones)
+                                                .fill_branched_cells(fill_branched_cells),
                               SS::parameters::vertex_origin_map(origin).face_origin_map(covered));
   }
   if(r.status != SS::SUCCESS) return py::make_tuple(py::none(), py::none(), r.to_json(), origins);
@@ -491,6 +493,9 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   std::vector<long long> split;                             // rows of V (the report's numbers are the built mesh's)
   for(std::size_t v : r.split_cones) split.push_back(rows.vertex_row[v]);
   origins["split_cones"] = py::array_t<long long>(py::ssize_t(split.size()), split.data());
+  std::vector<long long> filled;
+  for(std::size_t v : r.filled_branch_points) filled.push_back(rows.vertex_row[v]);
+  origins["filled_branch_points"] = py::array_t<long long>(py::ssize_t(filled.size()), filled.data());
   add_patches(q, origins);
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }
@@ -707,7 +712,8 @@ PYBIND11_MODULE(_core, m)
   m.def("quad_mesh_patches", &quad_mesh_patches, py::arg("QF"));
   m.def("quad_layout", &quad_layout, py::arg("QF"));
   m.def("extract_quad_mesh", &extract_quad_mesh, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"), py::arg("weld"),
-        py::arg("grid_scale"), py::arg("max_grid_cells"), py::arg("split_valence_one_cones"));
+        py::arg("grid_scale"), py::arg("max_grid_cells"), py::arg("split_valence_one_cones"),
+        py::arg("fill_branched_cells"));
   m.def("diagnose_seamlessness", &diagnose_seamlessness, py::arg("V"), py::arg("F"), py::arg("UV"), py::arg("FUV"),
         py::arg("weld"), py::arg("align_boundary"), py::arg("rotation_tolerance"), py::arg("alignment_tolerance"),
         py::arg("integer_grid_map"), py::arg("grid_scale"));

@@ -937,6 +937,40 @@ def test_extract_quad_mesh_splits_a_cone_of_90_degrees():
     assert np.array_equal(UV, UV_before)
 
 
+def branched_disk(center, turns, N=16, rings=10):
+    """A disk that the map winds `turns` times around `center` (row 0 of V), one chart, no cut: rings of turns * N
+    vertices at radii 0.5 .. rings / 2; in 3D a flat disk whose angle is the UV angle / turns."""
+    V, UV, F = [[0.0, 0.0, 0.0]], [list(center)], []
+    index = lambda j, k: 1 + (j - 1) * turns * N + k % (turns * N)
+    for j in range(1, rings + 1):
+        for k in range(turns * N):
+            r, t = 0.5 * j, 2 * np.pi * k / N
+            V.append([r * np.cos(t / turns), r * np.sin(t / turns), 0.0])
+            UV.append([center[0] + r * np.cos(t), center[1] + r * np.sin(t)])
+    for k in range(turns * N):
+        F.append([0, index(1, k), index(1, k + 1)])
+        for j in range(1, rings):
+            F += [[index(j, k), index(j + 1, k), index(j + 1, k + 1)], [index(j, k), index(j + 1, k + 1), index(j, k + 1)]]
+    F = np.array(F)
+    return np.array(V), F, np.array(UV), F.copy()
+
+
+def test_extract_quad_mesh_fills_a_branched_cell():
+    V, F, UV, FUV = branched_disk((0.5, 0.25), 2)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
+    assert list(r["filled_branch_points"]) == [0] and 0 not in r["QV_vertex"] and r["euler_characteristic"] == 1
+    sides = [tuple(sorted((a, b))) for q in QF for a, b in zip(q, np.roll(q, -1))]
+    uses = {e: sides.count(e) for e in sides}
+    assert all(k in (1, 2) for k in uses.values())           # manifold edges
+    degree = np.bincount([v for e in uses for v in e], minlength=len(QV))
+    border = {v for e, k in uses.items() if k == 1 for v in e}
+    inside = [degree[v] for v in range(len(QV)) if v not in border]
+    assert inside.count(5) == 4 and all(d in (4, 5) for d in inside) and r["irregular_vertices"] == 4
+    with pytest.raises(ss.SnapError) as e:                  # refused without the fill
+        ss.extract_quad_mesh(V, F, UV, FUV, fill_branched_cells=False)
+    assert e.value.report["status"] == "INVALID_INPUT" and "branches inside a cell" in e.value.report["message"]
+
+
 def test_extract_quad_mesh_refusals():
     V, F, UV, FUV = flat_torus(n=4, noise=1e-10)          # not exactly seamless
     with pytest.raises(ss.SnapError) as e:
