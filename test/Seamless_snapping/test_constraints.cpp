@@ -1132,6 +1132,7 @@ static void test_pinned_corners_analytic()
       std::cout << "pinned corners: " << mode << ": pins spanning 62 bits refused: " << r.message << std::endl;
       assert(r.message.find(igm ? "pin UVs with fewer bits" : "round the pinned UVs to multiples of 2^") != std::string::npos &&
              r.message.find("internal error") == std::string::npos);
+      assert(r.message.find("pinned corner (vertex") != std::string::npos);   // integer-grid mode named none
     }
     // contradicting pins: both sides of vertices (1, 0) and (2, 0) of one seam branch, whose translations differ
     // by 2^-40: INFEASIBLE naming the pinned corners, untouched

@@ -157,6 +157,16 @@ inline Status add_pinned_rows(const Corner_mesh& cm, const Pinned_sectors& pins,
   return SUCCESS;
 }
 
+// The pinned corner whose UV sets the corner mesh's unit (pin_unit_exponent(): a coordinate with its lowest set bit
+// at the unit, an odd number of units), or -1 if none does (no pin, or the unit set by the map).
+inline int finest_pinned_corner(const Pinned_sectors& pins)
+{
+  for(std::size_t i = 0; i < pins.sector.size(); ++i)
+    for(int c = 0; c < 2; ++c)
+      if(std::fabs(std::fmod(pins.value[2 * i + std::size_t(c)], 2.)) == 1) return pins.corner[i];
+  return -1;
+}
+
 // the vertices of the pinned sectors become nodes of the reduction (Sec. 5.3)
 inline void mark_pinned_nodes(const Corner_mesh& cm, const Seam_topology& st, const Pinned_sectors& pins,
                               std::vector<char>& forced_nodes)

@@ -483,6 +483,12 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     s = add_integer_grid_rows(S.cm, S.st, S.rot, S.al, ubar_grid, translations, -(S.cm.uv_exponent + S.grid_exponent),
                               report.quantized ? HUGE_VAL : opt.integer_grid_tolerance, S.full, igm, message, moved,
                               opt.grid_scale);
+    const int finest = finest_pinned_corner(S.pins);
+    if(s == RANGE_EXCEEDED && finest >= 0) {           // the unit of the rows is that pin's lowest bit: name it
+      const std::size_t end = message.rfind("; nothing was written");
+      message.insert(end == std::string::npos ? message.size() : end, " (the finest bits are those of " +
+                     pinned_corner_name(S.cm, finest) + ", its UV " + uv_name(S.cm, finest) + ")");
+    }
     if(s != SUCCESS) return s;
     if(!S.full.contradictions.empty()) {
       message = "integer-grid row of " + row_origin_name(S.cm, S.full.contradictions.front()) +
