@@ -40,6 +40,8 @@ struct Quad_mesh_report
   std::string advice;               ///< with `FOLD_OVERS`, where untangling can remove the faces that block the mesh: that advice (untangle the map first: the snap with `untangle(true)`), also the end of `message`; empty otherwise (e.g. the faces lie in closed parts of the surface without cut edges, where every map folds: `message` says so)
 
   /// \name The input map
+  /// (measured as the checks of the input go: where a check refuses the map, the fields after it stay 0, e.g.
+  /// `uv_area` and `input_euler_characteristic` on `FOLD_OVERS`)
   /// @{
   std::size_t faces = 0;                       ///< faces of the map
   int input_euler_characteristic = 0;          ///< V - E + F of the map

@@ -112,7 +112,10 @@ struct Quad_layout
  * have no loop edge. A patch may lie on both sides of an arc (a band cut open once: a ring of quads seeded once) or meet a
  * vertex twice (the torus: one face around the vertex where its loops cross; 1 of the horse's 109 patches). A self-adjacent arc
  * makes the layout a valid face graph (`CGAL::is_valid_face_graph()`) but not a polygon mesh;
- * `Quad_layout::polygon_mesh` is set where neither occurs.
+ * `Quad_layout::polygon_mesh` is set where neither occurs. Two arcs may join the same two layout vertices (parallel
+ * arcs: the horse's layout has 280 arcs between 279 pairs of vertices); `layout` has them as two edges, but a face list
+ * written to a file (OBJ, OFF, PLY) names faces by vertices only, and a reader that makes one edge per vertex pair merges
+ * them (the horse's layout read back so has Euler characteristic 3): read it with the arcs' count in mind.
  *
  * The layout's elements are added to `layout` (faces in the order of the patches); their positions are those of the
  * quad vertices. Refused (`INVALID_INPUT`, nothing added): what `quad_mesh_patches()` refuses, and a patch that is not

@@ -300,7 +300,9 @@ namespace Seamless_snapping {
  *                           zero-area triangles; `separate_cone_pairs` moves one off the point). The pairs are
  *                           listed in `Snap_report::merged_cone_pairs`, not counted in `Snap_report::field_cones`; the
  *                           result is an exact integer-grid map of the changed field (the caller's rotations change on
- *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new).}
+ *                           `Snap_report::merged_cut_edges` cut edges, `Snap_report::added_cut_edges` of them new; a
+ *                           feature edge of `edge_is_constrained_map` among them stays exactly aligned, but the face across
+ *                           it is turned by the new rotation: iso-u in one face, iso-v in the other).}
  *     \cgalParamType{Boolean}
  *     \cgalParamDefault{`false` (the caller's field is kept); the `seamless_quad` program turns it on
  *                       (`--keep-cone-pairs` turns it off). `true` without `integer_grid_map`: `INVALID_INPUT`}
