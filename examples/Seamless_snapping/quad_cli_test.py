@@ -171,7 +171,7 @@ rc, text = run(square, out, "--grid-scale", "8", "--report", report)
 q = json.load(open(report))["quad_mesh"]
 nv, faces = faces_of(out) if rc == 0 else (0, [])
 check(rc == 0 and len(q["split_cones"]) == 2 and len(faces) == q["quads"] and nv == q["quad_vertices"] and q["euler_characteristic"] == 2 and
-      q["quads"] + 6 == int(q["uv_area"]) and "2 of valence 1 split into 3 of valence 3" in text,
+      q["quads"] + 6 == int(q["uv_area"]) and "2 of valence 1 split, into 3 of valence 3 each" in text,
       "Square map at grid scale 8: its two cones of 90 degrees split: %d %s" % (rc, text))
 os.remove(out)
 rc, text = run(square, out, "--grid-scale", "8", "--no-cone-split")

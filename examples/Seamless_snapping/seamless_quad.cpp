@@ -76,7 +76,8 @@ static const char* help_text =
   "(scale it with --grid-scale, or --quantize it), a map left with fold-overs or zero-area UV triangles with two corners\n"
   "at one point (listed, with the reason the constraints force them in the snap report's \"folds\"; a\n"
   "zero-area triangle with three distinct collinear corners is collapsed onto its long side), a cone of\n"
-  "90 degrees with another cone or the border within two cells (or any, with --no-cone-split), a grid\n"
+  "90 degrees whose 2 x 2 cells are not four whole cells around two regular points (or any, with\n"
+  "  --no-cone-split), a branch point next to another one or a cone, a grid\n"
   "too coarse for the surface (cells that wrap around or share more than a side: use a larger --grid-scale).\n"
   "\n"
   "Options:\n"
@@ -359,7 +360,7 @@ int main(int argc, char** argv)
   if(!quiet) {
     std::printf("quad mesh: %s (%.1f ms): %s\n", SS::status_name(q.status), q.total_ms, q.message.c_str());
     const std::string split = (q.split_cones.empty() ? std::string()
-                               : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split into 3 of valence 3") +
+                               : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split, into 3 of valence 3 each") +
                               (q.filled_branch_points.empty() ? std::string()
                                : ", " + std::to_string(q.filled_branch_points.size()) + " branch points filled");
     std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones%s)%s\n",

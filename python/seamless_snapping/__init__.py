@@ -461,7 +461,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     4(m - 1) of whose corners have valence 5 (report["filled_branch_points"]: rows of V; m - 1 quads more than the UV
     area each).
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
-    integer-grid map, a cone of valence 1 with another cone or the border within two cells, or any with
+    integer-grid map, a cone of valence 1 whose 2 x 2 cells are not four whole cells around two regular points, or any with
     split_valence_one_cones=False, a branch point on a grid line or next to another one, or any with
     fill_branched_cells=False, a grid too coarse for the surface, ...), "FOLD_OVERS" (fold-overs or
     zero-area UV triangles with two corners at one point, listed in report["fold_overs"] and

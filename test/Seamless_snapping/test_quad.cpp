@@ -212,8 +212,8 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   }
   // origins, valences, cones
   assert(qv.status == SS::SUCCESS || (split > 0 && qv.message.find("(a cone of valence 1)") != std::string::npos));
-  std::size_t cones = split > 0 ? rep.cones : 0, irregular = 0, met_cones = 0;
-  if(split == 0)
+  std::size_t cones = qv.status == SS::SUCCESS ? 0 : rep.cones, irregular = 0, met_cones = 0;
+  if(qv.status == SS::SUCCESS)
     for(vertex_descriptor v : m.vertices()) cones += !m.is_border(v) && qv.valence[std::size_t(v)] != 4 ? 1 : 0;
   CGAL::Bbox_3 box;
   for(vertex_descriptor v : m.vertices()) box += m.point(v).bbox();
@@ -866,6 +866,45 @@ static vertex_descriptor make_branched_disk(Mesh& m, UV_map& uv, const Point_2& 
   return w;
 }
 
+// The square [-k, k]^2 covered twice, branched at (0.5, 0.5) (a vertex wound twice): triangles of half a unit in
+// one chart (no cut), the two sheets crossing along the ray from (0.5, 0.5) to (k, 0.5); its border, two turns around
+// the square, lies on integer isolines, so every cell is whole. With `hole`, the triangle (0, 0), (0.5, 0), (0, 0.5)
+// of one sheet is left out: the branched cell [0, 1]^2 is then cut by that hole's border.
+static vertex_descriptor make_branched_square(Mesh& m, UV_map& uv, int k, bool hole)
+{
+  std::map<std::array<int, 3>, vertex_descriptor> vertex;           // (2u, 2v, sheet); the branch point has sheet 0
+  auto at = [&](int i, int j, int sheet) {
+    if(i == 1 && j == 1) sheet = 0;
+    const std::array<int, 3> key = {{i, j, sheet}};
+    auto it = vertex.find(key);
+    if(it != vertex.end()) return it->second;
+    return vertex[key] = m.add_vertex(Point_3(i / 2., j / 2., i == 1 && j == 1 ? 0.5 : sheet));
+  };
+  uv = uv_of(m);
+  const vertex_descriptor w = at(1, 1, 0);
+  for(int sheet = 0; sheet < 2; ++sheet)
+    for(int i = -2 * k; i < 2 * k; ++i)
+      for(int j = -2 * k; j < 2 * k; ++j) {
+        const bool above = j >= 1;                                   // the square lies above the line v = 0.5
+        auto corner = [&](int a, int b) {                          // on the ray (v = 0.5, u > 0.5): the sheets cross
+          return at(a, b, b == 1 && a > 1 && !above ? 1 - sheet : sheet);
+        };
+        const std::array<std::pair<int, int>, 3> t[2] = {{{{i, j}, {i + 1, j}, {i, j + 1}}},
+                                                         {{{i + 1, j}, {i + 1, j + 1}, {i, j + 1}}}};
+        for(int s = 0; s < 2; ++s) {
+          if(hole && sheet == 0 && s == 0 && i == 0 && j == 0) continue;
+          const face_descriptor f = m.add_face(corner(t[s][0].first, t[s][0].second), corner(t[s][1].first, t[s][1].second),
+                                               corner(t[s][2].first, t[s][2].second));
+          assert(f != Mesh::null_face());
+          for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+            for(int c = 0; c < 3; ++c)
+              if(m.target(h) == corner(t[s][std::size_t(c)].first, t[s][std::size_t(c)].second))
+                put(uv, h, Point_2(t[s][std::size_t(c)].first / 2., t[s][std::size_t(c)].second / 2.));
+        }
+      }
+  return w;
+}
+
 static void test_branch_points()
 {
   // on an integer point: 8 quads around it, a vertex of valence 8 (the cells along the diagonal border are cut)
@@ -899,6 +938,19 @@ static void test_branch_points()
     assert(kept.report.status == SS::INVALID_INPUT && kept.report.message.find("branches inside a cell") != std::string::npos &&
            kept.q.number_of_faces() == 0);
     if(turns == 3) continue;
+    // a covered map (the square [-2, 2]^2 twice, its border on isolines): the quads are its UV area 32 plus 1, chi 1
+    Mesh sq; UV_map uvs;
+    const vertex_descriptor ws = make_branched_square(sq, uvs, 2, false);
+    assert(SS::is_exact_integer_grid_map(sq, uvs) && SS::quad_valences(sq, uvs).valence[std::size_t(ws)] == 8);
+    Quad_result rs;
+    extract(sq, uvs, 1, rs);
+    check_quad_mesh(sq, uvs, 1, rs, "square covered twice, branched at (0.5, 0.5)");
+    assert(rs.report.covers_map() && rs.report.quads == 33 && rs.report.uv_area == Q(32) && rs.report.euler_characteristic == 1);
+    assert(rs.report.filled_branch_points == std::vector<std::size_t>(1, std::size_t(ws)) && rs.report.irregular_vertices == 4);
+    // its branched cell cut by a hole's border: the branch point would be left out unseen, refused (it was a SUCCESS)
+    Mesh sh; UV_map uvh;
+    make_branched_square(sh, uvh, 2, true);
+    check_refused(sh, uvh, 1, SS::INVALID_INPUT, "the cell at it is cut by the border", "branched cell cut by a hole");
     Mesh e; UV_map uve;
     make_branched_disk(e, uve, Point_2(0.5, 0), turns);
     check_refused(e, uve, 1, SS::INVALID_INPUT, "branches inside a cell", "branch point of 8 quarter turns on a grid line");

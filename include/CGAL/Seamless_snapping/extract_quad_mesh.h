@@ -84,7 +84,8 @@ struct Quad_vertex_origin
  *   become one quad: the cone is no quad vertex, the three corners of that quad next to the glued sides lose one edge
  *   each (valence 3 where they had 4: the cone's index carried by three vertices of index 1/4), and the mesh around it
  *   is unchanged; `Quad_mesh_report::split_cones` lists such cones. A cone whose 2 x 2 cells are not that (another
- *   cone, the border or a dropped cell within two cells of it; a larger `grid_scale` helps), or any cone of valence 1
+ *   cone at one of the two integer points next to it, a dropped cell among the four, cells that meet themselves or another
+ *   split's: a larger `grid_scale` helps), a cone whose own cell is cut by the border, or any cone of valence 1
  *   without `split_valence_one_cones`, gives `INVALID_INPUT`. A vertex around which the map winds `m > 1` times (an
  *   angle sum of `4m` quarter turns, e.g. a regular vertex the untangling left wound twice) is a branch point: on an
  *   integer point a quad vertex of valence `4m`; inside an open cell (no coordinate an integer) that cell is covered `m`
@@ -92,11 +93,12 @@ struct Quad_vertex_origin
  *   `2m - 1` quads, a ladder of rungs between those corners that repeats no edge (the branch point is no quad vertex,
  *   the `4(m - 1)` ends of the rungs have one edge more, valence 5 where they had 4; `Quad_mesh_report::filled_branch_points`
  *   lists them). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
- *   not surrounded by quads (another branch point, cone or dropped cell next to it), and any without
+ *   not surrounded by quads (another branch point, cone or dropped cell next to it that joins two of its corners), one
+ *   whose own cell is cut by the border, and any without
  *   `fill_branched_cells`;
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells
  *   sharing more than a side (a grid too coarse for the surface) give `INVALID_INPUT`, with advice to use a larger
- *   `grid_scale`; UVs beyond `2^30` grid units or more than `max_grid_cells` cells in the faces' UV bounding boxes
+ *   `grid_scale`; a UV coordinate of absolute value `2^30` grid units or more, or more than `max_grid_cells` cells in the faces' UV bounding boxes
  *   give `RANGE_EXCEEDED`;
  * - the map must hold at least one whole cell (a map of zero UV area, or one whose cells the border cuts all, has no
  *   quad mesh), else `INVALID_INPUT` with its UV area and advice to use a larger `grid_scale`.
@@ -190,7 +192,8 @@ struct Quad_vertex_origin
  *   \cgalParamNEnd
  *   \cgalParamNBegin{face_origin_map}
  *     \cgalParamDescription{receives, per quad, the faces of `tm` it covers (those whose UV triangle meets its open
- *                           cell), in the order of `faces(tm)`}
+ *                           cell), in the order of `faces(tm)`; a quad made by a repair gets those of all the cells it
+ *                           replaces (the 2 x 2 cells of a split cone; each quad of a filled cell all faces of that cell)}
  *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<QuadMesh>::%face_descriptor` as key
  *                    type and `std::vector<boost::graph_traits<TriangleMesh>::%face_descriptor>` as value type}
  *     \cgalParamDefault{none}

@@ -180,19 +180,36 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     const bool in_open_cell = cm.u[h] != std::floor(cm.u[h]) && cm.v[h] != std::floor(cm.v[h]);
     if(in_open_cell && opt.fill_branched_cells && is_branch_point(q)) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
-    if(q != 1) message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
-    else {
+    if(q != 1) {
+      message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
+      if(in_open_cell && is_branch_point(q))
+        message += "; fill_branched_cells(true) (the default; seamless_quad without --no-branch-fill) fills that cell's "
+                   "sheets with quads";
+    } else {
       message += "(a cone of valence 1): the cell at it would be a quad whose two sides at the cone are one edge, "
-                 "a corner twice; no quad mesh has it";
+                 "a corner twice, which no polygon mesh has; split_valence_one_cones(true) (the default; seamless_quad "
+                 "without --no-cone-split) makes the 2 x 2 cells at it one quad";
       if(vertex_winding_twice(cm, valence) >= 0) message += collapsed_cone_pairs_clause(cm, edge_k, v);
       else message += "; its triangles are not folded and no vertex of the map winds around its point by 7 quarter "
                       "turns or more (where a cone wound back from 5 quarter turns to 1 would leave the 4 it lacks), "
-                      "so this is most likely a cone of the map itself, a singularity of index 3/4 of its field: the "
-                      "map must then come from a cross field whose singularities have index at most 1/2";
+                      "so this is most likely a cone of the map itself, a singularity of index 3/4 of its field: its "
+                      "quad mesh as unit cells needs a cross field whose singularities have index at most 1/2";
     }
     return INVALID_INPUT;
   }
   return SUCCESS;
+}
+
+// The refusal of a vertex that a repair was to handle (a cone of valence 1, a branch point inside a cell: check_cones()
+// let it through) but whose own cell is cut by the border, so that the quad mesh would leave it out unseen.
+inline Status unreached_repair(int v, int quarter_turns, std::string& message)
+{
+  message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(quarter_turns) + " quarter turn" +
+            (quarter_turns == 1 ? " (a cone of valence 1)" : "s off the integer points (a branch point inside a cell)") +
+            ", and the cell at it is cut by the border (not on integer isolines): it is neither a quad nor can it be " +
+            (quarter_turns == 1 ? "split" : "filled") + ", so the quad mesh would leave it out; a larger grid_scale makes "
+            "the cells smaller";
+  return INVALID_INPUT;
 }
 
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
@@ -299,9 +316,9 @@ Status extract_quads(int scale_exponent, const Quad_options& opt, const std::vec
   for(int h : face_first_halfedges(cm)) face_halfedge[std::size_t(cm.face[h])] = h;
   const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
   const Collapsed_faces collapsed(cm.n_faces, collinear);
+  std::vector<char> branch_vertex;                   // off the integer points, filled (check_cones() let them through)
   {
     Cell_pieces pieces;                              // freed before the mesh is built (the peak memory: see below)
-    std::vector<char> branch_vertex;                 // off the integer points, filled (check_cones() let them through)
     if(opt.fill_branched_cells)
       for(int h = 0; h < cm.n_halfedges; ++h) {
         const int v = cm.target[h];
@@ -315,9 +332,13 @@ Status extract_quads(int scale_exponent, const Quad_options& opt, const std::vec
     if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, branch_vertex, out.cells, r.message);
   }
   if(s == SUCCESS) {
+    std::vector<char> reached(branch_vertex.size(), 0);   // before the fill empties the list
+    for(const Quad_cells::Branched& br : out.cells.branched) reached[std::size_t(br.vertex)] = 1;
     int failed = -1;
     s = fill_branched_cells(out.cells, facts.valence, out.repairs, failed, r.message);
     if(failed >= 0) r.message += collapsed_cone_pairs_clause(cm, edge_k, failed);
+    for(std::size_t v = 0; v < branch_vertex.size() && s == SUCCESS; ++v)
+      if(branch_vertex[v] && !reached[v]) s = unreached_repair(int(v), facts.valence[v], r.message);
   }
   if(s == SUCCESS) {
     std::vector<int> ones;                           // the quad vertices at cones of valence 1 (only with the split)
@@ -326,7 +347,14 @@ Status extract_quads(int scale_exponent, const Quad_options& opt, const std::vec
       if(p.kind == AT_VERTEX && !facts.on_border[std::size_t(p.element)] && facts.valence[std::size_t(p.element)] == 1)
         ones.push_back(int(i));
     }
-    s = split_valence_one_cones(out.cells, ones, out.repairs, r.message);
+    std::vector<char> reached(std::size_t(cm.n_vertices), 0);
+    for(int i : ones) reached[std::size_t(out.cells.points[std::size_t(i)].element)] = 1;
+    for(int v = 0; v < cm.n_vertices && s == SUCCESS; ++v)
+      if(facts.valence[std::size_t(v)] == 1 && !facts.on_border[std::size_t(v)] && !reached[std::size_t(v)])
+        s = unreached_repair(v, 1, r.message);
+    if(s == SUCCESS) s = split_valence_one_cones(out.cells, ones, out.repairs, r.message);
+  }
+  if(s == SUCCESS) {                                 // listed on success only (a refusal lists nothing as done)
     r.split_cones.assign(out.repairs.split_cones.begin(), out.repairs.split_cones.end());
     r.filled_branch_points.assign(out.repairs.filled_vertices.begin(), out.repairs.filled_vertices.end());
   }

@@ -22,8 +22,8 @@
 // carried by three vertices of index 1/4 (valence 3 where they had 4). The quads are then no longer the unit cells
 // there (three cells fewer than the UV area), which the verification accounts for (quad_mesh_checks.h).
 // The replacement needs exactly that neighbourhood: a and b of valence 4 with no other cells, and c, d, e, g four
-// other points; else (another cone, the border or a dropped cell within two cells of p) the cone is refused, with
-// the reason.
+// other points (any of them may be a cone or on the border); else (a cone at a or b, a dropped cell among the four,
+// cells that meet themselves or another split's) the cone is refused, with the reason.
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
@@ -101,7 +101,7 @@ inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>&
     if(ic < 0 || C[3] != e) return refuse("the cell across from it is missing or does not close the 2 x 2 cells");
     const int g = C[2];
     if(quads_of[a].size() != 4 || quads_of[b].size() != 4)
-      return refuse("the points next to it are corners of other cells too (another cone within two cells)");
+      return refuse("the integer points next to it are corners of other cells too (a cone there)");
     std::array<int, 7> all = {{p, a, b, c, d, e, g}};
     std::sort(all.begin(), all.end());
     if(std::adjacent_find(all.begin(), all.end()) != all.end())
