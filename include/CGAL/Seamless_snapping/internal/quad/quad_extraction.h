@@ -166,9 +166,8 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
 // integer point (a field cone does in an IGM; a vertex of 8 quarter turns need not) and must not be of valence 1 (its
 // cell would have a corner twice), but for what the repairs in `opt` handle after the cells are made (a cone of valence
 // 1 split, a branch point inside an open cell filled; one on a grid line is refused). Where such a vertex lies next to
-// a collapsed cone pair, the message says so; a cone
-// of valence 1 in a map where no vertex winds twice is most likely the map's own singularity, and the message says
-// that instead.
+// a collapsed cone pair, the message says so; a cone of valence 1 in a map where no vertex winds twice is most likely
+// the map's own singularity, and the message says that instead.
 inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence, const std::vector<char>& on_border,
                           const std::vector<int>& edge_k, const Quad_options& opt, std::string& message)
 {
@@ -210,6 +209,55 @@ inline Status unreached_repair(int v, int quarter_turns, std::string& message)
             (quarter_turns == 1 ? "split" : "filled") + ", so the quad mesh would leave it out; a larger grid_scale makes "
             "the cells smaller";
   return INVALID_INPUT;
+}
+
+// The branch points that fill_branched_cells() is to fill: per vertex 1 where the map winds around it more than once
+// inside an open cell (check_cones() let them through); empty where there is none or `opt` does not fill.
+inline std::vector<char> branch_vertices(const Corner_mesh& cm, const Map_facts& facts, const Quad_options& opt)
+{
+  std::vector<char> branch;
+  if(!opt.fill_branched_cells) return branch;
+  for(int h = 0; h < cm.n_halfedges; ++h) {
+    const int v = cm.target[h];
+    if(cm.is_border_halfedge(h) || facts.on_border[std::size_t(v)] || !is_branch_point(facts.valence[std::size_t(v)]) ||
+       cm.u[h] == std::floor(cm.u[h]) || cm.v[h] == std::floor(cm.v[h]))
+      continue;
+    branch.resize(std::size_t(cm.n_vertices), 0);
+    branch[std::size_t(v)] = 1;
+  }
+  return branch;
+}
+
+// The repairs of stage 2 on the stitched cells: the branched cells filled (branched_cells.h), then the cones of
+// valence 1 split (valence_one_cones.h); refused where one of them fails or where a vertex they were to handle has no
+// cell to repair (unreached_repair()). The report lists what was done, on success only.
+inline Status repair_cells(const Corner_mesh& cm, const Map_facts& facts, const std::vector<int>& edge_k,
+                           const std::vector<char>& branch_vertex, Quad_extraction& out, Quad_mesh_report& r)
+{
+  std::vector<char> reached(branch_vertex.size(), 0);   // before the fill empties the list
+  for(const Quad_cells::Branched& br : out.cells.branched) reached[std::size_t(br.vertex)] = 1;
+  int failed = -1;
+  Status s = fill_branched_cells(out.cells, facts.valence, out.repairs, failed, r.message);
+  if(failed >= 0) r.message += collapsed_cone_pairs_clause(cm, edge_k, failed);
+  for(std::size_t v = 0; v < branch_vertex.size() && s == SUCCESS; ++v)
+    if(branch_vertex[v] && !reached[v]) s = unreached_repair(int(v), facts.valence[v], r.message);
+  if(s != SUCCESS) return s;
+  std::vector<int> ones;                               // the quad vertices at cones of valence 1 (only with the split)
+  reached.assign(std::size_t(cm.n_vertices), 0);
+  for(std::size_t i = 0; i < out.cells.points.size(); ++i) {
+    const Integer_point& p = out.cells.points[i];
+    if(p.kind != AT_VERTEX || facts.on_border[std::size_t(p.element)] || facts.valence[std::size_t(p.element)] != 1) continue;
+    ones.push_back(int(i));
+    reached[std::size_t(p.element)] = 1;
+  }
+  for(int v = 0; v < cm.n_vertices; ++v)
+    if(facts.valence[std::size_t(v)] == 1 && !facts.on_border[std::size_t(v)] && !reached[std::size_t(v)])
+      return unreached_repair(v, 1, r.message);
+  s = split_valence_one_cones(out.cells, ones, out.repairs, r.message);
+  if(s != SUCCESS) return s;
+  r.split_cones.assign(out.repairs.split_cones.begin(), out.repairs.split_cones.end());
+  r.filled_branch_points.assign(out.repairs.filled_vertices.begin(), out.repairs.filled_vertices.end());
+  return SUCCESS;
 }
 
 // Stage 1. `cm` as built from the caller's mesh; on success its UVs are in grid units.
@@ -316,48 +364,13 @@ Status extract_quads(int scale_exponent, const Quad_options& opt, const std::vec
   for(int h : face_first_halfedges(cm)) face_halfedge[std::size_t(cm.face[h])] = h;
   const std::vector<Grid_transform> transition = halfedge_transitions(cm, edge_k);
   const Collapsed_faces collapsed(cm.n_faces, collinear);
-  std::vector<char> branch_vertex;                   // off the integer points, filled (check_cones() let them through)
+  const std::vector<char> branch_vertex = branch_vertices(cm, facts, opt);
   {
     Cell_pieces pieces;                              // freed before the mesh is built (the peak memory: see below)
-    if(opt.fill_branched_cells)
-      for(int h = 0; h < cm.n_halfedges; ++h) {
-        const int v = cm.target[h];
-        if(cm.is_border_halfedge(h) || facts.on_border[std::size_t(v)] || !is_branch_point(facts.valence[std::size_t(v)]) ||
-           cm.u[h] == std::floor(cm.u[h]) || cm.v[h] == std::floor(cm.v[h]))
-          continue;
-        branch_vertex.resize(std::size_t(cm.n_vertices), 0);
-        branch_vertex[std::size_t(v)] = 1;
-      }
     s = collect_cell_pieces(cm, face_halfedge, collapsed.is_collapsed, opt.max_grid_cells, pieces, r.message);
     if(s == SUCCESS) s = stitch_cells(cm, face_halfedge, transition, pieces, collapsed, branch_vertex, out.cells, r.message);
   }
-  if(s == SUCCESS) {
-    std::vector<char> reached(branch_vertex.size(), 0);   // before the fill empties the list
-    for(const Quad_cells::Branched& br : out.cells.branched) reached[std::size_t(br.vertex)] = 1;
-    int failed = -1;
-    s = fill_branched_cells(out.cells, facts.valence, out.repairs, failed, r.message);
-    if(failed >= 0) r.message += collapsed_cone_pairs_clause(cm, edge_k, failed);
-    for(std::size_t v = 0; v < branch_vertex.size() && s == SUCCESS; ++v)
-      if(branch_vertex[v] && !reached[v]) s = unreached_repair(int(v), facts.valence[v], r.message);
-  }
-  if(s == SUCCESS) {
-    std::vector<int> ones;                           // the quad vertices at cones of valence 1 (only with the split)
-    for(std::size_t i = 0; i < out.cells.points.size(); ++i) {
-      const Integer_point& p = out.cells.points[i];
-      if(p.kind == AT_VERTEX && !facts.on_border[std::size_t(p.element)] && facts.valence[std::size_t(p.element)] == 1)
-        ones.push_back(int(i));
-    }
-    std::vector<char> reached(std::size_t(cm.n_vertices), 0);
-    for(int i : ones) reached[std::size_t(out.cells.points[std::size_t(i)].element)] = 1;
-    for(int v = 0; v < cm.n_vertices && s == SUCCESS; ++v)
-      if(facts.valence[std::size_t(v)] == 1 && !facts.on_border[std::size_t(v)] && !reached[std::size_t(v)])
-        s = unreached_repair(v, 1, r.message);
-    if(s == SUCCESS) s = split_valence_one_cones(out.cells, ones, out.repairs, r.message);
-  }
-  if(s == SUCCESS) {                                 // listed on success only (a refusal lists nothing as done)
-    r.split_cones.assign(out.repairs.split_cones.begin(), out.repairs.split_cones.end());
-    r.filled_branch_points.assign(out.repairs.filled_vertices.begin(), out.repairs.filled_vertices.end());
-  }
+  if(s == SUCCESS) s = repair_cells(cm, facts, edge_k, branch_vertex, out, r);
   r.cells_ms = ms_since(t0);
   if(s != SUCCESS) return s;
   r.incomplete_cells = out.cells.incomplete;
