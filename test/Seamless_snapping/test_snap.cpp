@@ -1097,6 +1097,13 @@ static void test_exact_helpers()
     for(int k = 0; k < 6; ++k) s[k] = std::ldexp(c[k], e);
     assert(same(SI::nearest_double(SI::twice_triangle_uv_area(s[0], s[1], s[2], s[3], s[4], s[5])), std::ldexp(d, 2 * e)));
   }
+  // ties, which random triangles never hit, go to the even significand: 1 + 2^-53 -> 1, 1 + 3 2^-53 -> 1 + 2^-51, and
+  // the same negated
+  const double u = std::ldexp(1., -53);
+  assert(same(SI::nearest_double(SI::twice_triangle_uv_area(0, 0, 1, u, -1, 1)), 1.));
+  assert(same(SI::nearest_double(SI::twice_triangle_uv_area(0, 0, 1, 3 * u, -1, 1)), 1 + 4 * u));
+  assert(same(SI::nearest_double(SI::twice_triangle_uv_area(0, 0, 1, u, 1, -1)), -1.));
+  assert(same(SI::nearest_double(SI::twice_triangle_uv_area(0, 0, 1, 3 * u, 1, -1)), -1 - 4 * u));
   std::printf("snap: exact helpers: ldexp/frexp bit for bit, Dyadic_sum = Gmpq on %zu of %zu sums (the rest do not fit), "
               "atan2 within %.2g, nearest_double = Gmpq nearest and scale covariant (Mpzf::to_double() differs on %zu of %d)\n",
               fits, checked, worst, limb_rounded, nearest_checks);
