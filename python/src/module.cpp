@@ -490,12 +490,13 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   origins["QV_vertex"] = vertex;
   origins["QV_uv"] = uv;
   origins["QF_faces"] = faces;
-  std::vector<long long> split;                             // rows of V (the report's numbers are the built mesh's)
-  for(std::size_t v : r.split_cones) split.push_back(rows.vertex_row[v]);
-  origins["split_cones"] = py::array_t<long long>(py::ssize_t(split.size()), split.data());
-  std::vector<long long> filled;
-  for(std::size_t v : r.filled_branch_points) filled.push_back(rows.vertex_row[v]);
-  origins["filled_branch_points"] = py::array_t<long long>(py::ssize_t(filled.size()), filled.data());
+  auto vertex_rows = [&](const std::vector<std::size_t>& vs) {   // rows of V (the report's numbers are the built mesh's)
+    std::vector<long long> out;
+    for(std::size_t v : vs) out.push_back(rows.vertex_row[v]);
+    return py::array_t<long long>(py::ssize_t(out.size()), out.data());
+  };
+  origins["split_cones"] = vertex_rows(r.split_cones);
+  origins["filled_branch_points"] = vertex_rows(r.filled_branch_points);
   add_patches(q, origins);
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }

@@ -25,7 +25,6 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
-#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 
 #include <algorithm>
 #include <array>
@@ -47,19 +46,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
 {
   repairs.valence_change.assign(cells.points.size(), 0);
   if(cells.branched.empty()) return SUCCESS;
-  Index_lists quads_of;                                   // point -> its quads
-  quads_of.build(int(cells.points.size()), [&](auto emit) {
-    for(std::size_t q = 0; q < cells.quads.size(); ++q)
-      for(int p : cells.quads[q]) emit(p, int(q));
-  });
-  // a quad with the side from -> to (in that direction)
-  auto has_side = [&](int from, int to) {
-    for(int q : quads_of[from])
-      for(int i = 0; i < 4; ++i)
-        if(cells.quads[std::size_t(q)][std::size_t(i)] == from && cells.quads[std::size_t(q)][std::size_t((i + 1) % 4)] == to)
-          return true;
-    return false;
-  };
+  const Quad_incidence incidence(cells);                  // of the unit cells (the added quads are appended at the end)
   std::vector<std::array<int, 4> > added;
   std::vector<std::size_t> added_from;                    // per added quad: its branched cell
   std::vector<int> change(cells.points.size(), 0);
@@ -86,10 +73,10 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
     // the loop: the sides between the cell's corners with a quad on one side only, reversed (the hole's direction)
     std::vector<int> next(n, -1);
     for(std::size_t i = 0; i < n; ++i)
-      for(int q : quads_of[K[i]])
+      for(int q : incidence.quads_of[K[i]])
         for(int k = 0; k < 4; ++k) {
           const int a = cells.quads[std::size_t(q)][std::size_t(k)], b = cells.quads[std::size_t(q)][std::size_t((k + 1) % 4)];
-          if(a != K[i] || !in_cell(b) || has_side(b, a)) continue;
+          if(a != K[i] || !in_cell(b) || incidence.has_side(b, a)) continue;
           if(next[rank(b)] >= 0 && next[rank(b)] != a) return refuse("a corner point has two open sides");
           next[rank(b)] = a;                              // the hole runs b -> a
         }
@@ -107,7 +94,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
       bool free = true;
       for(std::size_t i = 0; i + 2 < n / 2 && free; ++i) {
         const int a = loop[(s + i + 1) % n], b = loop[(s + n - 2 - i) % n];
-        free = !has_side(a, b) && !has_side(b, a);
+        free = !incidence.has_side(a, b) && !incidence.has_side(b, a);
       }
       if(free) start = s;
     }

@@ -35,6 +35,7 @@
 #include <CGAL/Seamless_snapping/internal/quad/chart_union_find.h>
 #include <CGAL/Seamless_snapping/internal/quad/collapsed_faces.h>
 #include <CGAL/Seamless_snapping/internal/quad/integer_points.h>
+#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>   // vertex_pair_name()
 
 #include <algorithm>
@@ -74,6 +75,37 @@ struct Cell_repairs
   std::vector<int> filled_vertices;    // the vertices whose branched cells were filled
   std::size_t extra_quads = 0;         // quads beyond the UV area that the fills added (m - 1 per cell covered m times)
   std::vector<int> valence_change;     // per quad vertex: its edges beyond (or below) what the map gives its point
+};
+
+// The quads at every point of `cells` (once per corner of each) and the quad with a given side, for the repairs
+// (branched_cells.h, valence_one_cones.h); valid while cells.quads is unchanged
+struct Quad_incidence
+{
+  const Quad_cells& cells;
+  Index_lists quads_of;
+
+  explicit Quad_incidence(const Quad_cells& c) : cells(c)
+  {
+    quads_of.build(int(c.points.size()), [&](auto emit) {
+      for(std::size_t q = 0; q < c.quads.size(); ++q)
+        for(int p : c.quads[q]) emit(p, int(q));
+    });
+  }
+
+  // the quad other than `not_q` with the side from -> to (in that direction), and in `rank` the place of `from` in it;
+  // -1 if none
+  int quad_with_side(int from, int to, int not_q, int& rank) const
+  {
+    for(int q : quads_of[from]) {
+      if(q == not_q) continue;
+      for(rank = 0; rank < 4; ++rank)
+        if(cells.quads[std::size_t(q)][std::size_t(rank)] == from && cells.quads[std::size_t(q)][std::size_t((rank + 1) % 4)] == to)
+          return q;
+    }
+    return -1;
+  }
+
+  bool has_side(int from, int to) const { int rank; return quad_with_side(from, to, -1, rank) >= 0; }
 };
 
 inline std::string cell_name(const Grid_point& c, int f)

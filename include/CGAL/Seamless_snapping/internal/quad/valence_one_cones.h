@@ -27,7 +27,6 @@
 
 #include <CGAL/Seamless_snapping/Status.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
-#include <CGAL/Seamless_snapping/internal/surface/index_lists.h>
 
 #include <algorithm>
 #include <array>
@@ -54,23 +53,13 @@ inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>&
                                       std::string& message)
 {
   if(cones.empty()) return SUCCESS;
-  Index_lists quads_of;                                   // point -> its quads (once per corner)
-  quads_of.build(int(cells.points.size()), [&](auto emit) {
-    for(std::size_t q = 0; q < cells.quads.size(); ++q)
-      for(int p : cells.quads[q]) emit(p, int(q));
-  });
+  const Quad_incidence incidence(cells);
+  const Index_lists& quads_of = incidence.quads_of;
   // the quad other than `not_q` with the directed side from -> to, rotated to start at `from`; {-1} if none
   auto with_side = [&](int from, int to, int not_q, int& found) {
-    found = -1;
-    for(int q : quads_of[from]) {
-      if(q == not_q) continue;
-      for(int i = 0; i < 4; ++i)
-        if(cells.quads[std::size_t(q)][std::size_t(i)] == from && cells.quads[std::size_t(q)][std::size_t((i + 1) % 4)] == to) {
-          found = q;
-          return starting_at(cells.quads[std::size_t(q)], i);
-        }
-    }
-    return std::array<int, 4>{{-1, -1, -1, -1}};
+    int rank = 0;
+    found = incidence.quad_with_side(from, to, not_q, rank);
+    return found < 0 ? std::array<int, 4>{{-1, -1, -1, -1}} : starting_at(cells.quads[std::size_t(found)], rank);
   };
   std::vector<char> quad_gone(cells.quads.size(), 0), point_gone(cells.points.size(), 0);
   std::vector<std::array<int, 4> > merged;                // per split: (c, d, g, e)
