@@ -108,6 +108,45 @@ struct Quad_incidence
   bool has_side(int from, int to) const { int rank; return quad_with_side(from, to, -1, rank) >= 0; }
 };
 
+// Removes the quads with `quad_gone` set (their faces with them) and the points with `point_gone` set (no remaining quad
+// or branched cell may have them as a corner), then appends `added` with the faces `added_faces` each; the others keep
+// their order, and the corners of the quads and branched cells and `per_point` (e.g. Cell_repairs::valence_change)
+// follow the new numbering of the points. For the repairs that replace cells (valence_one_cones.h, branched_cells.h).
+inline void replace_cells(Quad_cells& cells, const std::vector<char>& quad_gone, const std::vector<char>& point_gone,
+                          const std::vector<std::array<int, 4> >& added, const std::vector<std::vector<int> >& added_faces,
+                          std::vector<int>& per_point)
+{
+  std::vector<int> new_index(cells.points.size(), -1);
+  std::vector<Integer_point> points;
+  std::vector<int> per;
+  for(std::size_t i = 0; i < cells.points.size(); ++i)
+    if(!point_gone[i]) {
+      new_index[i] = int(points.size());
+      points.push_back(cells.points[i]);
+      per.push_back(per_point[i]);
+    }
+  std::vector<std::array<int, 4> > quads;
+  std::vector<std::size_t> faces_first(1, 0);
+  std::vector<int> faces;
+  auto add = [&](const std::array<int, 4>& q, std::vector<int>::const_iterator b, std::vector<int>::const_iterator e) {
+    quads.push_back({{new_index[std::size_t(q[0])], new_index[std::size_t(q[1])], new_index[std::size_t(q[2])],
+                      new_index[std::size_t(q[3])]}});
+    faces.insert(faces.end(), b, e);
+    faces_first.push_back(faces.size());
+  };
+  for(std::size_t q = 0; q < cells.quads.size(); ++q)
+    if(!quad_gone[q])
+      add(cells.quads[q], cells.faces.cbegin() + long(cells.faces_first[q]), cells.faces.cbegin() + long(cells.faces_first[q + 1]));
+  for(std::size_t k = 0; k < added.size(); ++k) add(added[k], added_faces[k].cbegin(), added_faces[k].cend());
+  for(Quad_cells::Branched& br : cells.branched)
+    for(int& c : br.corners) c = new_index[std::size_t(c)];
+  cells.points.swap(points);
+  cells.quads.swap(quads);
+  cells.faces.swap(faces);
+  cells.faces_first.swap(faces_first);
+  per_point.swap(per);
+}
+
 inline std::string cell_name(const Grid_point& c, int f)
 {
   return "cell [" + std::to_string(c.u) + ", " + std::to_string(c.u + 1) + "] x [" + std::to_string(c.v) + ", " +

@@ -102,43 +102,17 @@ inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>&
     merged.push_back({{c, d, g, e}});
     merged_from.push_back({{f, ia, ib, ic}});
   }
-  // renumber: the points and quads that stay, in order, then the merged quads
-  std::vector<int> new_index(cells.points.size(), -1);
-  Quad_cells result;
-  result.incomplete = cells.incomplete;
-  result.first_incomplete_face = cells.first_incomplete_face;
-  for(std::size_t i = 0; i < cells.points.size(); ++i)
-    if(!point_gone[i]) { new_index[i] = int(result.points.size()); result.points.push_back(cells.points[i]); }
-  result.faces_first.assign(1, 0);
-  auto add_quad = [&](const std::array<int, 4>& q, const std::vector<int>& covered) {
-    result.quads.push_back({{new_index[std::size_t(q[0])], new_index[std::size_t(q[1])], new_index[std::size_t(q[2])],
-                             new_index[std::size_t(q[3])]}});
-    result.faces.insert(result.faces.end(), covered.begin(), covered.end());
-    result.faces_first.push_back(result.faces.size());
-  };
-  auto faces_of = [&](int q) {
-    return std::vector<int>(cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
-                            cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
-  };
-  for(std::size_t q = 0; q < cells.quads.size(); ++q)
-    if(!quad_gone[q]) add_quad(cells.quads[q], faces_of(int(q)));
-  std::vector<int> change(result.points.size(), 0);
-  for(std::size_t i = 0; i < cells.points.size(); ++i)
-    if(new_index[i] >= 0) change[std::size_t(new_index[i])] = repairs.valence_change[i];
+  std::vector<std::vector<int> > covered(merged.size());
   for(std::size_t s = 0; s < merged.size(); ++s) {
-    std::vector<int> covered;
-    for(int q : merged_from[s]) { const std::vector<int> fs = faces_of(q); covered.insert(covered.end(), fs.begin(), fs.end()); }
-    std::sort(covered.begin(), covered.end());
-    covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
-    add_quad(merged[s], covered);
-    for(int k : {0, 1, 3}) --change[std::size_t(new_index[std::size_t(merged[s][std::size_t(k)])])];   // c, d, e
+    for(int q : merged_from[s])
+      covered[s].insert(covered[s].end(), cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
+                        cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
+    std::sort(covered[s].begin(), covered[s].end());
+    covered[s].erase(std::unique(covered[s].begin(), covered[s].end()), covered[s].end());
+    for(int k : {0, 1, 3}) --repairs.valence_change[std::size_t(merged[s][std::size_t(k)])];   // c, d, e
   }
   for(int p : cones) repairs.split_cones.push_back(cells.points[std::size_t(p)].element);
-  repairs.valence_change.swap(change);
-  cells.points.swap(result.points);
-  cells.quads.swap(result.quads);
-  cells.faces.swap(result.faces);
-  cells.faces_first.swap(result.faces_first);
+  replace_cells(cells, quad_gone, point_gone, merged, covered, repairs.valence_change);
   return SUCCESS;
 }
 
