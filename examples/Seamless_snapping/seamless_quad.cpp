@@ -70,7 +70,8 @@ static const char* help_text =
   "the quad mesh report's \"split_cones\" lists them, 3 quads fewer than the UV area each). A vertex\n"
   "around which the map winds m > 1 times inside a cell (a branch point the untangling left) covers\n"
   "that cell m times: the 4m-gon is filled with 2m - 1 quads, 4(m - 1) of whose corners have valence 5\n"
-  "(fill_branched_cells(true); \"filled_branch_points\", m - 1 quads more than the UV area each).\n"
+  "(fill_branched_cells(true); \"filled_branch_points\", m - 1 quads more than the UV area each); the cell\n"
+  "of a 90 degree cone next to that cell is filled with it (\"absorbed_cones\", one quad fewer each).\n"
   "\n"
   "Refused (exit 1, nothing written), with the reason: a map that is not near an integer-grid map\n"
   "(scale it with --grid-scale, or --quantize it), a map left with fold-overs or zero-area UV triangles with two corners\n"
@@ -362,13 +363,16 @@ int main(int argc, char** argv)
     const std::string split = (q.split_cones.empty() ? std::string()
                                : ", " + std::to_string(q.split_cones.size()) + " of valence 1 split, into 3 of valence 3 each") +
                               (q.filled_branch_points.empty() ? std::string()
-                               : ", " + std::to_string(q.filled_branch_points.size()) + " branch points filled");
+                               : ", " + std::to_string(q.filled_branch_points.size()) + " branch points filled") +
+                              (q.absorbed_cones.empty() ? std::string()
+                               : ", " + std::to_string(q.absorbed_cones.size()) + " of valence 1 filled with a branched cell");
     std::printf("verified: all quads, manifold, %s, Euler characteristic %d (map %d), %zu irregular vertices (%zu cones%s)%s\n",
                 q.boundary_loops == 0 ? "closed" : (std::to_string(q.boundary_loops) + " boundary loops").c_str(),
                 q.euler_characteristic, q.input_euler_characteristic, q.irregular_vertices, q.cones, split.c_str(),
                 !q.covers_map() ? "" : q.split_cones.empty() && q.filled_branch_points.empty()
                                        ? ", as many quads as the exact UV area"
-                                       : ", as many quads as the exact UV area, less 3 per split cone, plus m - 1 per filled branch point");
+                                       : ", as many quads as the exact UV area, less 3 per split cone, plus m - 1 per filled branch "
+                                         "point, less 1 per cone cell filled with one");
     std::printf("patches: %s\n", patches.message.c_str());
     if(!layout_file.empty()) std::printf("layout: %s\n", lay.message.c_str());
   }

@@ -459,7 +459,8 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     per split cone). A vertex around which the map winds m > 1 times inside a cell (a branch point, e.g. one the
     untangling left) covers that cell m times: with fill_branched_cells=True that 4m-gon is filled with 2m - 1 quads,
     4(m - 1) of whose corners have valence 5 (report["filled_branch_points"]: rows of V; m - 1 quads more than the UV
-    area each).
+    area each); the cell of a cone of 90 degrees next to such a cell is filled with it (report["absorbed_cones"]: rows
+    of V; one quad fewer than the UV area each).
     Refused (SnapError, or None in place of QV and QF with raise_on_failure=False): "INVALID_INPUT" (not an exact
     integer-grid map, a cone of valence 1 whose 2 x 2 cells are not four whole cells around two regular points, or any with
     split_valence_one_cones=False, a branch point on a grid line or next to another one, or any with

@@ -497,6 +497,7 @@ py::tuple extract_quad_mesh(const MatrixXdR& V, const MatrixXlR& F, const Matrix
   };
   origins["split_cones"] = vertex_rows(r.split_cones);
   origins["filled_branch_points"] = vertex_rows(r.filled_branch_points);
+  origins["absorbed_cones"] = vertex_rows(r.absorbed_cones);
   add_patches(q, origins);
   return py::make_tuple(QV, QF, r.to_json(), origins);
 }

@@ -890,34 +890,39 @@ def test_extract_quad_mesh_generated():
     assert len(QF) == 256 and r["boundary_loops"] == 1
 
 
-def quarter_plane_cone(n):
+def quarter_plane_cone(n, sheets=1):
     """The quarter plane [0, n]^2 with its sides glued ((t, 0) ~ (0, t): cut edges with a quarter turn): a cone of 90
-    degrees (valence 1) at (0, 0), row 0 of V; triangles of half a unit, a fan of 4 around the cone. 3D on a paper cone."""
+    degrees (valence 1) at (0, 0), row 0 of V; triangles of half a unit, a fan of 4 around the cone. 3D on a paper cone.
+    With sheets=2: two such sheets (3D one unit apart) crossing along the ray from (1.5, 0.5) to (n, 0.5), a map wound
+    twice around the vertex at (1.5, 0.5) inside the cell [1, 2] x [0, 1], which shares its sides u = 1 with the cells
+    of the two cones. Returns V, F, UV, FUV, the rows of the cones and the row of that vertex (None with one sheet)."""
     rows, V, UV, F, FUV = {}, [], [], [], []
-    def vertex(i, j):
-        key = (j, 0) if i == 0 and j > 0 else (i, j)
+    def vertex(i, j, sheet):
+        key = ((j, 0) if i == 0 and j > 0 else (i, j)) + (0 if (i, j) == (3, 1) else sheet,)
         if key not in rows:
-            r, t = np.hypot(*key) / 2, np.arctan2(key[1], key[0])
+            r, t = np.hypot(key[0], key[1]) / 2, np.arctan2(key[1], key[0])
             rows[key] = len(V)
-            V.append([r / 4 * np.cos(4 * t), r / 4 * np.sin(4 * t), r * np.sqrt(15.0) / 4])
+            V.append([r / 4 * np.cos(4 * t), r / 4 * np.sin(4 * t), r * np.sqrt(15.0) / 4 + key[2]])
         return rows[key]
-    def triangle(*corners):
-        F.append([vertex(i, j) for i, j in corners])
+    def triangle(sheet, above, *corners):      # below the ray the other sheet's vertices on it
+        F.append([vertex(i, j, 1 - sheet if j == 1 and i > 3 and not above and sheets == 2 else sheet) for i, j in corners])
         FUV.append(list(range(len(UV), len(UV) + 3)))
         UV.extend([[i / 2, j / 2] for i, j in corners])
     ring = [(2, 0), (2, 1), (2, 2), (1, 2), (0, 2)]
-    for k in range(4):
-        triangle((0, 0), ring[k], ring[k + 1])
-    for i in range(2 * n):
-        for j in range(2 * n):
-            if i >= 2 or j >= 2:
-                triangle((i, j), (i + 1, j), (i + 1, j + 1))
-                triangle((i, j), (i + 1, j + 1), (i, j + 1))
-    return np.array(V), np.array(F), np.array(UV), np.array(FUV)
+    for sheet in range(sheets):
+        for k in range(4):
+            triangle(sheet, k >= 1, (0, 0), ring[k], ring[k + 1])
+        for i in range(2 * n):
+            for j in range(2 * n):
+                if i >= 2 or j >= 2:
+                    triangle(sheet, j >= 1, (i, j), (i + 1, j), (i + 1, j + 1))
+                    triangle(sheet, j >= 1, (i, j), (i + 1, j + 1), (i, j + 1))
+    cones = [rows[(0, 0, sheet)] for sheet in range(sheets)]
+    return np.array(V), np.array(F), np.array(UV), np.array(FUV), cones, rows.get((3, 1, 0))
 
 
 def test_extract_quad_mesh_splits_a_cone_of_90_degrees():
-    V, F, UV, FUV = quarter_plane_cone(3)
+    V, F, UV, FUV, _, _ = quarter_plane_cone(3)
     assert ss.is_exact_integer_grid_map(V, F, UV, FUV)
     UV_before = UV.copy()
     QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
@@ -935,6 +940,21 @@ def test_extract_quad_mesh_splits_a_cone_of_90_degrees():
         ss.extract_quad_mesh(V, F, UV, FUV, split_valence_one_cones=False)
     assert e.value.report["status"] == "INVALID_INPUT" and "(a cone of valence 1)" in e.value.report["message"]
     assert np.array_equal(UV, UV_before)
+
+
+def test_extract_quad_mesh_fills_a_cone_cell_with_a_branched_cell():
+    # two sheets of the quarter plane wound twice around (1.5, 0.5): the cell of each sheet's 90-degree cone shares a
+    # side with the branched cell, and the three become one ladder of 3 quads for their area 4
+    V, F, UV, FUV, cones, w = quarter_plane_cone(3, sheets=2)
+    assert ss.is_exact_integer_grid_map(V, F, UV, FUV)
+    QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
+    assert sorted(r["absorbed_cones"]) == sorted(cones) and list(r["filled_branch_points"]) == [w]
+    assert len(r["split_cones"]) == 0 and not set(cones + [w]) & set(r["QV_vertex"])
+    assert Fraction(r["uv_area"]) == 18 and len(QF) == r["quads"] == 17 and r["euler_characteristic"] == 1
+    assert len(QV) - len({tuple(sorted((a, b))) for q in QF for a, b in zip(q, np.roll(q, -1))}) + len(QF) == 1
+    with pytest.raises(ss.SnapError) as e:                  # refused without the fill
+        ss.extract_quad_mesh(V, F, UV, FUV, fill_branched_cells=False)
+    assert e.value.report["status"] == "INVALID_INPUT"
 
 
 def branched_disk(center, turns, N=16, rings=10):

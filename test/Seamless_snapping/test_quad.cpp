@@ -198,13 +198,15 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
   // cones of valence 1 split (valence_one_cones.h): each is no quad vertex, its 2 x 2 cells one quad, three corners of
   // valence 3 for it; quad_valences() refuses such a map (no VERTEX gets a valence of 1); branch points filled
   // (branched_cells.h): no quad vertex, its cell of area m 2m - 1 quads, the rungs' ends of valence 5. Where the map
-  // was repaired so, the valences are checked by their count only
-  const std::size_t split = rep.split_cones.size(), filled = rep.filled_branch_points.size();
+  // was repaired so, the valences are checked by their count only; a cone of valence 1 whose cell was filled with a
+  // branched cell (absorbed) is no quad vertex, its cell no quad
+  const std::size_t split = rep.split_cones.size() + rep.absorbed_cones.size(), filled = rep.filled_branch_points.size();
   const SS::Quad_valences qv = SS::quad_valences(m, uv);
   long extra = 0;                                               // quads the fills add beyond the area: m - 1 each
   for(std::size_t w : rep.filled_branch_points) extra += qv.status == SS::SUCCESS ? qv.valence[w] / 4 - 1 : 1;
   if(covers) {
-    assert(Q(long(q.number_of_faces() + 3 * split) - extra) == area);   // the exact UV area (3 fewer per split, m - 1 more per fill)
+    assert(Q(long(q.number_of_faces() + 3 * rep.split_cones.size() + rep.absorbed_cones.size()) - extra) == area);   // the exact UV
+    // area (3 fewer per split, m - 1 more per fill, 1 fewer per absorbed cone cell)
     assert(euler(q) == euler(m));
     assert(!CGAL::is_closed(m) || CGAL::is_closed(q));
   } else {
@@ -228,7 +230,8 @@ static Patch_sizes check_quad_mesh(const Mesh& m, UV_map uv, double S, const Qua
     irregular += !border && d != 4 ? 1 : 0;
     if(o.location == Origin::VERTEX) assert(++mesh_vertices[m.target(o.halfedge)] == 1);   // one quad vertex per mesh vertex
     if(o.location == Origin::VERTEX)
-      for(std::size_t c : rep.split_cones) assert(std::size_t(m.target(o.halfedge)) != c);   // a split cone is none
+      for(const std::vector<std::size_t>* l : {&rep.split_cones, &rep.absorbed_cones})
+        for(std::size_t c : *l) assert(std::size_t(m.target(o.halfedge)) != c);   // a split or absorbed cone is none
     if(o.location == Origin::VERTEX)
       for(std::size_t w : rep.filled_branch_points) assert(std::size_t(m.target(o.halfedge)) != w);   // nor a branch point
     if((border && !covers) || split + filled > 0) continue;
@@ -990,6 +993,48 @@ static vertex_descriptor make_quarter_plane_cone(Mesh& m, UV_map& uv, int n)
   return at(0, 0);
 }
 
+// Two sheets of the quarter plane of make_quarter_plane_cone() (a cone of 90 degrees at (0, 0) in each), crossing along
+// the ray from (1.5, 0.5) to (n, 0.5): the map winds twice around the vertex at (1.5, 0.5), a branch point of order 2
+// inside the cell [1, 2] x [0, 1], and the cell of each cone, (p, a, b, a) with a = (1, 0), b = (1, 1), shares its side
+// u = 1 with that branched cell. A disk (chi = 2 - 1), its border twice around the square; in 3D the cones of the
+// two sheets one unit apart. `cones`: the two cone vertices.
+static vertex_descriptor make_branched_quarter_planes(Mesh& m, UV_map& uv, int n, std::vector<vertex_descriptor>& cones)
+{
+  std::map<std::array<int, 3>, vertex_descriptor> vertex;      // (2u, 2v, sheet), the v axis glued onto the u axis
+  auto at = [&](int i, int j, int sheet) {
+    std::array<int, 3> key = {{i == 0 && j > 0 ? j : i, i == 0 && j > 0 ? 0 : j, sheet}};
+    if(key[0] == 3 && key[1] == 1) key[2] = 0;                   // the branch point, one vertex
+    auto it = vertex.find(key);
+    if(it != vertex.end()) return it->second;
+    const double r = std::hypot(key[0], key[1]) / 2, theta = std::atan2(double(key[1]), double(key[0]));
+    return vertex[key] = m.add_vertex(Point_3(r / 4 * std::cos(4 * theta), r / 4 * std::sin(4 * theta),
+                                              r * std::sqrt(15.) / 4 + key[2]));
+  };
+  uv = uv_of(m);
+  for(int sheet = 0; sheet < 2; ++sheet) {
+    auto triangle = [&](std::array<std::pair<int, int>, 3> c, bool above) {
+      auto corner = [&](const std::pair<int, int>& x) {          // on the ray the sheets cross
+        return at(x.first, x.second, x.second == 1 && x.first > 3 && !above ? 1 - sheet : sheet);
+      };
+      const face_descriptor f = m.add_face(corner(c[0]), corner(c[1]), corner(c[2]));
+      assert(f != Mesh::null_face());
+      halfedge_descriptor h = m.halfedge(f);
+      while(m.target(h) != corner(c[0])) h = m.next(h);
+      for(int k = 0; k < 3; ++k, h = m.next(h)) put(uv, h, Point_2(c[std::size_t(k)].first / 2., c[std::size_t(k)].second / 2.));
+    };
+    const std::pair<int, int> ring[5] = {{2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}};
+    for(int k = 0; k < 4; ++k) triangle({{{0, 0}, ring[k], ring[k + 1]}}, k >= 1);
+    for(int i = 0; i < 2 * n; ++i)
+      for(int j = 0; j < 2 * n; ++j) {
+        if(i < 2 && j < 2) continue;
+        triangle({{{i, j}, {i + 1, j}, {i + 1, j + 1}}}, j >= 1);
+        triangle({{{i, j}, {i + 1, j + 1}, {i, j + 1}}}, j >= 1);
+      }
+    cones.push_back(at(0, 0, sheet));
+  }
+  return at(3, 1, 0);
+}
+
 // A cone of 90 degrees: its 2 x 2 cells made one quad (split_valence_one_cones, the default), or refused without that
 static void test_valence_one_cones()
 {
@@ -1017,6 +1062,33 @@ static void test_valence_one_cones()
       assert(kept.report.status == SS::INVALID_INPUT && kept.report.message.find("(a cone of valence 1)") != std::string::npos);
       assert(kept.q.number_of_vertices() == 1 && kept.q.number_of_faces() == 0 && uv_bits(m, uv) == bits);
     }
+  // next to a branched cell (two sheets crossing, make_branched_quarter_planes()): each cone's cell is filled with it,
+  // the disk of the three bounded by the 8 corners of the branched cell: 3 quads for the area 4; at grid scale 2 the
+  // branch point is an integer point (a quad vertex of valence 8) and the cones are split
+  for(int n : {3, 4}) {
+    Mesh m; UV_map uv;
+    std::vector<vertex_descriptor> cones;
+    const vertex_descriptor w = make_branched_quarter_planes(m, uv, n, cones);
+    assert(SS::is_exact_integer_grid_map(m, uv) && CGAL::is_valid_polygon_mesh(m));
+    assert(SS::quad_valences(m, uv).status == SS::INVALID_INPUT);   // it has no valence for a cone of 90 degrees
+    const std::string what = "two sheets of the quarter plane [0, " + std::to_string(n) + "]^2 wound around (1.5, 0.5)";
+    Quad_result r;
+    extract(m, uv, 1, r);
+    check_quad_mesh(m, uv, 1, r, what);
+    std::vector<std::size_t> absorbed = r.report.absorbed_cones;
+    std::sort(absorbed.begin(), absorbed.end());
+    assert(absorbed == std::vector<std::size_t>({std::size_t((std::min)(cones[0], cones[1])), std::size_t((std::max)(cones[0], cones[1]))}));
+    assert(r.report.filled_branch_points == std::vector<std::size_t>(1, std::size_t(w)) && r.report.split_cones.empty());
+    assert(r.report.covers_map() && r.report.uv_area == Q(2 * n * n) && r.report.quads == std::size_t(2 * n * n - 1));
+    assert(r.report.euler_characteristic == 1 && r.report.boundary_loops == 1 && r.report.cones == 3);
+    Quad_result fine;
+    extract(m, uv, 2, fine);
+    check_quad_mesh(m, uv, 2, fine, what + ", grid scale 2");
+    assert(fine.report.split_cones.size() == 2 && fine.report.absorbed_cones.empty() && fine.report.filled_branch_points.empty());
+    Quad_result kept;
+    kept.report = SS::extract_quad_mesh(m, uv, kept.q, SS::parameters::fill_branched_cells(false));
+    assert(kept.report.status == SS::INVALID_INPUT && kept.q.number_of_faces() == 0);
+  }
 }
 
 // quad_mesh_patches() refuses what is not a manifold quad mesh (INVALID_INPUT naming the face or vertex) and then
@@ -1374,6 +1446,32 @@ static void test_quantized_dragon()
   assert(r.report.irregular_vertices == s.field_cones);
 }
 
+// Directional's full-seamless dragon (../shared/data; 24,984 faces) snapped to an integer-grid map at grid scale 1 with
+// its cone pairs merged and the others on one integer point separated, untangled: no fold-over and no zero-area
+// triangle left, but 12 vertices around which the map winds twice inside a cell. Each branched cell is filled; the one
+// at vertex 5676 shares a side with the cell of a cone of 90 degrees (a quad (p, a, b, a)), which is filled with it
+// (before: refused, "a neighbouring cell is missing"). The quad mesh has every guarantee: closed, manifold, all quads,
+// chi 2 (libQEx leaves holes and non-manifold edges on this map)
+static void test_full_seamless_dragon()
+{
+  Mesh m;
+  if(!load_shared_or_skip("directional/dragon-param-full-seamless.obj", "quad: full-seamless dragon", m)) return;
+  UV_map uv = uv_of(m);
+  const SS::Snap_report s = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).untangle(true)
+                                                                        .merge_cone_pairs(true).separate_cone_pairs(true));
+  if(s.status != SS::SUCCESS) std::cerr << s.message << std::endl;
+  assert(s.status == SS::SUCCESS && SS::is_exact_integer_grid_map(m, uv));
+  assert(s.flips_after_repair == 0 && s.degenerate_after_repair == 0);
+  Quad_result r;
+  extract(m, uv, 1, r);
+  check_quad_mesh(m, uv, 1, r, "dragon (full-seamless), cone pairs merged and separated");
+  assert(r.report.covers_map() && r.report.euler_characteristic == 2 && r.report.boundary_loops == 0);
+  assert(!r.report.filled_branch_points.empty() && !r.report.absorbed_cones.empty());
+  std::printf("quad: dragon (full-seamless): %zu quads, %zu irregular vertices, %zu cones of 90 degrees split, %zu branch "
+              "points filled, %zu cone cells filled with them\n", r.report.quads, r.report.irregular_vertices,
+              r.report.split_cones.size(), r.report.filled_branch_points.size(), r.report.absorbed_cones.size());
+}
+
 // A real genus-1 map that was never made integral: Directional's hex torus with its UVs times 1.1 (no cone, no border:
 // the quantization rounds the translations of the cut edges that close the cut graph's cycles and takes the others from
 // the vertices' conditions), quantized at grid scale 1: an exact fold-free IGM whose quad mesh has every guarantee,
@@ -1521,6 +1619,7 @@ int main(int argc, char** argv)
   test_shared_data();
   if(!sanitizer_subset()) test_collapsed_cone_pairs();
   if(!sanitizer_subset()) test_quantized_dragon();
+  if(!sanitizer_subset()) test_full_seamless_dragon();
   test_quantized_torus();
   std::cout << "test_quad: all passed\n";
   return 0;

@@ -92,7 +92,10 @@ struct Quad_vertex_origin
  *   times, a `4m`-gon of its corners' `m` surface points each, and with `fill_branched_cells` (the default) it becomes
  *   `2m - 1` quads, a ladder of rungs between those corners that repeats no edge (the branch point is no quad vertex,
  *   the `4(m - 1)` ends of the rungs have one edge more, valence 5 where they had 4; `Quad_mesh_report::filled_branch_points`
- *   lists them). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
+ *   lists them). The cell of a cone of valence 1 that shares a side with the branched cell is filled with it (the
+ *   two are one disk bounded by the same `4m` points; the cone is no quad vertex, the two other corners of its cell have
+ *   two edges and one fewer, and the `2m - 1` quads cover the area `m + 1`; `Quad_mesh_report::absorbed_cones` lists
+ *   such cones). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
  *   not surrounded by quads (another branch point, cone or dropped cell next to it that joins two of its corners), one
  *   whose own cell is cut by the border, and any without
  *   `fill_branched_cells`;
@@ -165,7 +168,8 @@ struct Quad_vertex_origin
  *   \cgalParamNEnd
  *   \cgalParamNBegin{fill_branched_cells}
  *     \cgalParamDescription{if `true`, a cell covered `m > 1` times around a branch point inside it becomes `2m - 1`
- *                           quads (see above); if `false`, such a vertex gives `INVALID_INPUT`}
+ *                           quads, with the cell of a cone of valence 1 next to it (see above); if `false`, such a
+ *                           vertex gives `INVALID_INPUT`}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *     \cgalParamExtra{pass it with `CGAL::Seamless_snapping::parameters::fill_branched_cells()`}

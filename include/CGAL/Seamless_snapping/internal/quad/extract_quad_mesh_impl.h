@@ -133,7 +133,8 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
                    std::to_string(report.boundary_loops) + " boundary loops; " +
                    (report.incomplete_cells == 0 ? std::string("the quads cover the map (as many as its UV area") +
                                                    (report.split_cones.empty() && report.filled_branch_points.empty()
-                                                        ? ")" : " less 3 per split cone, plus m - 1 per filled branch point)")
+                                                        ? ")" : " less 3 per split cone, plus m - 1 per filled branch "
+                                                                "point, less 1 per cone cell filled with one)")
                                                  : std::to_string(report.incomplete_cells) + " cells cut by the border "
                                                    "(not on integer isolines) were dropped") +
                    (report.split_cones.empty() ? std::string() : "; " + std::to_string(report.split_cones.size()) +
@@ -142,7 +143,9 @@ Quad_mesh_report extract_quad_mesh_impl(const TriangleMesh& tm, HalfedgeUVMap uv
                    (report.filled_branch_points.empty() ? std::string() : "; " +
                     std::to_string(report.filled_branch_points.size()) + " branch point(s) off the integer points (the "
                     "map winds m > 1 times around a vertex inside a cell) filled: the 4m-gon of the cell's m sheets "
-                    "made 2m - 1 quads (m - 1 more than its UV area each)");
+                    "made 2m - 1 quads (m - 1 more than its UV area each)") +
+                   (report.absorbed_cones.empty() ? std::string() : "; " + std::to_string(report.absorbed_cones.size()) +
+                    " cone(s) of valence 1 next to a branched cell filled with it (one quad fewer each)");
   report.total_ms = ms_since(t0);
   return report;
 }

@@ -73,6 +73,7 @@ struct Cell_repairs
 {
   std::vector<int> split_cones;        // the mesh vertices (Corner_mesh numbering) of the cones of valence 1 split
   std::vector<int> filled_vertices;    // the vertices whose branched cells were filled
+  std::vector<int> absorbed_cones;     // the mesh vertices of the cones of valence 1 whose cell a fill took in
   std::size_t extra_quads = 0;         // quads beyond the UV area that the fills added (m - 1 per cell covered m times)
   std::vector<int> valence_change;     // per quad vertex: its edges beyond (or below) what the map gives its point
 };
@@ -92,12 +93,14 @@ struct Quad_incidence
     });
   }
 
-  // the quad other than `not_q` with the side from -> to (in that direction), and in `rank` the place of `from` in it;
-  // -1 if none
+  const std::vector<char>* gone = nullptr;      // quads that quad_with_side() does not see (removed by a repair)
+
+  // the quad other than `not_q` (and not gone) with the side from -> to (in that direction), and in `rank` the place of
+  // `from` in it; -1 if none
   int quad_with_side(int from, int to, int not_q, int& rank) const
   {
     for(int q : quads_of[from]) {
-      if(q == not_q) continue;
+      if(q == not_q || (gone != nullptr && (*gone)[std::size_t(q)])) continue;
       for(rank = 0; rank < 4; ++rank)
         if(cells.quads[std::size_t(q)][std::size_t(rank)] == from && cells.quads[std::size_t(q)][std::size_t((rank + 1) % 4)] == to)
           return q;

@@ -244,6 +244,7 @@ inline Status repair_cells(const Corner_mesh& cm, const Map_facts& facts, const 
   if(s != SUCCESS) return s;
   std::vector<int> ones;                               // the quad vertices at cones of valence 1 (only with the split)
   reached.assign(std::size_t(cm.n_vertices), 0);
+  for(int v : out.repairs.absorbed_cones) reached[std::size_t(v)] = 1;
   for(std::size_t i = 0; i < out.cells.points.size(); ++i) {
     const Integer_point& p = out.cells.points[i];
     if(p.kind != AT_VERTEX || facts.on_border[std::size_t(p.element)] || facts.valence[std::size_t(p.element)] != 1) continue;
@@ -257,6 +258,7 @@ inline Status repair_cells(const Corner_mesh& cm, const Map_facts& facts, const 
   if(s != SUCCESS) return s;
   r.split_cones.assign(out.repairs.split_cones.begin(), out.repairs.split_cones.end());
   r.filled_branch_points.assign(out.repairs.filled_vertices.begin(), out.repairs.filled_vertices.end());
+  r.absorbed_cones.assign(out.repairs.absorbed_cones.begin(), out.repairs.absorbed_cones.end());
   return SUCCESS;
 }
 

@@ -123,11 +123,13 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
   if(map.boundary_loops == 0 && r.border_edges > 0)
     return fail("of a closed map has " + std::to_string(r.border_edges) + " border edges");
   const bool covers = cells.incomplete == 0;
-  const std::size_t split = repairs.split_cones.size(), filled = repairs.filled_vertices.size();
-  if(covers && CGAL::Mpzf(double(2 * (r.quads + 3 * split - repairs.extra_quads))) != map.twice_area)
+  const std::size_t split = repairs.split_cones.size(), filled = repairs.filled_vertices.size(),
+                    absorbed = repairs.absorbed_cones.size();
+  if(covers && CGAL::Mpzf(double(2 * (r.quads + 3 * split + absorbed - repairs.extra_quads))) != map.twice_area)
     return fail("has " + std::to_string(r.quads) + " quads" + (split + filled > 0 ? " (" + std::to_string(split) +
                 " cones of valence 1 split, 3 cells fewer each; " + std::to_string(repairs.extra_quads) + " quads more "
-                "in branched cells)" : std::string()) + ", but the UV area of the map is " +
+                "in branched cells, " + std::to_string(absorbed) + " cone cells taken into them)" : std::string()) +
+                ", but the UV area of the map is " +
                 std::to_string(CGAL::to_double(map.twice_area) / 2) + " grid units");
   if(covers && r.euler_characteristic != map.euler_characteristic)
     return fail("has the Euler characteristic " + std::to_string(r.euler_characteristic) + ", the map " +
@@ -147,7 +149,7 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
     irregular += !border && expected != 4 ? 1 : 0;
     cones_met += !border && p.kind == AT_VERTEX && map.valence[std::size_t(p.element)] != 4 ? 1 : 0;
   }
-  if(covers && (cones_met + split + filled != map.cones || r.irregular_vertices != irregular))
+  if(covers && (cones_met + split + absorbed + filled != map.cones || r.irregular_vertices != irregular))
     return fail("has " + std::to_string(r.irregular_vertices) + " irregular vertices for the " + std::to_string(map.cones) +
                 " cones of the map" + (split + filled > 0 ? " (" + std::to_string(split) + " of them of valence 1, split, " +
                 std::to_string(filled) + " branch points filled)" : std::string()));
