@@ -12,7 +12,8 @@ each other; at grid scale 8 each cone's 2 x 2 cells are one quad, listed in the 
 a grid scale that is not a power of two; command-line errors (exit 2). With the shared data directory (optional
 SHARED_DATA argument, skipped where it does not exist): libQEx's fandisk map, whose integer translations put a cone
 pair onto one integer point, gives its quad mesh by default (the pair merged) and is refused with --keep-cone-pairs;
-Directional's dragon is refused with the zero-area triangles the snap proved forced named as such.
+Directional's full-seamless dragon gives a closed quad mesh (chi 2) with its cone pairs on one point moved apart, and
+with --no-cone-separation is refused with the zero-area triangles the snap proved forced named as such.
 usage: python3 quad_cli_test.py SEAMLESS_QUAD PARALLELOGRAM.obj SQUARE.obj WORKDIR [SHARED_DATA]"""
 import json
 import os
@@ -218,21 +219,42 @@ if shared and os.path.exists(fandisk):
 else:
     print("quad_cli_test: fandisk: SKIPPED (no shared data directory '%s')" % shared)
 
-# 2c. faces the constraints force (shared data only): Directional's dragon keeps 8 zero-area triangles whose corners
-# the rounded translations put onto one point; the refusal says the snap proved them forced and names one
+# 2c. cone pairs a cut joins on one integer point (shared data only): Directional's dragon, whose rounded translations
+# put such pairs onto one point, gives a closed quad mesh by default (the pairs moved apart; a branch point's cell
+# filled together with the cell of a 90-degree cone next to it); with --no-cone-separation the pairs stay and it keeps 8
+# zero-area triangles: refused, the snap proved them forced, one named
 dragon = os.path.join(shared, "directional", "dragon-param-full-seamless.obj")
 if shared and os.path.exists(dragon):
     out = os.path.join(work, "dragon.obj")
     rc, text = run(dragon, out, "--report", report)
+    r = json.load(open(report))
+    q = r["quad_mesh"]
+    ok = rc == 0 and os.path.exists(out)
+    if ok:
+        nv, faces = faces_of(out)
+        edges = {}
+        for f in faces:
+            for i in range(len(f)):
+                e = (min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)]))
+                edges[e] = edges.get(e, 0) + 1
+        ok = (all(len(f) == 4 for f in faces) and all(c == 2 for c in edges.values()) and
+              nv - len(edges) + len(faces) == 2 and len(faces) == q["quads"])
+    check(ok and len(r["snap"]["separated_cone_pairs"]) > 0 and "moved %d cone pair(s) apart" %
+          len(r["snap"]["separated_cone_pairs"]) in text and len(q["absorbed_cones"]) > 0 and
+          len(q["filled_branch_points"]) > 0 and q["covers_map"],
+          "dragon: a closed quad mesh, chi 2, the cone pairs separated: %d %s" % (rc, text))
+    out = os.path.join(work, "dragon_kept.obj")
+    rc, text = run(dragon, out, "--no-cone-separation", "--report", report)
     r = json.load(open(report))
     forced = [f for f in r["snap"]["folds"] if f["forced"]]
     wound = r["snap"]["winding_defects"]
     forced_wound = [w for w in wound if w["forced"]]   # corners of the forced faces
     check(rc == 1 and not os.path.exists(out) and r["quad_mesh"]["status"] == "FOLD_OVERS" and len(forced) > 0 and
           ("the snap proved %d of them forced" % len(forced)) in text and forced[0]["message"] in text and
-          0 < len(forced_wound) < len(wound) and
+          0 < len(forced_wound) < len(wound) and r["snap"]["separated_cone_pairs"] == [] and
           ("around %d vertices (%d of them corners of the forced faces)" % (len(wound), len(forced_wound))) in text,
-          "dragon: refused, the forced faces and the wound vertices at them said to be forced: %d %s" % (rc, text))
+          "dragon with --no-cone-separation: refused, the forced faces and the wound vertices at them said to be "
+          "forced: %d %s" % (rc, text))
 else:
     print("quad_cli_test: dragon: SKIPPED (no shared data directory '%s')" % shared)
 

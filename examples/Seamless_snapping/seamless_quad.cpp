@@ -1,7 +1,7 @@
 // seamless_quad: the quad mesh of a UV map, from the command line.
 //
 //   seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]
-//                 [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
+//                 [--no-cone-separation] [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]
 //
 // Reads a triangle mesh with an approximately integer-grid per-corner UV map (OBJ, f v/vt), snaps it to an
 // exact integer-grid map (snap_seamless_parameterization() with integer_grid_map(true)), extracts its quad
@@ -53,14 +53,15 @@ namespace params = CGAL::Seamless_snapping::parameters;
 
 static const char* usage_text =
   "usage: seamless_quad IN.obj OUT.(obj|off|ply) [--weld | --no-weld] [--grid-scale S] [--quantize] [--no-untangle] [--keep-cone-pairs]\n"
-  "                     [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
+  "                     [--no-cone-separation] [--no-cone-split] [--no-branch-fill] [--layout FILE.(obj|off|ply)] [--report FILE.json] [--max-grid-cells N] [--threads N] [--quiet]\n";
 
 static const char* help_text =
   "Makes the quad mesh of an integer-grid map: snaps the per-corner UV map of IN.obj to an exact\n"
   "integer-grid map (every seam translation an integer vector, every cone on an integer point; the\n"
   "package's snap with integer_grid_map(true), which first removes the map's fold-overs inside the\n"
   "space of maps with the same exact constraints: untangle(true), and merges the +-90 degree cone pairs\n"
-  "that the map's integer translations put onto one integer point: merge_cone_pairs(true)), then\n"
+  "that the map's integer translations put onto one integer point: merge_cone_pairs(true), and moves\n"
+  "the other cone pairs on one integer point that a cut joins apart: separate_cone_pairs(true)), then\n"
   "extracts its quad mesh: the vertices are the integer points of the map, the edges the unit segments\n"
   "of its integer isolines, the faces its unit cells, all decided exactly. The result is verified\n"
   "before it is written: every face a quad, manifold, closed if the input is, Euler characteristic and\n"
@@ -103,6 +104,11 @@ static const char* help_text =
   "                       regular vertices (the map then folds around them and is refused; libQEx\n"
   "                       merges such pairs too), and other pairs on one point are not joined into one\n"
   "                       cone. The snap report lists the merged pairs\n"
+  "  --no-cone-separation two cones on one integer point that a cut within two cells joins are left there\n"
+  "                       (the map then has a zero-area triangle there and is refused) instead of moved\n"
+  "                       apart, each onto a neighbouring integer point (separate_cone_pairs; the snap\n"
+  "                       report's \"separated_cone_pairs\"). Only Directional's full-seamless dragon of the\n"
+  "                       shared maps has such pairs left after the merge\n"
   "  --no-cone-split      refuse a cone of 90 degrees instead of making its 2 x 2 cells one quad (every\n"
   "                       quad then a unit cell of the grid)\n"
   "  --no-branch-fill     refuse a map that winds more than once around a point inside a cell instead of\n"
@@ -167,7 +173,7 @@ int main(int argc, char** argv)
   CGAL::Seamless_snapping::IO::internal::use_retained_heap(argv);   // large maps: see the header
   std::string in, out, report_file, layout_file;
   bool weld = false, no_weld = false, quiet = false, untangle = true, merge = true, quantize = false, split_cones = true,
-       fill_branches = true;
+       fill_branches = true, separate = true;
   double grid_scale = 1;
   std::size_t max_grid_cells = SS::default_max_grid_cells;
   unsigned threads = 0;                 // 0: the machine's cores
@@ -179,6 +185,7 @@ int main(int argc, char** argv)
     else if(a == "--quiet") quiet = true;
     else if(a == "--no-untangle") untangle = false;
     else if(a == "--keep-cone-pairs") merge = false;
+    else if(a == "--no-cone-separation") separate = false;
     else if(a == "--no-cone-split") split_cones = false;
     else if(a == "--no-branch-fill") fill_branches = false;
     else if(a == "--quantize") quantize = true;
@@ -279,7 +286,8 @@ int main(int argc, char** argv)
 
   // 2. snap to an exact integer-grid map (the UVs are written only on success)
   const SS::Snap_report snap = SS::snap_seamless_parameterization(mesh, uv, params::integer_grid_map(true).untangle(untangle)
-                                                                               .merge_cone_pairs(merge).grid_scale(grid_scale)
+                                                                               .merge_cone_pairs(merge).separate_cone_pairs(separate)
+                                                                               .grid_scale(grid_scale)
                                                                                .quantize(quantize)
                                                                                .number_of_threads(threads));
   if(!quiet && snap.status == SS::SUCCESS)
@@ -298,6 +306,14 @@ int main(int argc, char** argv)
                 "both), the rotations of %zu cut edges changed (%zu of them new); --keep-cone-pairs keeps them\n",
                 snap.merged_cone_pairs.size() > 10 ? " ..." : "", snap.joined_cone_pairs, snap.merged_cut_edges,
                 snap.added_cut_edges);
+  }
+  if(!quiet && !snap.separated_cone_pairs.empty()) {
+    std::printf("moved %zu cone pair(s) apart that the map's integer translations put onto one integer point (vertices",
+                snap.separated_cone_pairs.size());
+    for(std::size_t i = 0; i < snap.separated_cone_pairs.size() && i < 10; ++i)
+      std::printf(" %zu+%zu", snap.separated_cone_pairs[i].first, snap.separated_cone_pairs[i].second);
+    std::printf("%s): each onto a neighbouring integer point, %zu trial snap(s); --no-cone-separation leaves them\n",
+                snap.separated_cone_pairs.size() > 10 ? " ..." : "", snap.separation_trials);
   }
 
   // 3. extract (the quad mesh is written into `quads` only on success)
