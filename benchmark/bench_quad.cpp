@@ -1,7 +1,8 @@
 // Quad mesh extraction on every model (a table, not a test): the map is snapped to an exact integer-grid
 // map (snap_seamless_parameterization() with integer_grid_map(true): with the untangling step of the
-// package, when it has one, as its default; and merge_cone_pairs(true), as seamless_quad, unless
-// --keep-cone-pairs), then extract_quad_mesh() makes the quad mesh. Per model:
+// package, when it has one, as its default; merge_cone_pairs(true), as seamless_quad, unless --keep-cone-pairs; and
+// separate_cone_pairs(true), as seamless_quad, unless --no-cone-separation), then extract_quad_mesh() makes the quad
+// mesh. Per model:
 // faces; the snap's status and time; the extraction's status and time; the quad mesh: quads, vertices,
 // irregular vertices against the cones of the map, holes (boundary loops of the quad mesh of a closed
 // map; for a map with a border: the loops beyond the map's own), non-manifold vertices and edges, Euler
@@ -21,7 +22,7 @@
 // retinal_miq) get integer translations chosen at the grid scale given, as `seamless_quad --quantize` (on the maps that
 // are integer-grid maps already the rounding keeps their translations: the same rows).
 //
-// usage: bench_quad [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] <file.obj | directory>...
+// usage: bench_quad [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] [--no-cone-separation] <file.obj | directory>...
 //        (directories are searched recursively for *.obj; files under a "directional" folder are welded,
 //        as Directional writes cut meshes). Without arguments the directory in the environment variable
 //        SS_SHARED_DATA_DIR is used, and the reference directory is SS_SHARED_DATA_DIR/../reference/libqex_quads.
@@ -132,19 +133,20 @@ int main(int argc, char** argv)
   std::vector<fs::path> inputs, files;
   int repeat = 5;
   double grid_scale = 1;
-  bool merge_cone_pairs = true, quantize = false;
+  bool merge_cone_pairs = true, separate_cone_pairs = true, quantize = false;
   std::string reference_dir;
   for(int i = 1; i < argc; ++i) {
     if(std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) repeat = (std::max)(1, std::atoi(argv[++i]));
     else if(std::strcmp(argv[i], "--grid-scale") == 0 && i + 1 < argc) grid_scale = std::atof(argv[++i]);
     else if(std::strcmp(argv[i], "--reference") == 0 && i + 1 < argc) reference_dir = argv[++i];
     else if(std::strcmp(argv[i], "--keep-cone-pairs") == 0) merge_cone_pairs = false;
+    else if(std::strcmp(argv[i], "--no-cone-separation") == 0) separate_cone_pairs = false;
     else if(std::strcmp(argv[i], "--quantize") == 0) quantize = true;
     else inputs.emplace_back(argv[i]);
   }
   if(reference_dir.empty() && std::getenv("SS_SHARED_DATA_DIR") != nullptr)
     reference_dir = (fs::path(std::getenv("SS_SHARED_DATA_DIR")) / ".." / "reference" / "libqex_quads").string();
-  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] "
+  if(!collect_obj_files(inputs, std::string("usage: ") + argv[0] + " [--repeat N] [--grid-scale S] [--quantize] [--reference DIR] [--keep-cone-pairs] [--no-cone-separation] "
                                 "<file.obj | directory>...  (or set SS_SHARED_DATA_DIR)", files))
     return 2;
 
@@ -172,7 +174,8 @@ int main(int argc, char** argv)
       m = input;
       UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
       snap = SS::snap_seamless_parameterization(m, uv, SS::parameters::integer_grid_map(true).grid_scale(grid_scale)
-                                                       .merge_cone_pairs(merge_cone_pairs).quantize(quantize));
+                                                       .merge_cone_pairs(merge_cone_pairs)
+                                                       .separate_cone_pairs(separate_cone_pairs).quantize(quantize));
       snap_ms = (std::min)(snap_ms, snap.total_ms);
     }
     UV_map uv = m.property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
