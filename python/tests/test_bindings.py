@@ -951,6 +951,7 @@ def test_extract_quad_mesh_fills_a_cone_cell_with_a_branched_cell():
     assert sorted(r["absorbed_cones"]) == sorted(cones) and list(r["filled_branch_points"]) == [w]
     assert len(r["split_cones"]) == 0 and not set(cones + [w]) & set(r["QV_vertex"])
     assert Fraction(r["uv_area"]) == 18 and len(QF) == r["quads"] == 17 and r["euler_characteristic"] == 1
+    assert r["irregular_vertices"] == 2                     # the rungs end at the cone cells' corners
     assert len(QV) - len({tuple(sorted((a, b))) for q in QF for a, b in zip(q, np.roll(q, -1))}) + len(QF) == 1
     with pytest.raises(ss.SnapError) as e:                  # refused without the fill
         ss.extract_quad_mesh(V, F, UV, FUV, fill_branched_cells=False)

@@ -1035,6 +1035,60 @@ static vertex_descriptor make_branched_quarter_planes(Mesh& m, UV_map& uv, int n
   return at(3, 1, 0);
 }
 
+// Which cone cells a branched fill takes in (internal/quad/branched_cells.h), on cells built by hand: a branched cell of
+// 8 corners with a quad on every side but one, across which lies the cell (p, a, b, a) of a cone of valence 1 with a
+// quad across its other side a - b: taken in (3 quads for the area 3, p no point, a and b the rungs' ends); the same
+// cone cell with quads across both of its sides a - b (its a and b corners of the branched cell, which does not touch
+// it): left alone, the branched cell filled on its own
+static void test_cone_cell_absorption_rules()
+{
+  namespace Q4 = SS::internal::quad;
+  for(int adjacent = 0; adjacent < 2; ++adjacent) {
+    Q4::Quad_cells c;
+    std::vector<int> valence;                       // per vertex; every point is a vertex of its own
+    c.faces_first.assign(1, 0);
+    auto point = [&](int v) {
+      SS::internal::quad::Integer_point p;
+      p.kind = SS::internal::quad::AT_VERTEX;
+      p.element = int(valence.size());
+      valence.push_back(v);
+      c.points.push_back(p);
+      return int(c.points.size()) - 1;
+    };
+    auto quad = [&](int a, int b, int d, int e) {
+      c.quads.push_back({{a, b, d, e}});
+      c.faces.push_back(int(c.quads.size()));
+      c.faces_first.push_back(c.faces.size());
+    };
+    std::vector<int> L;
+    for(int i = 0; i < 8; ++i) L.push_back(point(4));
+    Q4::Quad_cells::Branched br;
+    br.corners = L;                                  // ascending
+    br.faces.assign(1, 1000);
+    br.vertex = point(8);
+    c.branched.push_back(br);
+    for(int i = adjacent ? 1 : 0; i < 8; ++i) quad(L[std::size_t((i + 1) % 8)], L[std::size_t(i)], point(4), point(4));
+    const int a = adjacent ? L[1] : L[0], b = adjacent ? L[0] : L[4], p = point(1);
+    quad(p, a, b, a);
+    quad(a, b, point(4), point(4));
+    if(!adjacent) quad(b, a, point(4), point(4));
+    const std::size_t quads = c.quads.size(), points = c.points.size();
+    Q4::Cell_repairs r;
+    int failed = -1;
+    std::string message;
+    assert(Q4::fill_branched_cells(c, valence, r, failed, message) == SS::SUCCESS && r.filled_vertices.size() == 1);
+    if(adjacent) {
+      assert(r.absorbed_cones == std::vector<int>(1, p) && c.quads.size() == quads - 1 + 3 && c.points.size() == points - 1);
+      std::vector<int> rung_ends;                    // the corners of the added quads: a rung's ends are in two of them
+      for(std::size_t q = quads - 1; q < c.quads.size(); ++q)
+        for(int x : c.quads[q]) rung_ends.push_back(x);
+      assert(std::count(rung_ends.begin(), rung_ends.end(), a) == 2 && std::count(rung_ends.begin(), rung_ends.end(), b) == 2);
+    } else {
+      assert(r.absorbed_cones.empty() && c.quads.size() == quads + 3 && c.points.size() == points);
+    }
+  }
+}
+
 // A cone of 90 degrees: its 2 x 2 cells made one quad (split_valence_one_cones, the default), or refused without that
 static void test_valence_one_cones()
 {
@@ -1081,6 +1135,9 @@ static void test_valence_one_cones()
     assert(r.report.filled_branch_points == std::vector<std::size_t>(1, std::size_t(w)) && r.report.split_cones.empty());
     assert(r.report.covers_map() && r.report.uv_area == Q(2 * n * n) && r.report.quads == std::size_t(2 * n * n - 1));
     assert(r.report.euler_characteristic == 1 && r.report.boundary_loops == 1 && r.report.cones == 3);
+    // the rungs end at the absorbed cells' corners a (valence 2 + 1) and b (3 + 1): the two cones' index 3/4 each and the
+    // branch point's -1 carried by two inside vertices of valence 3 (before the rotation was chosen so: 8 irregular)
+    assert(r.report.irregular_vertices == 2);
     Quad_result fine;
     extract(m, uv, 2, fine);
     check_quad_mesh(m, uv, 2, fine, what + ", grid scale 2");
@@ -1614,6 +1671,7 @@ int main(int argc, char** argv)
   test_patch_refusals();
   test_branch_points();
   test_valence_one_cones();
+  test_cone_cell_absorption_rules();
   if(!sanitizer_subset()) test_bear_orbifold();
   if(!sanitizer_subset()) test_cut_invariance();
   test_shared_data();

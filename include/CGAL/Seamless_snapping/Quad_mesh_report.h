@@ -68,7 +68,7 @@ struct Quad_mesh_report
   std::size_t incomplete_cells = 0;            ///< cells cut by a border that is not on an integer isoline: dropped, not in the mesh
   std::vector<std::size_t> filled_branch_points; ///< the vertices (of the map, in the order of `vertices(tm)`) around which the map winds `m > 1` times off the integer points, whose cell, covered `m` times, was filled with `2m - 1` quads (`fill_branched_cells`): each is no quad vertex, and `4(m - 1)` corners of those quads have valence 5 for it
   std::vector<std::size_t> split_cones;        ///< the cones of valence 1 (90 degrees; vertices of the map, in the order of `vertices(tm)`) whose 2 x 2 cells became one quad (`split_valence_one_cones`): each is no quad vertex, and three corners of that quad have valence 3 for it
-  std::vector<std::size_t> absorbed_cones;     ///< the cones of valence 1 whose cell (a quad with a corner twice) shares a side with a branched cell and was filled with it (`fill_branched_cells`): each is no quad vertex, its two other corners have two edges and one fewer for it, and the fill's `2m - 1` quads cover the area `m + 1`
+  std::vector<std::size_t> absorbed_cones;     ///< the cones of valence 1 whose cell (a quad with a corner twice) shares a side with a branched cell and was filled with it (`fill_branched_cells`, with `split_valence_one_cones`): each is no quad vertex, its two other corners have two edges and one fewer for it, and the fill's `2m - 1` quads cover the area `m + k` with `k` such cells
   /// @}
 
   /// \name Times (wall clock, ms)

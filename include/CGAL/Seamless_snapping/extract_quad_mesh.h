@@ -94,9 +94,11 @@ struct Quad_vertex_origin
  *   the `4(m - 1)` ends of the rungs have one edge more, valence 5 where they had 4; `Quad_mesh_report::filled_branch_points`
  *   lists them). The cell of a cone of valence 1 that shares a side with the branched cell is filled with it (the
  *   two are one disk bounded by the same `4m` points; the cone is no quad vertex, the two other corners of its cell have
- *   two edges and one fewer, and the `2m - 1` quads cover the area `m + 1`; `Quad_mesh_report::absorbed_cones` lists
- *   such cones). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
- *   not surrounded by quads (another branch point, cone or dropped cell next to it that joins two of its corners), one
+ *   two edges and one fewer, and the `2m - 1` quads cover the area `m + k` with `k` such cells; the rungs then end at
+ *   those corners where they can; `Quad_mesh_report::absorbed_cones` lists such cones; needs `split_valence_one_cones`,
+ *   without which every cone of valence 1 is refused). Refused (`INVALID_INPUT`, named): a branch point on a grid line off the integer points, one whose cell is
+ *   not surrounded by quads (another branch point, a cone other than such a cone of valence 1, or a dropped cell next to
+ *   it that joins two of its corners), one
  *   whose own cell is cut by the border, and any without
  *   `fill_branched_cells`;
  * - the cells must form a polygon mesh: a cell that wraps around a handle (a torus of side 1 in grid units) or cells

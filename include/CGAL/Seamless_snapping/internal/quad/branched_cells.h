@@ -40,10 +40,11 @@ namespace internal {
 namespace quad {
 
 // The cell of a cone of valence 1 next to a branched cell: a quad (p, a, b, a) with the cone p at one corner
-// (valence_one_cones.h) whose corners a and b are corners of the branched cell `br`, which it then meets along one of
-// its two sides a - b. The union of the two is a disk bounded by the same 4m points (the cone cell's other side a - b
-// takes the place of the one they share), so the fill takes it in: `p` and the rotation of the quad are returned;
-// -1 if `q` is no such cell.
+// (valence_one_cones.h) whose corners a and b are corners of the branched cell `br` and which has a quad across one of
+// its two sides a - b and none across the other (where the branched cell is: it has no quad). The union of the two is
+// a disk bounded by the same 4m points (the cone cell's other side a - b takes the place of the one they share), so
+// the fill takes it in: `p` and the rotation of the quad are returned; -1 if `q` is no such cell (e.g. with a cone at
+// a, whose a and b are corners of a branched cell that does not touch it: quads across both sides).
 inline int absorbable_cone_cell(const Quad_cells& cells, const Quad_incidence& incidence, const Quad_cells::Branched& br,
                                 int q, const std::vector<int>& valence, int& rotation)
 {
@@ -53,7 +54,9 @@ inline int absorbable_cone_cell(const Quad_cells& cells, const Quad_incidence& i
     const int p = Q[std::size_t(rotation)], a = Q[std::size_t((rotation + 1) % 4)], b = Q[std::size_t((rotation + 2) % 4)];
     if(a != Q[std::size_t((rotation + 3) % 4)] || a == b || !in_cell(a) || !in_cell(b) || in_cell(p)) continue;
     const Integer_point& cone = cells.points[std::size_t(p)];
-    if(cone.kind == AT_VERTEX && valence[std::size_t(cone.element)] == 1 && incidence.quads_of[p].size() == 1) return p;
+    if(cone.kind != AT_VERTEX || valence[std::size_t(cone.element)] != 1 || incidence.quads_of[p].size() != 1) continue;
+    int r = 0;
+    if((incidence.quad_with_side(b, a, q, r) < 0) != (incidence.quad_with_side(a, b, q, r) < 0)) return p;
   }
   return -1;
 }
@@ -62,7 +65,8 @@ inline int absorbable_cone_cell(const Quad_cells& cells, const Quad_incidence& i
 // `repairs` gets the vertices, the extra quads and the rung ends' valence changes (valence_change sized to the points).
 // A cone of valence 1 whose cell is next to a branched cell (absorbable_cone_cell()) is taken into the fill: its cell
 // and point go, its corners a and b lose two edges and one (its index 3/4 goes to them: 1/2 and 1/4), and the fill's
-// 2m - 1 quads cover the area m + 1 (Cell_repairs::absorbed_cones).
+// 2m - 1 quads cover the area m + k with k such cells (Cell_repairs::absorbed_cones); of the ladder's rotations, the
+// one whose rungs end at the most of those a and b (where a rung ends at a, valence 3, at b 4).
 // `valence`: per vertex its angle sum in quarter turns (quad_valences()). On INVALID_INPUT (the first cell whose loop
 // is not a 4m-gon of its corners; `failed_vertex` its branch point, named in `message`) `cells` is unchanged.
 inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& valence, Cell_repairs& repairs,
@@ -93,7 +97,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
     if(n != std::size_t(turns))
       return refuse("its cell has " + std::to_string(n) + " corner points, not 4 per turn (another branch point or a "
                     "cone in it or next to it)");
-    std::vector<int> faces = br.faces;
+    std::vector<int> faces = br.faces, lost;             // lost: the corners a and b of the cone cells taken in
     for(int k : K)
       for(int q : incidence.quads_of[k]) {
         int r = 0;
@@ -104,6 +108,8 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
         point_gone[std::size_t(p)] = 1;
         change[std::size_t(Q[std::size_t((r + 1) % 4)])] -= 2;
         change[std::size_t(Q[std::size_t((r + 2) % 4)])] -= 1;
+        lost.push_back(Q[std::size_t((r + 1) % 4)]);
+        lost.push_back(Q[std::size_t((r + 2) % 4)]);
         absorbed.push_back(cells.points[std::size_t(p)].element);
         faces.insert(faces.end(), cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
                      cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
@@ -135,6 +141,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
                                        " of its " + std::to_string(n) + " corner points");
     // a rotation whose rungs are no edges yet; of those, the first whose rungs end at the most corners that lost
     // edges to a cone cell taken in (valence 2 or 3 otherwise)
+    auto lost_edges = [&](int x) { return std::find(lost.begin(), lost.end(), x) != lost.end() ? 1 : 0; };
     std::size_t start = n;
     int best = -1;
     for(std::size_t s = 0; s < n; ++s) {
@@ -143,7 +150,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
       for(std::size_t i = 0; i + 2 < n / 2 && free; ++i) {
         const int a = loop[(s + i + 1) % n], b = loop[(s + n - 2 - i) % n];
         free = !incidence.has_side(a, b) && !incidence.has_side(b, a);
-        score += (change[std::size_t(a)] < 0 ? 1 : 0) + (change[std::size_t(b)] < 0 ? 1 : 0);
+        score += lost_edges(a) + lost_edges(b);
       }
       if(free && score > best) { start = s; best = score; }
     }

@@ -152,7 +152,8 @@ inline bool verify_quad_guarantees(const Quad_surface& m, const Quad_cells& cell
   if(covers && (cones_met + split + absorbed + filled != map.cones || r.irregular_vertices != irregular))
     return fail("has " + std::to_string(r.irregular_vertices) + " irregular vertices for the " + std::to_string(map.cones) +
                 " cones of the map" + (split + filled > 0 ? " (" + std::to_string(split) + " of them of valence 1, split, " +
-                std::to_string(filled) + " branch points filled)" : std::string()));
+                std::to_string(filled) + " branch points filled, " + std::to_string(absorbed) + " cone cells filled with "
+                "them)" : std::string()));
   return true;
 }
 
