@@ -252,6 +252,8 @@ if shared and os.path.exists(dragon):
     check(rc == 1 and not os.path.exists(out) and r["quad_mesh"]["status"] == "FOLD_OVERS" and len(forced) > 0 and
           ("the snap proved %d of them forced" % len(forced)) in text and forced[0]["message"] in text and
           0 < len(forced_wound) < len(wound) and r["snap"]["separated_cone_pairs"] == [] and
+          "untangle the map first" not in r["quad_mesh"]["message"] + r["quad_mesh"]["advice"] and
+          "untangled the map already" in r["quad_mesh"]["advice"] and
           ("around %d vertices (%d of them corners of the forced faces)" % (len(wound), len(forced_wound))) in text,
           "dragon with --no-cone-separation: refused, the forced faces and the wound vertices at them said to be "
           "forced: %d %s" % (rc, text))

@@ -337,6 +337,16 @@ int main(int argc, char** argv)
   auto arcs = layout.add_property_map<Mesh::Halfedge_index, SS::Quad_layout_arc<Mesh> >("h:arc").first;
   SS::Quad_layout lay;
   if(q.status == SS::SUCCESS && !layout_file.empty()) lay = SS::quad_layout(quads, layout, arcs);
+  // the extraction's advice to untangle is for callers that did not: seamless_quad did, so its report does not repeat it
+  const std::string advice = "; " + q.advice;
+  const bool untangled_already = q.status == SS::FOLD_OVERS && untangle && !q.advice.empty() &&
+                                 q.message.size() >= advice.size() &&
+                                 q.message.compare(q.message.size() - advice.size(), advice.size(), advice) == 0;
+  if(untangled_already) {
+    q.message.resize(q.message.size() - advice.size());
+    q.advice = "seamless_quad untangled the map already; the snap report's \"folds\" and \"winding_defects\" say what "
+               "is left and what the constraints force";
+  }
   const std::string quad_json = snap.status == SS::SUCCESS ? q.to_json() : std::string("null");
   const std::string patches_json = q.status == SS::SUCCESS ? patches.to_json() : std::string("null");
   const std::string layout_json = q.status == SS::SUCCESS && !layout_file.empty() ? lay.to_json() : std::string("null");
@@ -351,10 +361,7 @@ int main(int argc, char** argv)
   if(q.status != SS::SUCCESS) {
     // what the snap proved about the faces and vertices that block the extraction (the snap report has them all)
     std::string why = q.message, proven;
-    const std::string advice = "; " + q.advice;   // the extraction's advice to untangle, for callers that did not
-    if(q.status == SS::FOLD_OVERS && untangle && !q.advice.empty() && why.size() >= advice.size() &&
-       why.compare(why.size() - advice.size(), advice.size(), advice) == 0) {
-      why.resize(why.size() - advice.size());
+    if(untangled_already) {
       proven = (snap.uv_mirrored ? "; the map or a component of it is mirrored, so seamless_quad did not untangle it "
                                    "there (" + std::string(SS::mirrored_map_advice()) + "); it untangled the rest"
                                  : std::string("; seamless_quad untangled the map already")) +
