@@ -10,10 +10,11 @@
 // number_of_threads under ThreadSanitizer (built only in the sanitizer build directory, with -fsanitize=thread:
 // test/Seamless_snapping/CMakeLists.txt; a data race aborts the test): every step that runs on two threads (the cones
 // and the sectors, the node system and the minimal-change start point, the two halves of the untangling's independent
-// parts (duck_miq_8), the proofs and the windings of the explain stage, the OBJ writer's blocks, the OBJ reader's two
-// halves of a file, the core's implied rows in two halves on a generated 30000-row system) on maps of ../shared/data,
-// in the default mode and as an untangled integer-grid map, and the results of two threads against those of one, bit
-// for bit. Without ../shared: a generated map.
+// parts (duck_miq_8), the separation trials two at a time (the full-seamless dragon), the proofs and the windings of
+// the explain stage, the OBJ writer's blocks, the OBJ reader's two halves of a file, the core's implied rows in two
+// halves on a generated 30000-row system) on maps of ../shared/data, in the default mode and as an untangled
+// integer-grid map, and the results of two threads against those of one, bit for bit. Without ../shared: a generated
+// map.
 
 #include "generators.h"
 #include "mesh_test_support.h"
@@ -58,6 +59,24 @@ void check_map(const std::string& name, const Mesh& input)
   }
 }
 
+// the separation trials (two trial snaps at once: solve_with_separation_trials()) on Directional's full-seamless dragon,
+// the only shared map with trials, in integer-grid mode with its cone pairs merged and separated (seamless_quad's
+// options): the same map, bit for bit, and the same trials
+void check_separation_trials(const Mesh& input)
+{
+  Mesh one = input, two = input;
+  UV_map uv1 = uv_of(one), uv2 = uv_of(two);
+  const auto np = SS::parameters::integer_grid_map(true).untangle(true).merge_cone_pairs(true).separate_cone_pairs(true);
+  const SS::Snap_report r1 = SS::snap_seamless_parameterization(one, uv1, np.number_of_threads(1));
+  const SS::Snap_report r2 = SS::snap_seamless_parameterization(two, uv2, np.number_of_threads(2));
+  CHECK(r1.status == SS::SUCCESS && r2.status == SS::SUCCESS && r1.message == r2.message, "dragon: both snapped, one message");
+  CHECK(r1.separation_trials > 1 && r1.separation_trials == r2.separation_trials &&
+        r1.separated_cone_pairs == r2.separated_cone_pairs, "dragon: the same separation trials");
+  CHECK(uv_bits(one, uv1) == uv_bits(two, uv2), "dragon (separation trials): the same UVs, bit for bit");
+  std::cout << "threads: dragon (full-seamless), cone pairs separated: " << r2.separation_trials << " trial snaps, "
+            << r2.separated_cone_pairs.size() << " pairs" << std::endl;
+}
+
 // the core's implied rows in two halves (Projection_options::number_of_threads) on a generated system large enough
 void check_projection()
 {
@@ -91,6 +110,8 @@ int main()
       Mesh m;
       if(load_shared_or_skip(name, "threads", m)) check_map(name, m);
     }
+    Mesh dragon;
+    if(load_shared_or_skip("directional/dragon-param-full-seamless.obj", "threads", dragon)) check_separation_trials(dragon);
     const fs::path file = fs::path(SS_SHARED_DATA_DIR) / "libqex/fandisk_param.obj";   // the reader: its two halves
     SS::IO::internal::Obj_soup one, two;
     std::string m1, m2;

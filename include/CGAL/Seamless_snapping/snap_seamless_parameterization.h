@@ -380,7 +380,8 @@ namespace Seamless_snapping {
  *                           node system of Sec. 5.3 and the minimal-change start point of the full system; the cone test
  *                           and the sectors of Sec. 5.1; the proofs of the faces left not positive and the windings of the
  *                           vertices; the implied variables of the core's evaluation (Alg. 3) in two halves of the IRREF
- *                           rows; with `untangle`, two halves of the regions that share no face or variable); `0` takes
+ *                           rows; with `untangle`, two halves of the regions that share no face or variable; with
+ *                           `separate_cone_pairs`, two of its trial snaps at once); `0` takes
  *                           the machine's cores. The results are the same bits
  *                           whatever the number (only the report's times change). The 302K-face map of `../shared/large`
  *                           on two cores: see the user manual, "Large maps".}

@@ -1241,7 +1241,7 @@ inline Defects_near defects_near(const Corner_mesh& cm, const Face_corners& fc, 
 // (faces not positive) near a pair start its trials: wound vertices alone did not pay for them (duck_qc_8 in
 // integer-grid mode, pairs separated but not merged: 8 trials, 17x the time, the same defects). Pairs near each other
 // are taken to be independent; the result is checked as always. Costs one snap per rank tried and one more
-// (Snap_report::separation_trials).
+// (Snap_report::separation_trials); with opt.threads >= 2 the trial snaps run two at a time, each on one thread.
 template <class TriangleMesh>
 Status solve_with_separation_trials(const Snap_options& opt, Snap_state<TriangleMesh>& S, Snap_report& report,
                                     std::string& message)
@@ -1279,24 +1279,41 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
     T.separation_rank = r;
     R = extracted_report;
     std::string unused;
-    ++report.separation_trials;
     return solve_stages(o, T, R, unused) == SUCCESS;
   };
-  Snap_state<TriangleMesh> T;
-  Snap_report R;
+  // the trials: rank r for every pair with trials (its first rank where it has no r-th), those that move a pair
+  std::vector<std::vector<int> > trial_rank;
+  std::vector<int> trial_r;
   for(int r = 0; r < ranks; ++r) {
     bool new_shift = false;
     for(const auto& d : defects) {
       rank[std::size_t(d.first)] = r < int(d.second.size()) ? r : first_rank[std::size_t(d.first)];
       new_shift = new_shift || rank[std::size_t(d.first)] != first_rank[std::size_t(d.first)];
     }
-    if(!new_shift || !snap_with(rank, trial, T, R)) continue;
-    const std::vector<char> bad = defect_marks(T, R, fc);
-    for(const Cone_separation& c : T.separations) {
-      auto d = defects.find(c.a);
-      if(d != defects.end() && c.rank == r) d->second[std::size_t(r)] = defects_near(T.cm, fc, bad, c).score();
-    }
+    if(new_shift) { trial_rank.push_back(rank); trial_r.push_back(r); }
   }
+  // two at a time with number_of_threads >= 2, each on one thread (the untangler's results do not depend on its
+  // threads), then scored in rank order: the same choice whatever the threads
+  trial.threads = 1;
+  Snap_state<TriangleMesh> T, T2;
+  Snap_report R, R2;
+  auto score = [&](int r, const Snap_state<TriangleMesh>& t, const Snap_report& rr) {
+    const std::vector<char> bad = defect_marks(t, rr, fc);
+    for(const Cone_separation& c : t.separations) {
+      auto d = defects.find(c.a);
+      if(d != defects.end() && c.rank == r) d->second[std::size_t(r)] = defects_near(t.cm, fc, bad, c).score();
+    }
+  };
+  for(std::size_t k = 0; k < trial_rank.size(); k += 2) {
+    const bool two = k + 1 < trial_rank.size();
+    bool ok = false, ok2 = false;
+    run_concurrently(two ? opt.threads : 1u, [&] { ok = snap_with(trial_rank[k], trial, T, R); },
+                     [&] { if(two) ok2 = snap_with(trial_rank[k + 1], trial, T2, R2); });
+    report.separation_trials += two ? 2 : 1;
+    if(ok) score(trial_r[k], T, R);
+    if(ok2) score(trial_r[k + 1], T2, R2);
+  }
+  T2 = Snap_state<TriangleMesh>();
   bool changed = false;
   rank = first_rank;
   for(const auto& d : defects) {
@@ -1305,6 +1322,7 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
     changed = changed || best != first_rank[std::size_t(d.first)];
   }
   const bool snapped = changed && snap_with(rank, opt, T, R);
+  report.separation_trials += changed ? 1 : 0;
   report.separation_ms = ms_since(trials_start);
   if(!snapped) return SUCCESS;
   if(R.folds.size() + R.winding_defects.size() < report.folds.size() + report.winding_defects.size()) {
