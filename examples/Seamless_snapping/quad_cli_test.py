@@ -56,6 +56,16 @@ def faces_of(path):
     return nv, [[int(x) for x in l[1:1 + int(l[0])]] for l in lines[end + 1 + nv:end + 1 + nv + nf]]
 
 
+def edge_uses(faces):
+    """per undirected edge (smaller vertex first), the faces it is a side of"""
+    edges = {}
+    for f in faces:
+        for i in range(len(f)):
+            e = (min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)]))
+            edges[e] = edges.get(e, 0) + 1
+    return edges
+
+
 # 1. the parallelogram bear at grid scale 4, in the three formats
 report = os.path.join(work, "quad.json")
 for ext in ["obj", "off", "ply"]:
@@ -69,11 +79,7 @@ for ext in ["obj", "off", "ply"]:
     q = r["quad_mesh"]
     check(r["snap"]["status"] == "SUCCESS" and q["status"] == "SUCCESS" and q["covers_map"], "%s: report %s" % (ext, q))
     nv, faces = faces_of(out)
-    edges = {}
-    for f in faces:
-        for i in range(len(f)):
-            e = (min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)]))
-            edges[e] = edges.get(e, 0) + 1
+    edges = edge_uses(faces)
     check(all(len(f) == 4 for f in faces), "%s: every face a quad" % ext)
     check(all(n == 2 for n in edges.values()), "%s: every edge in exactly two quads (closed, manifold edges)" % ext)
     check(nv - len(edges) + len(faces) == 2 == q["euler_characteristic"], "%s: V - E + F = 2" % ext)
@@ -232,11 +238,7 @@ if shared and os.path.exists(dragon):
     ok = rc == 0 and os.path.exists(out)
     if ok:
         nv, faces = faces_of(out)
-        edges = {}
-        for f in faces:
-            for i in range(len(f)):
-                e = (min(f[i], f[(i + 1) % len(f)]), max(f[i], f[(i + 1) % len(f)]))
-                edges[e] = edges.get(e, 0) + 1
+        edges = edge_uses(faces)
         ok = (all(len(f) == 4 for f in faces) and all(c == 2 for c in edges.values()) and
               nv - len(edges) + len(faces) == 2 and len(faces) == q["quads"])
     check(ok and len(r["snap"]["separated_cone_pairs"]) > 0 and "moved %d cone pair(s) apart" %
