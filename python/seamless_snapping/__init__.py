@@ -40,7 +40,7 @@ from . import _core
 
 __all__ = ["read_obj", "write_obj", "snap", "project", "is_exactly_seamless", "is_exact_integer_grid_map",
            "diagnose_seamlessness", "is_cut_mesh",
-           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
+           "motorcycle_graph", "trace_isoline", "extract_quad_mesh", "quad_mesh", "quad_mesh_patches", "patch_vertex_grids",
            "quad_layout", "quad_valences", "write_vval",
            "DIRECTIONS", "SnapError", "InputError",
            "__version__"]
@@ -487,6 +487,37 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
         # message's "use a larger grid_scale" did not help at any scale
         report["message"] += ("; (V, F) is a cut mesh (is_cut_mesh()) and weld=False leaves its seams as borders, "
                               "which may be the cause: weld=True (or the default weld=None) joins them")
+    if report["status"] != "SUCCESS" and raise_on_failure:
+        raise SnapError(report)
+    return QV, QF, report
+
+
+def quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, quantize=False, untangle=True, merge_cone_pairs=True,
+              separate_cone_pairs=True, split_valence_one_cones=True, fill_branched_cells=True, max_grid_cells=None,
+              threads=1, raise_on_failure=True):
+    """The quad mesh of an approximately integer-grid UV map in one call, as the seamless_quad command line makes it:
+    snap(V, F, UV, FUV, integer_grid_map=True, ...) to an exact integer-grid map (untangled, the cone pairs on one
+    integer point merged or moved apart, and with quantize=True integer translations chosen where the map has none),
+    then extract_quad_mesh() of that map. The arguments are those of snap() and extract_quad_mesh(); the defaults
+    are seamless_quad's (but threads=1: 0 takes the machine's cores, the same results).
+
+    Returns (QV, QF, report): extract_quad_mesh()'s, with report["snap"] the snap's report and report["UV"],
+    report["FUV"] the exact map (as snap() returns them); (UV, FUV) are not changed. Refused (SnapError, or None in
+    place of QV and QF with raise_on_failure=False) where the snap or the extraction fails; where the snap failed,
+    report holds "status", "message" ("snapping failed: ...") and "snap" only.
+    """
+    UV2, FUV2, snapped = snap(V, F, UV, FUV, weld=weld, integer_grid_map=True, grid_scale=grid_scale, untangle=untangle,
+                              merge_cone_pairs=merge_cone_pairs, separate_cone_pairs=separate_cone_pairs,
+                              quantize=quantize, threads=threads, raise_on_failure=False)
+    if snapped["status"] != "SUCCESS":
+        report = {"status": snapped["status"], "message": "snapping failed: " + snapped["message"], "snap": snapped}
+        if raise_on_failure:
+            raise SnapError(report)
+        return None, None, report
+    QV, QF, report = extract_quad_mesh(V, F, UV2, FUV2, weld=weld, grid_scale=grid_scale, max_grid_cells=max_grid_cells,
+                                       split_valence_one_cones=split_valence_one_cones,
+                                       fill_branched_cells=fill_branched_cells, raise_on_failure=False)
+    report["snap"], report["UV"], report["FUV"] = snapped, UV2, FUV2
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)
     return QV, QF, report

@@ -976,6 +976,25 @@ def branched_disk(center, turns, N=16, rings=10):
     return np.array(V), F, np.array(UV), F.copy()
 
 
+def test_quad_mesh_in_one_call_generated():
+    # quad_mesh() = snap(integer_grid_map=True, ...) + extract_quad_mesh(): on an exact map the snap keeps it, and the quads
+    # are extract_quad_mesh()'s; a map whose cone is off the integer points (the quarter plane moved by (0.3, 0.3): its
+    # seam translation is not an integer vector) is refused by the snap, said so, and the arrays stay
+    V, F, UV, FUV, cones, _ = quarter_plane_cone(3)
+    QV, QF, r = ss.quad_mesh(V, F, UV, FUV)
+    QV1, QF1, r1 = ss.extract_quad_mesh(V, F, UV, FUV)
+    assert np.array_equal(QF, QF1) and np.array_equal(QV, QV1) and list(r["split_cones"]) == cones
+    assert r["snap"]["status"] == "SUCCESS" and np.array_equal(r["UV"], UV) and np.array_equal(r["FUV"], FUV)
+    moved = UV + 0.3
+    before = moved.copy()
+    with pytest.raises(ss.SnapError) as e:
+        ss.quad_mesh(V, F, moved, FUV)
+    assert e.value.report["message"].startswith("snapping failed: ") and e.value.report["snap"]["status"] == "INVALID_INPUT"
+    assert np.array_equal(moved, before)
+    QV, QF, r = ss.quad_mesh(V, F, moved, FUV, raise_on_failure=False)
+    assert QV is None and QF is None and r["status"] == "INVALID_INPUT" and "snap" in r
+
+
 def test_extract_quad_mesh_fills_a_branched_cell():
     V, F, UV, FUV = branched_disk((0.5, 0.25), 2)
     QV, QF, r = ss.extract_quad_mesh(V, F, UV, FUV)
@@ -1453,6 +1472,27 @@ def test_extract_quad_mesh_of_a_cut_mesh_not_welded():
     assert QV is None and r["status"] == "INVALID_INPUT" and "is a cut mesh (is_cut_mesh())" in r["message"]
     QV, QF, r = ss.extract_quad_mesh(V, F, UV2, FUV2)
     assert r["status"] == "SUCCESS" and r["euler_characteristic"] == 0
+
+
+def test_quad_mesh_in_one_call_shared_data():
+    # fandisk: as snap(integer_grid_map=True, merge_cone_pairs=True) then extract_quad_mesh(), bit for bit; Directional's
+    # full-seamless dragon, whose cone pairs on one integer point are moved apart and one of whose branched cells takes
+    # in the cell of a 90-degree cone: a closed quad mesh, chi 2
+    V, F, UV, FUV = shared_map("libqex/fandisk_param.obj")
+    QV, QF, r = ss.quad_mesh(V, F, UV, FUV)
+    UV2, FUV2, _ = ss.snap(V, F, UV, FUV, integer_grid_map=True, merge_cone_pairs=True, separate_cone_pairs=True)
+    QV2, QF2, _ = ss.extract_quad_mesh(V, F, UV2, FUV2)
+    assert np.array_equal(QF, QF2) and np.array_equal(QV, QV2) and np.array_equal(r["UV"], UV2)
+    V, F, UV, FUV = shared_map("directional/dragon-param-full-seamless.obj")
+    QV, QF, r = ss.quad_mesh(V, F, UV, FUV, threads=2)
+    sides = [tuple(sorted((a, b))) for q in QF for a, b in zip(q, np.roll(q, -1))]
+    uses = {}
+    for e in sides:
+        uses[e] = uses.get(e, 0) + 1
+    assert all(n == 2 for n in uses.values()) and all(len(set(q)) == 4 for q in QF)     # closed, four corners each
+    assert len(QV) - len(uses) + len(QF) == 2 == r["euler_characteristic"] and r["covers_map"]
+    assert ss.is_exact_integer_grid_map(V, F, r["UV"], r["FUV"])
+    assert len(r["snap"]["separated_cone_pairs"]) > 0 and len(r["absorbed_cones"]) > 0
 
 
 def test_separate_cone_pairs():
