@@ -1304,15 +1304,20 @@ Status solve_with_separation_trials(const Snap_options& opt, Snap_state<Triangle
       if(d != defects.end() && c.rank == r) d->second[std::size_t(r)] = defects_near(t.cm, fc, bad, c).score();
     }
   };
-  for(std::size_t k = 0; k < trial_rank.size(); k += 2) {
-    const bool two = k + 1 < trial_rank.size();
-    bool ok = false, ok2 = false;
-    run_concurrently(two ? opt.threads : 1u, [&] { ok = snap_with(trial_rank[k], trial, T, R); },
-                     [&] { if(two) ok2 = snap_with(trial_rank[k + 1], trial, T2, R2); });
-    report.separation_trials += two ? 2 : 1;
-    if(ok) score(trial_r[k], T, R);
-    if(ok2) score(trial_r[k + 1], T2, R2);
+  for(std::size_t k = 0; k < trial_rank.size();) {
+    if(opt.threads >= 2 && k + 1 < trial_rank.size()) {    // two at once (T2 held only then)
+      bool ok = false, ok2 = false;
+      run_concurrently(opt.threads, [&] { ok = snap_with(trial_rank[k], trial, T, R); },
+                       [&] { ok2 = snap_with(trial_rank[k + 1], trial, T2, R2); });
+      if(ok) score(trial_r[k], T, R);
+      if(ok2) score(trial_r[k + 1], T2, R2);
+      k += 2;
+    } else {
+      if(snap_with(trial_rank[k], trial, T, R)) score(trial_r[k], T, R);
+      k += 1;
+    }
   }
+  report.separation_trials += trial_rank.size();
   T2 = Snap_state<TriangleMesh>();
   bool changed = false;
   rank = first_rank;
