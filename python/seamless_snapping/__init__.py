@@ -431,6 +431,14 @@ def trace_isoline(V, F, UV, FUV, face, corner, direction, *, weld=None, max_face
     return d
 
 
+def _max_grid_cells(x):
+    """extract_quad_mesh()'s max_grid_cells as a count (None: the C++ default_max_grid_cells), or InputError"""
+    n = _core.default_max_grid_cells if x is None else _index(x, "max_grid_cells")
+    if not 0 <= n < 2**64:
+        raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
+    return n
+
+
 def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cells=None, split_valence_one_cones=True,
                       fill_branched_cells=True, raise_on_failure=True):
     """The quad mesh of the exact, fold-free integer-grid map (UV, FUV) of (V, F) (e.g. the output of
@@ -473,9 +481,7 @@ def extract_quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, max_grid_cell
     default_max_grid_cells, 2**24): more are refused with "RANGE_EXCEEDED" (the work and the memory are linear in it,
     about 290 bytes per quad at the peak).
     """
-    n = _core.default_max_grid_cells if max_grid_cells is None else _index(max_grid_cells, "max_grid_cells")
-    if not 0 <= n < 2**64:
-        raise InputError("max_grid_cells must be in [0, 2**64), got %d" % n)
+    n = _max_grid_cells(max_grid_cells)
     QV, QF, text, origins = _core.extract_quad_mesh(*_mesh_arrays(V, F, UV, FUV), _weld((V, F), weld), _grid_scale(grid_scale), n,
                                                     bool(split_valence_one_cones), bool(fill_branched_cells))
     report = json.loads(text)
@@ -498,14 +504,18 @@ def quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, quantize=False, untan
     """The quad mesh of an approximately integer-grid UV map in one call, as the seamless_quad command line makes it:
     snap(V, F, UV, FUV, integer_grid_map=True, ...) to an exact integer-grid map (untangled, the cone pairs on one
     integer point merged or moved apart, and with quantize=True integer translations chosen where the map has none),
-    then extract_quad_mesh() of that map. The arguments are those of snap() and extract_quad_mesh(); the defaults
-    are seamless_quad's (but threads=1: 0 takes the machine's cores, the same results).
+    then extract_quad_mesh() of that map. The arguments mean what they mean there (threads: the snap's; the snap's
+    other options at their defaults); the defaults are seamless_quad's (but threads=1: 0 takes the machine's cores, the
+    same results).
 
     Returns (QV, QF, report): extract_quad_mesh()'s, with report["snap"] the snap's report and report["UV"],
     report["FUV"] the exact map (as snap() returns them); (UV, FUV) are not changed. Refused (SnapError, or None in
     place of QV and QF with raise_on_failure=False) where the snap or the extraction fails; where the snap failed,
-    report holds "status", "message" ("snapping failed: ...") and "snap" only.
+    report holds "status", "message" ("snapping failed: ...") and "snap" only. With untangle=True a map refused for
+    fold-overs or zero-area triangles was untangled already: report["advice"] says so instead of extract_quad_mesh()'s
+    advice to untangle, and report["snap"]["folds"] and ["winding_defects"] say what is left and what is forced.
     """
+    n = _max_grid_cells(max_grid_cells)                    # refused before the snap's work
     UV2, FUV2, snapped = snap(V, F, UV, FUV, weld=weld, integer_grid_map=True, grid_scale=grid_scale, untangle=untangle,
                               merge_cone_pairs=merge_cone_pairs, separate_cone_pairs=separate_cone_pairs,
                               quantize=quantize, threads=threads, raise_on_failure=False)
@@ -514,9 +524,14 @@ def quad_mesh(V, F, UV, FUV, *, weld=None, grid_scale=1.0, quantize=False, untan
         if raise_on_failure:
             raise SnapError(report)
         return None, None, report
-    QV, QF, report = extract_quad_mesh(V, F, UV2, FUV2, weld=weld, grid_scale=grid_scale, max_grid_cells=max_grid_cells,
+    QV, QF, report = extract_quad_mesh(V, F, UV2, FUV2, weld=weld, grid_scale=grid_scale, max_grid_cells=n,
                                        split_valence_one_cones=split_valence_one_cones,
                                        fill_branched_cells=fill_branched_cells, raise_on_failure=False)
+    advice = "; " + report.get("advice", "")
+    if report["status"] == "FOLD_OVERS" and untangle and report.get("advice") and report["message"].endswith(advice):
+        report["message"] = report["message"][:-len(advice)]
+        report["advice"] = ("quad_mesh() untangled the map already: report[\"snap\"][\"folds\"] and "
+                            "[\"winding_defects\"] say what is left and what the constraints force")
     report["snap"], report["UV"], report["FUV"] = snapped, UV2, FUV2
     if report["status"] != "SUCCESS" and raise_on_failure:
         raise SnapError(report)

@@ -1493,6 +1493,12 @@ def test_quad_mesh_in_one_call_shared_data():
     assert len(QV) - len(uses) + len(QF) == 2 == r["euler_characteristic"] and r["covers_map"]
     assert ss.is_exact_integer_grid_map(V, F, r["UV"], r["FUV"])
     assert len(r["snap"]["separated_cone_pairs"]) > 0 and len(r["absorbed_cones"]) > 0
+    # without the separation its 8 zero-area triangles are forced: refused, and the advice is not to untangle again
+    QV, QF, r = ss.quad_mesh(V, F, UV, FUV, separate_cone_pairs=False, threads=2, raise_on_failure=False)
+    assert QV is None and r["status"] == "FOLD_OVERS" and any(f["forced"] for f in r["snap"]["folds"])
+    assert "untangle the map first" not in r["message"] + r["advice"] and "untangled the map already" in r["advice"]
+    with pytest.raises(ss.InputError):                      # refused before the snap
+        ss.quad_mesh(V, F, UV, FUV, max_grid_cells=-1)
 
 
 def test_separate_cone_pairs():
