@@ -22,7 +22,9 @@
 //   face 4, a point of a border edge 3), so that the irregular vertices are exactly the cones. The repairs
 //   (Cell_repairs) change that where they act: a cone of valence 1 split (valence_one_cones.h) is no quad vertex, its
 //   2 x 2 cells one quad (3 quads fewer than the UV area), three of their corners with one edge fewer; a branch point
-//   filled (branched_cells.h) is no quad vertex, its cell of area m 2m - 1 quads, the rungs' ends with one edge more.
+//   filled (branched_cells.h) is no quad vertex, its cell of area m 2m - 1 quads, the rungs' ends with one edge more;
+//   a cone of valence 1 whose cell a fill took in is no quad vertex either, its cell no quad (one quad fewer), its
+//   corners a and b with two edges and one fewer.
 
 #include <CGAL/Seamless_snapping/Quad_mesh_report.h>
 #include <CGAL/Seamless_snapping/internal/quad/quad_cells.h>
