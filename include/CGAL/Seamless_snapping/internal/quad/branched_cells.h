@@ -49,10 +49,10 @@ inline int absorbable_cone_cell(const Quad_cells& cells, const Quad_incidence& i
                                 int q, const std::vector<int>& valence, int& rotation)
 {
   const std::array<int, 4>& Q = cells.quads[std::size_t(q)];
-  auto in_cell = [&](int x) { return std::binary_search(br.corners.begin(), br.corners.end(), x); };
   for(rotation = 0; rotation < 4; ++rotation) {
     const int p = Q[std::size_t(rotation)], a = Q[std::size_t((rotation + 1) % 4)], b = Q[std::size_t((rotation + 2) % 4)];
-    if(a != Q[std::size_t((rotation + 3) % 4)] || a == b || !in_cell(a) || !in_cell(b) || in_cell(p)) continue;
+    if(a != Q[std::size_t((rotation + 3) % 4)] || a == b || !br.has_corner(a) || !br.has_corner(b) || br.has_corner(p))
+      continue;
     const Integer_point& cone = cells.points[std::size_t(p)];
     if(cone.kind != AT_VERTEX || valence[std::size_t(cone.element)] != 1 || incidence.quads_of[p].size() != 1) continue;
     int r = 0;
@@ -111,12 +111,10 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
         lost.push_back(Q[std::size_t((r + 1) % 4)]);
         lost.push_back(Q[std::size_t((r + 2) % 4)]);
         absorbed.push_back(cells.points[std::size_t(p)].element);
-        faces.insert(faces.end(), cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
-                     cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
+        faces.insert(faces.end(), cells.faces_begin(std::size_t(q)), cells.faces_end(std::size_t(q)));
       }
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    auto in_cell = [&](int p) { return std::binary_search(K.begin(), K.end(), p); };
     auto rank = [&](int p) { return std::size_t(std::lower_bound(K.begin(), K.end(), p) - K.begin()); };
     // the loop: the sides between the cell's corners with a quad on one side only, reversed (the hole's direction)
     std::vector<int> next(n, -1);
@@ -125,7 +123,7 @@ inline Status fill_branched_cells(Quad_cells& cells, const std::vector<int>& val
         if(quad_gone[std::size_t(q)]) continue;
         for(int k = 0; k < 4; ++k) {
           const int a = cells.quads[std::size_t(q)][std::size_t(k)], b = cells.quads[std::size_t(q)][std::size_t((k + 1) % 4)];
-          if(a != K[i] || !in_cell(b) || incidence.has_side(b, a)) continue;
+          if(a != K[i] || !br.has_corner(b) || incidence.has_side(b, a)) continue;
           if(next[rank(b)] >= 0 && next[rank(b)] != a) return refuse("a corner point has two open sides");
           next[rank(b)] = a;                              // the hole runs b -> a
         }

@@ -96,9 +96,8 @@ void add_quad_mesh(const TriangleMesh& tm, const Corner_mesh_descriptors<Triangl
     const typename QT::face_descriptor f = qf[q];
     if(!covered_faces) continue;
     std::vector<typename GT::face_descriptor> covered;
-    covered.reserve(x.cells.faces_first[q + 1] - x.cells.faces_first[q]);
-    for(std::size_t k = x.cells.faces_first[q]; k < x.cells.faces_first[q + 1]; ++k)
-      covered.push_back(face_of[std::size_t(x.cells.faces[k])]);
+    covered.reserve(std::size_t(x.cells.faces_end(q) - x.cells.faces_begin(q)));
+    for(auto g = x.cells.faces_begin(q); g != x.cells.faces_end(q); ++g) covered.push_back(face_of[std::size_t(*g)]);
     put(face_origin_map, f, covered);
   }
 }

@@ -63,8 +63,13 @@ struct Quad_cells
     std::vector<int> corners;                   // its corner points (indices into points), ascending: 4m of them
     std::vector<int> faces;                     // the faces of its pieces, ascending
     int vertex = -1;                            // the vertex it winds around (Corner_mesh numbering)
+    bool has_corner(int p) const { return std::binary_search(corners.begin(), corners.end(), p); }
   };
   std::vector<Branched> branched;               // complete branched cells (see the header), not in quads
+
+  // the faces of quad q: faces[faces_first[q] .. faces_first[q + 1] - 1]
+  std::vector<int>::const_iterator faces_begin(std::size_t q) const { return faces.cbegin() + std::ptrdiff_t(faces_first[q]); }
+  std::vector<int>::const_iterator faces_end(std::size_t q) const { return faces.cbegin() + std::ptrdiff_t(faces_first[q + 1]); }
 };
 
 // What extract_quads() changed in the cells beyond the unit cells (branched_cells.h, valence_one_cones.h), for the
@@ -139,7 +144,7 @@ inline void replace_cells(Quad_cells& cells, const std::vector<char>& quad_gone,
   };
   for(std::size_t q = 0; q < cells.quads.size(); ++q)
     if(!quad_gone[q])
-      add(cells.quads[q], cells.faces.cbegin() + long(cells.faces_first[q]), cells.faces.cbegin() + long(cells.faces_first[q + 1]));
+      add(cells.quads[q], cells.faces_begin(q), cells.faces_end(q));
   for(std::size_t k = 0; k < added.size(); ++k) add(added[k], added_faces[k].cbegin(), added_faces[k].cend());
   for(Quad_cells::Branched& br : cells.branched)
     for(int& c : br.corners) c = new_index[std::size_t(c)];

@@ -107,6 +107,12 @@ struct Quad_options
 // a vertex of angle sum q (quarter turns) whose cells fill_branched_cells() fills, off the integer points
 inline bool is_branch_point(int q) { return q >= 8 && q % 4 == 0; }
 
+// the UV of corner h lies inside an open cell: neither coordinate an integer (grid units)
+inline bool in_open_cell(const Corner_mesh& cm, int h)
+{
+  return cm.u[h] != std::floor(cm.u[h]) && cm.v[h] != std::floor(cm.v[h]);
+}
+
 // Quad_mesh_report::advice with FOLD_OVERS, where untangling can remove the faces
 constexpr const char* untangle_advice = "untangle the map first (the snap with untangle(true)), which removes such faces "
                                         "unless the constraints force them (Snap_report::folds says which)";
@@ -176,12 +182,12 @@ inline Status check_cones(const Corner_mesh& cm, const std::vector<int>& valence
     if(cm.is_border_halfedge(h) || on_border[std::size_t(v)] || q == 4) continue;
     const bool on_integer = cm.u[h] == std::floor(cm.u[h]) && cm.v[h] == std::floor(cm.v[h]);
     if(on_integer && (q != 1 || opt.split_valence_one_cones)) continue;
-    const bool in_open_cell = cm.u[h] != std::floor(cm.u[h]) && cm.v[h] != std::floor(cm.v[h]);
-    if(in_open_cell && opt.fill_branched_cells && is_branch_point(q)) continue;
+    const bool in_cell = in_open_cell(cm, h);
+    if(in_cell && opt.fill_branched_cells && is_branch_point(q)) continue;
     message = "vertex " + std::to_string(v) + " has a UV angle sum of " + std::to_string(q) + " quarter turns ";
     if(q != 1) {
       message += "but is not on an integer point: the map branches inside a cell" + collapsed_cone_pairs_clause(cm, edge_k, v);
-      if(in_open_cell && is_branch_point(q))
+      if(in_cell && is_branch_point(q))
         message += "; fill_branched_cells(true) (the default; seamless_quad without --no-branch-fill) fills that cell's "
                    "sheets with quads";
     } else {
@@ -220,7 +226,7 @@ inline std::vector<char> branch_vertices(const Corner_mesh& cm, const Map_facts&
   for(int h = 0; h < cm.n_halfedges; ++h) {
     const int v = cm.target[h];
     if(cm.is_border_halfedge(h) || facts.on_border[std::size_t(v)] || !is_branch_point(facts.valence[std::size_t(v)]) ||
-       cm.u[h] == std::floor(cm.u[h]) || cm.v[h] == std::floor(cm.v[h]))
+       !in_open_cell(cm, h))
       continue;
     branch.resize(std::size_t(cm.n_vertices), 0);
     branch[std::size_t(v)] = 1;

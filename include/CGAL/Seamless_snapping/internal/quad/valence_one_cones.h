@@ -105,8 +105,7 @@ inline Status split_valence_one_cones(Quad_cells& cells, const std::vector<int>&
   std::vector<std::vector<int> > covered(merged.size());
   for(std::size_t s = 0; s < merged.size(); ++s) {
     for(int q : merged_from[s])
-      covered[s].insert(covered[s].end(), cells.faces.begin() + long(cells.faces_first[std::size_t(q)]),
-                        cells.faces.begin() + long(cells.faces_first[std::size_t(q) + 1]));
+      covered[s].insert(covered[s].end(), cells.faces_begin(std::size_t(q)), cells.faces_end(std::size_t(q)));
     std::sort(covered[s].begin(), covered[s].end());
     covered[s].erase(std::unique(covered[s].begin(), covered[s].end()), covered[s].end());
     for(int k : {0, 1, 3}) --repairs.valence_change[std::size_t(merged[s][std::size_t(k)])];   // c, d, e
