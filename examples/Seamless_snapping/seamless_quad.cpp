@@ -23,6 +23,7 @@
 #include <CGAL/Seamless_snapping/version.h>
 #include <CGAL/Seamless_snapping/internal/io/command_line.h>
 #include <CGAL/Seamless_snapping/internal/io/json_string.h>
+#include <CGAL/Seamless_snapping/internal/io/name_lists.h>
 #include <CGAL/Seamless_snapping/internal/io/retained_heap.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -39,6 +40,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double>                     K;
@@ -298,24 +300,19 @@ int main(int argc, char** argv)
   else if(!quiet)                                       // nothing was snapped: no counts after it (the reason follows)
     std::printf("snap: %s (%.1f ms): %zu faces, %zu cut edges, %zu cones\n", SS::status_name(snap.status), snap.total_ms,
                 snap.faces, snap.cut_edges, snap.field_cones);
-  if(!quiet && !snap.merged_cone_pairs.empty()) {
-    std::printf("merged %zu cone pair(s) that the map's integer translations put onto one integer point (vertices",
-                snap.merged_cone_pairs.size());
-    for(std::size_t i = 0; i < snap.merged_cone_pairs.size() && i < 10; ++i)
-      std::printf(" %zu+%zu", snap.merged_cone_pairs[i].first, snap.merged_cone_pairs[i].second);
-    std::printf("%s): regular vertices of the quad mesh now (%zu pair(s) whose indices do not cancel: one vertex with "
-                "both), the rotations of %zu cut edges changed (%zu of them new); --keep-cone-pairs keeps them\n",
-                snap.merged_cone_pairs.size() > 10 ? " ..." : "", snap.joined_cone_pairs, snap.merged_cut_edges,
-                snap.added_cut_edges);
-  }
-  if(!quiet && !snap.separated_cone_pairs.empty()) {
-    std::printf("moved %zu cone pair(s) apart that the map's integer translations put onto one integer point (vertices",
-                snap.separated_cone_pairs.size());
-    for(std::size_t i = 0; i < snap.separated_cone_pairs.size() && i < 10; ++i)
-      std::printf(" %zu+%zu", snap.separated_cone_pairs[i].first, snap.separated_cone_pairs[i].second);
-    std::printf("%s): each onto a neighbouring integer point, %zu trial snap(s); --no-cone-separation leaves them\n",
-                snap.separated_cone_pairs.size() > 10 ? " ..." : "", snap.separation_trials);
-  }
+  const auto pairs = [](const std::vector<std::pair<std::size_t, std::size_t> >& p) {
+    return SS::internal::first_ten(p, SS::internal::pair_name("+"));
+  };
+  if(!quiet && !snap.merged_cone_pairs.empty())
+    std::printf("merged %zu cone pair(s) that the map's integer translations put onto one integer point (vertices%s): "
+                "regular vertices of the quad mesh now (%zu pair(s) whose indices do not cancel: one vertex with both), "
+                "the rotations of %zu cut edges changed (%zu of them new); --keep-cone-pairs keeps them\n",
+                snap.merged_cone_pairs.size(), pairs(snap.merged_cone_pairs).c_str(), snap.joined_cone_pairs,
+                snap.merged_cut_edges, snap.added_cut_edges);
+  if(!quiet && !snap.separated_cone_pairs.empty())
+    std::printf("moved %zu cone pair(s) apart that the map's integer translations put onto one integer point (vertices%s): "
+                "each onto a neighbouring integer point, %zu trial snap(s); --no-cone-separation leaves them\n",
+                snap.separated_cone_pairs.size(), pairs(snap.separated_cone_pairs).c_str(), snap.separation_trials);
 
   // 3. extract (the quad mesh is written into `quads` only on success)
   Mesh quads;
