@@ -225,6 +225,17 @@ if shared and os.path.exists(fandisk):
 else:
     print("quad_cli_test: fandisk: SKIPPED (no shared data directory '%s')" % shared)
 
+
+def closed_quads(rc, out, q):
+    """the run wrote a closed all-quad mesh of Euler characteristic 2 with the quads of the report"""
+    if rc != 0 or not os.path.exists(out):
+        return False
+    nv, faces = faces_of(out)
+    edges = edge_uses(faces)
+    return (all(len(f) == 4 for f in faces) and all(c == 2 for c in edges.values()) and
+            nv - len(edges) + len(faces) == 2 and len(faces) == q["quads"])
+
+
 # 2c. cone pairs a cut joins on one integer point (shared data only): Directional's dragon, whose rounded translations
 # put such pairs onto one point, gives a closed quad mesh by default (the pairs moved apart; a branch point's cell
 # filled together with the cell of a 90-degree cone next to it); with --no-cone-separation the pairs stay and it keeps 8
@@ -235,16 +246,17 @@ if shared and os.path.exists(dragon):
     rc, text = run(dragon, out, "--report", report)
     r = json.load(open(report))
     q = r["quad_mesh"]
-    ok = rc == 0 and os.path.exists(out)
-    if ok:
-        nv, faces = faces_of(out)
-        edges = edge_uses(faces)
-        ok = (all(len(f) == 4 for f in faces) and all(c == 2 for c in edges.values()) and
-              nv - len(edges) + len(faces) == 2 and len(faces) == q["quads"])
-    check(ok and len(r["snap"]["separated_cone_pairs"]) > 0 and "moved %d cone pair(s) apart" %
+    check(closed_quads(rc, out, q) and len(r["snap"]["separated_cone_pairs"]) > 0 and "moved %d cone pair(s) apart" %
           len(r["snap"]["separated_cone_pairs"]) in text and len(q["absorbed_cones"]) > 0 and
           len(q["filled_branch_points"]) > 0 and q["covers_map"],
           "dragon: a closed quad mesh, chi 2, the cone pairs separated: %d %s" % (rc, text))
+    # at grid scale 2 the cut joining the pair 5023 + 5025 runs farther than 2 cells from their point: the separation
+    # reaches 2 S cells at scale S (with 2 cells the pair stayed, two zero-area triangles, refused)
+    out = os.path.join(work, "dragon_2.obj")
+    rc, text = run(dragon, out, "--grid-scale", "2", "--report", report)
+    r = json.load(open(report))
+    check(closed_quads(rc, out, r["quad_mesh"]) and [5023, 5025] in r["snap"]["separated_cone_pairs"] and
+          r["quad_mesh"]["covers_map"], "dragon at grid scale 2: a closed quad mesh, chi 2: %d %s" % (rc, text))
     out = os.path.join(work, "dragon_kept.obj")
     rc, text = run(dragon, out, "--no-cone-separation", "--report", report)
     r = json.load(open(report))

@@ -312,7 +312,8 @@ namespace Seamless_snapping {
  *   \cgalParamNBegin{separate_cone_pairs}
  *     \cgalParamDescription{with `integer_grid_map`: two cones (any indices) that the rounded translations put onto one
  *                           integer point, joined by a path of cut edges whose vertices all lie within two grid cells of
- *                           that point, are moved apart instead, after `merge_cone_pairs` if both are set: the side of that
+ *                           that point (2 S cells at a `grid_scale` S > 1, where the map is S times as large in cells),
+ *                           are moved apart instead, after `merge_cone_pairs` if both are set: the side of that
  *                           path on its left moves by an integer vector relative to the other (the integer translation of
  *                           every cut edge of the path changes; every other vertex of it keeps the identity), chosen among
  *                           those that put each cone on a neighbouring integer point, on no other cone's point near it, nearest its

@@ -35,6 +35,7 @@
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -47,6 +48,14 @@ namespace internal {
 // between them may run (2: duck_qc_8 in integer-grid mode gets both of its pairs joined by such paths separated, and no
 // negative triangle left; 1 separates one of them)
 constexpr double default_separate_cone_reach = 2.0;
+
+// the reach at grid scale S: 2 S cells for S > 1 (the map and the cut paths between its cones are S times as long in
+// grid cells; with 2 cells at every scale the dragon (full-seamless) at S = 2 kept a pair whose cut runs 2-4 cells
+// from the point, and its quad mesh was refused), 2 cells for S <= 1
+inline double separate_cone_reach(double grid_scale)
+{
+  return default_separate_cone_reach * (std::max)(1.0, grid_scale);
+}
 
 struct Cone_separation
 {

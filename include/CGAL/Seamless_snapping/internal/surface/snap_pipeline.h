@@ -462,8 +462,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
       }
     if(opt.separate_cone_pairs) {
       moved.assign(S.cm.n_vertices, 0);
-      S.separations = separate_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_separate_cone_reach,
-                                                    S.separation_rank);
+      S.separations = separate_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid,
+                                                    separate_cone_reach(opt.grid_scale), S.separation_rank);
       for(const Cone_separation& c : S.separations) {
         report.separated_cone_pairs.emplace_back(std::size_t((std::min)(c.a, c.b)), std::size_t((std::max)(c.a, c.b)));
         report.separated_cut_edges += c.path.size();
