@@ -217,6 +217,17 @@ if shared and os.path.exists(fandisk):
           r["quad_mesh"]["irregular_vertices"] == r["snap"]["field_cones"] and os.path.exists(out) and
           "merged 1 cone pair(s)" in text and "--keep-cone-pairs keeps them" in text,
           "fandisk: the cone pair merged, its quad mesh written: %d %s" % (rc, text))
+    # at grid scale 8 the same pairs are merged and the quad mesh has the same irregular vertices: the merge reaches
+    # S cells at grid scale S (with one cell at every scale, 32 irregular vertices instead of 28 at 8)
+    merged, valences = r["snap"]["merged_cone_pairs"], r["quad_mesh"]["valence_histogram"]
+    out = os.path.join(work, "fandisk_8.obj")
+    rc, text = run(fandisk, out, "--grid-scale", "8", "--report", report)
+    r = json.load(open(report))
+    def irregular(histogram):   # vertices per valence but 4
+        return {k: n for k, n in enumerate(histogram) if k != 4 and n > 0}
+    check(rc == 0 and r["snap"]["merged_cone_pairs"] == merged and r["quad_mesh"]["quads"] > 60 * 897 and
+          irregular(r["quad_mesh"]["valence_histogram"]) == irregular(valences),
+          "fandisk at grid scale 8: the same pairs merged, the same irregular vertices: %d %s" % (rc, text))
     out = os.path.join(work, "fandisk_kept.obj")
     rc, text = run(fandisk, out, "--keep-cone-pairs", "--report", report)
     r = json.load(open(report))

@@ -170,8 +170,9 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
     more than `max_untangle_change` grid cells is not used (report["untangle_refused"]); a mirrored map (more
     negative than positive UV triangles in a connected component, e.g. its v axis flipped) is not untangled there
     (report["uv_mirrored"]: mirror the UVs of that component). `merge_cone_pairs=True` (with `integer_grid_map`) makes each
-    pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point regular points of
-    the field (report["merged_cone_pairs"]), as libQEx merges them, and then joins other pairs on one point (one
+    pair of a 90 and a -90 degree cone that the rounded translations put onto one integer point (and a path within
+    one grid cell of it joins, S cells at grid_scale S > 1) regular points of the field (report["merged_cone_pairs"]),
+    as libQEx merges them, and then joins other pairs on one point (one
     cone takes both indices, never below valence 2, the other becomes regular: report["joined_cone_pairs"]);
     without it such maps keep winding defects,
     and report["collapsed_cone_pairs"] lists the pairs found next to them ("cancelling_collapsed_cone_pairs" of

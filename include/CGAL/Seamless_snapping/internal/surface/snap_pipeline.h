@@ -377,7 +377,7 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
     // cone pairs on one integer point that no cut path near the point joins: a path through the mesh near it
     // becomes cut edges (rotation 0, continuous UVs), along which build_constraints() merges them
     const std::vector<int> added = cut_edges_to_add(cm, S.st, S.rot, in_grid_units(S, S.st.ubar),
-                                                    opt.integer_grid_tolerance, default_merge_cone_reach);
+                                                    opt.integer_grid_tolerance, merge_cone_reach(opt.grid_scale));
     if(!added.empty()) {
       seam_override.assign(cm.n_edges, 0);
       given_k.assign(cm.n_edges, 0);
@@ -452,7 +452,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
                                                                  translations, message, opt.grid_scale, &S.al);
     if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
-      for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, default_merge_cone_reach)) {
+      for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid,
+                                                           merge_cone_reach(opt.grid_scale))) {
         report.merged_cone_pairs.emplace_back(std::size_t(m.a), std::size_t(m.b));
         report.merged_cut_edges += m.path.size();
         merged[m.a] = 4;
