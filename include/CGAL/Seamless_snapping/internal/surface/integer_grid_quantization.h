@@ -180,15 +180,17 @@ inline int aligned_candidates(Isoline_classes& classes, bool aligned, int a, con
 // the cone its next candidate.) Against 1, with the pairs that merging joins allowed, measured at 1bc0fbd (before the
 // rule for triangles of three cones): the rot-seamless dragon of ../shared/data at grid scale 1 with 17 negative / 10
 // zero-area triangles left instead of 21 / 8, 102 wound vertices instead of 99; the 302K bunny of ../shared/large the
-// same defects at grid scale 8 and 16
+// same defects at grid scale 8 and 16. It stays 2 at every grid scale: 2 S cells at S > 1, like the merge's reach, gave
+// the rot-seamless dragon and retinal_miq with --quantize at S = 2 to 16 the same refusals and irregular vertices
+// (2026-11-30, bench_quad)
 constexpr double quantization_cone_reach = 2.0;
 
 // The peeling of the cut graph (see the header) into t (its cut halfedges' entries; the others stay 0), each cone that
-// determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end; `merge_pairs` as
+// determines an edge at the point diffuse_rounding() chooses, the vertices of `root` left to the end; `merge_reach` as
 // in quantize_translations().
 inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
                              const Align_edges& al, const std::vector<double>& ubar, const std::vector<int>& corner_of,
-                             const std::vector<char>& root, bool merge_pairs, std::vector<long>& t, std::string& message)
+                             const std::vector<char>& root, double merge_reach, std::vector<long>& t, std::string& message)
 {
   // the classes of the coordinates that the align edges and the translations known so far tie together
   // (isoline_classes.h); without align edges they are not needed
@@ -232,8 +234,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   // placed cone (two cones on one point force zero-area triangles: COINCIDENT_CORNERS) that either shares a face with
   // it (both carried into that face's chart) or that a path of edges reaches, its vertices (at the input's UVs) within
   // quantization_cone_reach of p, crossing cut edges whose translations are known only (the search of
-  // collapsed_cone_pairs()). With `merge_pairs`, a cone that merge_collapsed_cone_pairs() will find (a path of cut
-  // edges within default_merge_cone_reach) is no collision: the pair becomes regular points or one cone of the quad mesh
+  // collapsed_cone_pairs()). With `merge_reach` > 0, a cone that merge_collapsed_cone_pairs() will find (a path of cut
+  // edges within merge_reach) is no collision: the pair becomes regular points or one cone of the quad mesh
   // (an optimistic guess: the merge takes each cone once and joins no pair into a vertex of valence below 2), and the
   // faces around v are not checked then. Checking them too, that partner left out, was worse where the cells are as
   // large as the distances between the cones (measured at 17cdc4c): the rot-seamless dragon at grid scale 1 / 2 with
@@ -243,8 +245,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
     known[std::size_t(cm.edge[crossed])] = 1;
     const Cone_merge near = near_cones.find(v, search_mark++, Cone_partner_search::Query{quantization_cone_reach, false, false,
                                                                                          nullptr, nullptr, &known});
-    const bool merged = !near.path.empty() && merge_pairs &&
-                        near_cones.find(v, search_mark++, Cone_partner_search::Query{default_merge_cone_reach, true, false,
+    const bool merged = !near.path.empty() && merge_reach > 0 &&
+                        near_cones.find(v, search_mark++, Cone_partner_search::Query{merge_reach, true, false,
                                                                                      nullptr, nullptr, &known}).b == near.b;
     known[std::size_t(cm.edge[crossed])] = 0;
     if(!near.path.empty()) return !merged;
@@ -396,17 +398,19 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
   }
 }
 
-// `al`: the align edges. `ubar`: the sector values in grid units. `merge_pairs`: the snap merges collapsed cone pairs afterwards
-// (Snap_options::merge_cone_pairs). `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
+// `al`: the align edges. `ubar`: the sector values in grid units. `merge_reach`: 0, or the reach of the merge of collapsed
+// cone pairs that the snap does afterwards (Snap_options::merge_cone_pairs; merge_cone_reach(): S cells at grid scale S >
+// 1; predicted with 1 cell there, the rot-seamless dragon at S = 4 kept 867 irregular quad vertices instead of 865, the
+// 302K bunny of ../shared/large at S = 8 / 16 100 / 81 wound vertices instead of 93 / 84). `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
 // (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
 inline Status quantize_translations(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot,
-                                    const Align_edges& al, const std::vector<double>& ubar, bool merge_pairs,
+                                    const Align_edges& al, const std::vector<double>& ubar, double merge_reach,
                                     std::vector<long>& t, std::string& message)
 {
   t.assign(2 * std::size_t(cm.n_halfedges), 0);
   const std::vector<int> corner_of = first_corners(cm);
   const std::vector<char> root = quantization_roots(cm, st, rot, corner_of, t);   // t: all 0 yet
-  return peel_cut_graph(cm, st, rot, al, ubar, corner_of, root, merge_pairs, t, message);
+  return peel_cut_graph(cm, st, rot, al, ubar, corner_of, root, merge_reach, t, message);
 }
 
 } // namespace internal

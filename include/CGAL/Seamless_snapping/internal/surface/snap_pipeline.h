@@ -446,7 +446,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     // quantize(true) and a map not near an integer-grid map (a translation, a cone or an align edge off the integers):
     // integer translations chosen for it instead of rounded
     report.quantized = opt.quantize && !near_integer_structure(S.cm, S.st, S.rot, S.al, ubar_grid, opt.integer_grid_tolerance);
-    const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, S.al, ubar_grid, opt.merge_cone_pairs,
+    const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, S.al, ubar_grid,
+                                                                    opt.merge_cone_pairs ? merge_cone_reach(opt.grid_scale) : 0.,
                                                                     translations, message)
                                             : round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance,
                                                                  translations, message, opt.grid_scale, &S.al);
