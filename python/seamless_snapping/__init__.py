@@ -178,8 +178,8 @@ def snap(V, F, UV, FUV, *, weld=None, repair_flips=True, align_boundary=True, us
     and report["collapsed_cone_pairs"] lists the pairs found next to them ("cancelling_collapsed_cone_pairs" of
     them are such 90/-90 degree pairs). `separate_cone_pairs=True` (with `integer_grid_map`) moves two cones that
     the rounded translations put onto one integer point apart instead, where a cut within two grid cells of it
-    (2 S at grid_scale S > 1) joins them: the integer translations along that cut change so that each cone lands on a neighbouring integer point
-    (report["separated_cone_pairs"]); the field is kept. Where fold-overs are left near a pair, its other ways apart
+    (2 S at grid_scale S > 1) joins them: the integer translations along that cut change so that each cone lands on
+    a neighbouring integer point (report["separated_cone_pairs"]); the field is kept. Where fold-overs are left near a pair, its other ways apart
     are tried, one more snap each (report["separation_trials"]), and the one with the fewest defects near it is kept.
     A 90 and a -90 degree cone move as one: merge those. `quantize=True` (with `integer_grid_map`) gives a map that is
     not near an integer-grid map at `grid_scale` (its translations were never made integers, e.g. Directional's

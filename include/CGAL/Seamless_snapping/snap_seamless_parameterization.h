@@ -285,9 +285,9 @@ namespace Seamless_snapping {
  *   \cgalParamNEnd
  *   \cgalParamNBegin{merge_cone_pairs}
  *     \cgalParamDescription{with `integer_grid_map`: a +90 and a -90 degree cone (valence 3 and 5) that the rounded
- *                           translations put onto one integer point, joined by a path of edges whose vertices all lie within
- *                           one grid cell of that point (S cells at a `grid_scale` S > 1, where the map is S times as large
- *                           in cells; cut edges where possible, else edges that become cut edges), become
+ *                           translations put onto one integer point, joined by a path of edges whose vertices all lie
+ *                           within one grid cell of that point (S cells at a `grid_scale` S > 1, where the map is S times
+ *                           as large in cells; cut edges where possible, else edges that become cut edges), become
  *                           regular points of the field: the rotation k of every edge of that path changes by the same
  *                           quarter turns and its integer translation so that the transition still maps the point onto
  *                           itself (beyond the paper; libQEx merges such pairs into one regular quad vertex). No locally injective map keeps both cones on one point, so without
