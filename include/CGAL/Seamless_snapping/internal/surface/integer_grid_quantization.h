@@ -104,14 +104,20 @@ inline bool within_exact_integers(double x, const std::string& what, std::string
 // The integer point p of a cone at target(g0) whose last open cut edge is `crossed`, given the composition T0 of the
 // integer translations around it (that of `crossed` 0): of the integer points next to its input position x (floor or
 // ceiling in each coordinate), the one whose translation of `crossed` is nearest the input's: the translations of the
-// known edges differ from the input's (their rounding, from the parts of the cut graph already peeled) by E = T0 - T0bar
-// (T0bar: the same composition of the input's translations), and the translation of `crossed` then differs from the
-// input's by M^T ((I - R^K)(p - x) - E), M a rotation: p minimizes |(I - R^K)(p - x) - E| (error diffusion: each cone
-// takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). On output
+// known edges differ from the input's (their rounding, from the parts of the cut graph already peeled) by E = T0 -
+// T0bar (T0bar: the same composition of the input's translations), and the translation of `crossed` then differs from
+// the input's by M^T ((I - R^K)(p - x) - E), M a rotation: p minimizes |(I - R^K)(p - x) - E| (error diffusion: each
+// cone takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). On output
 // p[0..3] are the four points in that order (ties: nearest to x first, then the order floor/ceil of u, of v);
-// peel_cut_graph() takes the first that no neighbouring cone holds.
-inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
-                             std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long p[4][2])
+// peel_cut_graph() takes the first that no neighbouring cone holds. With `ring`, instead the integer points of the 4 x
+// 4 block around floor(x) .. floor(x) + 1 but those four (up to 2 cells from x in a coordinate; 12, or 15 where x is an
+// integer point), in the same order, for a cone whose four points all collide (the rot-seamless dragon of
+// ../shared/data quantized at grid scale 8: three cones within 4 cells, the last of them with each of its four points
+// on a cone or making their face negative: it took the first, a fold-over that no untangling removes, and the quad mesh
+// was refused). Returns the number of points.
+inline int diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
+                            std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long (*p)[2],
+                            bool ring = false)
 {
   const double saved[2] = {tbar[2 * std::size_t(crossed)], tbar[2 * std::size_t(crossed) + 1]};
   tbar[2 * std::size_t(crossed)] = 0; tbar[2 * std::size_t(crossed) + 1] = 0;
@@ -123,24 +129,30 @@ inline void diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, con
   const double x[2] = {ubar[2 * std::size_t(s)], ubar[2 * std::size_t(s) + 1]};
   const double E[2] = {double(T0[0]) - Tb[0], double(T0[1]) - Tb[1]};
   const Quarter_turn R(K);
-  std::pair<double, int> order[4];
-  long q[4][2];
-  for(int a = 0; a < 2; ++a)
-    for(int b = 0; b < 2; ++b) {
-      const int i = 2 * a + b;
-      q[i][0] = long(a == 0 ? std::floor(x[0]) : std::ceil(x[0]));
-      q[i][1] = long(b == 0 ? std::floor(x[1]) : std::ceil(x[1]));
-      const double d[2] = {double(q[i][0]) - x[0], double(q[i][1]) - x[1]};
-      double err = 0;
-      for(int c = 0; c < 2; ++c) {
-        const double r = d[c] - R.sign[c] * d[R.col[c]] - E[c];
-        err += r * r;
-      }
-      err += 1e-9 * (d[0] * d[0] + d[1] * d[1]);                 // ties: the point nearest to the input
-      order[i] = {err, i};
+  const long lo[2] = {long(std::floor(x[0])), long(std::floor(x[1]))}, hi[2] = {long(std::ceil(x[0])), long(std::ceil(x[1]))};
+  long q[16][2];
+  int n = 0;
+  if(!ring)                                                     // floor or ceiling in each coordinate
+    for(int a = 0; a < 2; ++a)
+      for(int b = 0; b < 2; ++b) { q[n][0] = a == 0 ? lo[0] : hi[0]; q[n][1] = b == 0 ? lo[1] : hi[1]; ++n; }
+  else
+    for(long u = lo[0] - 1; u <= lo[0] + 2; ++u)
+      for(long v = lo[1] - 1; v <= lo[1] + 2; ++v)
+        if(!((u == lo[0] || u == hi[0]) && (v == lo[1] || v == hi[1]))) { q[n][0] = u; q[n][1] = v; ++n; }
+  std::pair<double, int> order[16];
+  for(int i = 0; i < n; ++i) {
+    const double d[2] = {double(q[i][0]) - x[0], double(q[i][1]) - x[1]};
+    double err = 0;
+    for(int c = 0; c < 2; ++c) {
+      const double r = d[c] - R.sign[c] * d[R.col[c]] - E[c];
+      err += r * r;
     }
-  std::stable_sort(order, order + 4, [](const std::pair<double, int>& u, const std::pair<double, int>& w) { return u.first < w.first; });
-  for(int i = 0; i < 4; ++i) { p[i][0] = q[order[i].second][0]; p[i][1] = q[order[i].second][1]; }
+    err += 1e-9 * (d[0] * d[0] + d[1] * d[1]);                   // ties: the point nearest to the input
+    order[i] = {err, i};
+  }
+  std::stable_sort(order, order + n, [](const std::pair<double, int>& u, const std::pair<double, int>& w) { return u.first < w.first; });
+  for(int i = 0; i < n; ++i) { p[i][0] = q[order[i].second][0]; p[i][1] = q[order[i].second][1]; }
+  return n;
 }
 
 // Where the classes (isoline_classes.h) fix a coordinate of the cone's coordinates x_a, x_a + 1 (input position x, an
@@ -346,8 +358,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, p);
         const int n = 4 + aligned_candidates(classes, aligned, 2 * s, &ubar[2 * std::size_t(s)], p);
         // of the four in diffuse_rounding()'s order (and those on the isolines of aligned chains through v), the first
-        // that contradicts no align edge and does not put v onto the point of a cone placed near it; else the first that
-        // contradicts no align edge; else the first
+        // that contradicts no align edge and does not put v onto the point of a cone placed near it; else the same of the
+        // ring around the four; else the first of the four that contradicts no align edge; else the first
         int chosen = -1, consistent = -1;
         placed_K[std::size_t(v)] = (K % 4 + 4) % 4;
         for(int i = 0; i < n && chosen < 0; ++i) {
@@ -356,9 +368,18 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
           if(consistent < 0) consistent = i;
           if(!collides(v, g0, crossed, p[i])) chosen = i;
         }
-        if(chosen < 0) chosen = (std::max)(consistent, 0);
-        if(!solve(p[chosen])) return RANGE_EXCEEDED;              // t holds the chosen one's translation
-        point[std::size_t(v)] = {{p[chosen][0], p[chosen][1]}};
+        long ring[16][2];
+        long (*take)[2] = p;
+        if(chosen < 0) {                                        // every one collides: the ring around them
+          const int m = diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, ring, true);
+          for(int i = 0; i < m && chosen < 0; ++i) {
+            if(!solve(ring[i])) return RANGE_EXCEEDED;
+            if(!contradicts_alignment(crossed) && !collides(v, g0, crossed, ring[i])) { chosen = i; take = ring; }
+          }
+        }
+        if(chosen < 0) chosen = (std::max)(consistent, 0);      // (take is p then)
+        if(!solve(take[chosen])) return RANGE_EXCEEDED;         // t holds the chosen one's translation
+        point[std::size_t(v)] = {{take[chosen][0], take[chosen][1]}};
       } else {
         const long p[2] = {0, 0};
         if(!solve(p)) return RANGE_EXCEEDED;
