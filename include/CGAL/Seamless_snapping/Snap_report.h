@@ -154,7 +154,7 @@ struct Snap_report
   std::size_t cones_on_integer_points_before = 0; ///< field cones with integer UVs in every corner, in the input
   std::size_t cones_on_integer_points_after = 0;  ///< the same in the result
   bool near_integer_grid_map = false;         ///< the input's translations, field cones and align edges (each on one isoline) are all within 1e-6 of integers (it looks like an IGM)
-  bool quantized = false;                      ///< `quantize`: the input was not near an integer-grid map, and its integer translations were chosen by the quantization (each cone onto one of the four integer points around it) instead of rounded
+  bool quantized = false;                      ///< `quantize`: the input was not near an integer-grid map, and its integer translations were chosen by the quantization (each cone onto one of the four integer points around it, or onto one within 2 grid cells where those four collide) instead of rounded
   std::size_t pinned_cones = 0;                ///< `integer_grid_map`: field cones forced onto integer points
   std::vector<std::size_t> not_field_cones;    ///< `integer_grid_map`: vertices (indices in `vertices(tm)` order) whose UV angle sum is not 2 pi but whose rotations compose to the identity (fold-overs next to them); not pinned
   std::vector<std::pair<std::size_t, std::size_t> > merged_cone_pairs; ///< `merge_cone_pairs`: the cone pairs (vertex indices) that the rounded translations put onto one integer point, merged: the first vertex is now a regular point of the field, the second too when their indices cancel (a +90 and a -90 degree cone), else one cone with both indices (`joined_cone_pairs`); not counted in `field_cones`

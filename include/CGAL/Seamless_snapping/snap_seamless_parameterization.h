@@ -353,7 +353,7 @@ namespace Seamless_snapping {
  *                           a choice that contradicts itself around a vertex is refused (`INFEASIBLE`), fold-overs left
  *                           are reported. The cones move by less than a grid cell in each coordinate (up to 2 in a
  *                           coordinate that an aligned chain fixes, or where the four integer points around a cone all
- *                           collide and it takes one of the 12 around them), the map by up to a
+ *                           collide and it takes one within 2 cells), the map by up to a
  *                           few cells where the rounding adds up, and a coarse grid puts cones onto one point: choose a
  *                           `grid_scale` whose cells are smaller than the distances between the cones (`retinal_miq` of
  *                           ../shared/data, an MIQ map before its integer rounding: a verified quad mesh at every grid

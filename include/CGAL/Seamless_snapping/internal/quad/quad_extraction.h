@@ -165,7 +165,8 @@ inline std::string collapsed_cone_pairs_clause(const Corner_mesh& cm, const std:
          "): the translations fix both cones on that point, so no move of the UVs separates them, and the map winds "
          "wrongly around them, where no quad mesh follows it; snap with merge_cone_pairs(true) (seamless_quad's default), "
          "which makes such a pair regular points of the field where the cut between them runs within one grid cell of "
-         "that point (S cells at grid scale S > 1; libQEx merges such pairs too), or choose integer translations that keep the cones apart";
+         "that point (S cells at grid scale S > 1; libQEx merges such pairs too), or choose integer translations that "
+         "keep the cones apart";
 }
 
 // Every vertex inside the quad mesh (not `on_border`, quad_valences()) of quad valence other than 4 must lie on an

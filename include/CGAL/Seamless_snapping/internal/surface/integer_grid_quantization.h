@@ -14,7 +14,8 @@
 // not near an integer-grid map (a map whose translations were never made integers, e.g. Directional's rot-seamless
 // output), chosen so that around every interior vertex the transitions compose to the identity where it is not a cone,
 // and to a rotation about an integer point next to the cone (within a grid cell of it in each coordinate, or 2 in a
-// coordinate that an aligned chain through it fixes: aligned_candidates()) where it is one.
+// coordinate that an aligned chain through it fixes: aligned_candidates(), or within 2 cells where all the nearer points
+// collide: diffuse_rounding()'s ring) where it is one.
 //
 // The cut graph is peeled from its leaves: an interior vertex all of whose cut edges but one have their translations
 // determines that one from its own condition (the composition around it is linear in that translation, through a
@@ -26,7 +27,8 @@
 // at its nearest point), unless a cone placed before near it (sharing a face, or within 2 grid cells of the point)
 // holds that point already (two cones on one point force zero-area triangles) and is not one that the snap's
 // merge_cone_pairs(true) will merge with it, or the point makes a face whose three corners are placed cones (whose
-// shape the translations then fix) non-positive: then the next of the four. Where no such vertex is left, the cut edges
+// shape the translations then fix) non-positive: then the next of the four, then those of the ring around them within 2
+// cells. Where no such vertex is left, the cut edges
 // that close the cycles of the graph still open (around the handles of the surface, or between its charts where the
 // cuts split it) take their translations rounded, all at once, the first time; then, on cut paths between border
 // vertices (which have no condition), one cut edge at the border. In each part of the graph that does not reach the
@@ -109,12 +111,11 @@ inline bool within_exact_integers(double x, const std::string& what, std::string
 // the input's by M^T ((I - R^K)(p - x) - E), M a rotation: p minimizes |(I - R^K)(p - x) - E| (error diffusion: each
 // cone takes up what it can of the rounding that reaches it, so that it does not add up along the cut graph). On output
 // p[0..3] are the four points in that order (ties: nearest to x first, then the order floor/ceil of u, of v);
-// peel_cut_graph() takes the first that no neighbouring cone holds. With `ring`, instead the integer points of the 4 x
-// 4 block around floor(x) .. floor(x) + 1 but those four (up to 2 cells from x in a coordinate; 12, or 15 where x is an
-// integer point), in the same order, for a cone whose four points all collide (the rot-seamless dragon of
-// ../shared/data quantized at grid scale 8: three cones within 4 cells, the last of them with each of its four points
-// on a cone or making their face negative: it took the first, a fold-over that no untangling removes, and the quad mesh
-// was refused). Returns the number of points.
+// peel_cut_graph() takes the first that no neighbouring cone holds. With `ring`, instead the integer points one beyond
+// those four (floor - 1 .. ceil + 1 in each coordinate, but the four: 12, 10 where x is an integer in one coordinate, 8
+// in both), in the same order, for a cone whose four points all collide (the rot-seamless dragon of ../shared/data
+// quantized at grid scale 2: a cone took the point of another one, two zero-area triangles forced). Returns the number
+// of points.
 inline int diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, const Cut_rotations& rot, const std::vector<double>& ubar,
                             std::vector<double>& tbar, int crossed, int g0, int K, const long T0[2], long (*p)[2],
                             bool ring = false)
@@ -136,8 +137,8 @@ inline int diffuse_rounding(const Corner_mesh& cm, const Seam_topology& st, cons
     for(int a = 0; a < 2; ++a)
       for(int b = 0; b < 2; ++b) { q[n][0] = a == 0 ? lo[0] : hi[0]; q[n][1] = b == 0 ? lo[1] : hi[1]; ++n; }
   else
-    for(long u = lo[0] - 1; u <= lo[0] + 2; ++u)
-      for(long v = lo[1] - 1; v <= lo[1] + 2; ++v)
+    for(long u = lo[0] - 1; u <= hi[0] + 1; ++u)
+      for(long v = lo[1] - 1; v <= hi[1] + 1; ++v)
         if(!((u == lo[0] || u == hi[0]) && (v == lo[1] || v == hi[1]))) { q[n][0] = u; q[n][1] = v; ++n; }
   std::pair<double, int> order[16];
   for(int i = 0; i < n; ++i) {
@@ -359,7 +360,8 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         const int n = 4 + aligned_candidates(classes, aligned, 2 * s, &ubar[2 * std::size_t(s)], p);
         // of the four in diffuse_rounding()'s order (and those on the isolines of aligned chains through v), the first
         // that contradicts no align edge and does not put v onto the point of a cone placed near it; else the same of the
-        // ring around the four; else the first of the four that contradicts no align edge; else the first
+        // ring around the four, those within quantization_cone_reach of x (collides()' search finds the cones on points
+        // that far); else the first candidate that contradicts no align edge (of the four, then of the ring); else the first
         int chosen = -1, consistent = -1;
         placed_K[std::size_t(v)] = (K % 4 + 4) % 4;
         for(int i = 0; i < n && chosen < 0; ++i) {
@@ -371,13 +373,20 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         long ring[16][2];
         long (*take)[2] = p;
         if(chosen < 0) {                                        // every one collides: the ring around them
+          const double* x = &ubar[2 * std::size_t(s)];
           const int m = diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, ring, true);
+          int ring_consistent = -1;
           for(int i = 0; i < m && chosen < 0; ++i) {
+            if(std::hypot(double(ring[i][0]) - x[0], double(ring[i][1]) - x[1]) > quantization_cone_reach) continue;
             if(!solve(ring[i])) return RANGE_EXCEEDED;
-            if(!contradicts_alignment(crossed) && !collides(v, g0, crossed, ring[i])) { chosen = i; take = ring; }
+            if(contradicts_alignment(crossed)) continue;
+            if(ring_consistent < 0) ring_consistent = i;
+            if(!collides(v, g0, crossed, ring[i])) chosen = i;
           }
+          if(chosen < 0 && consistent < 0) chosen = ring_consistent;
+          if(chosen >= 0) take = ring;
         }
-        if(chosen < 0) chosen = (std::max)(consistent, 0);      // (take is p then)
+        if(chosen < 0) chosen = (std::max)(consistent, 0);
         if(!solve(take[chosen])) return RANGE_EXCEEDED;         // t holds the chosen one's translation
         point[std::size_t(v)] = {{take[chosen][0], take[chosen][1]}};
       } else {
