@@ -58,25 +58,26 @@ namespace Seamless_snapping {
 namespace internal {
 
 // how far (grid cells, Euclidean) from the cones' common integer point the cut path between them may run, at grid
-// scales S <= 1 (merge_cone_reach())
+// scales S <= 1 (reach_at_grid_scale())
 constexpr double default_merge_cone_reach = 1.0;
 
-// The reach of the merge at grid scale S: S cells for S > 1 (the same part of the map as 1 cell at S = 1), 1 cell for S
-// up to 1. The map, and the paths between the cones that the rounding puts onto one point, are S times as long in cells
-// as at S = 1; with 1 cell at every scale, bench_quad on ../shared/data at S = 2 / 4 / 8 merged fewer pairs than at S =
-// 1 and left more irregular vertices in the quad mesh (duck_qc_8 28 / 32 / refused for a fold-over, against 24 at S =
-// 1; fandisk and duck_miq_8 32 at S = 8 against 28) and the dragon (full-seamless) refused at 4 and 8 (cancelling pairs
-// that the input puts exactly onto one point, left with fold-overs next to them); with S cells each of them has the
-// irregular vertices it has at S = 1, and the dragon its quad mesh at 2 to 16 (with both reaches capped at their values
-// for S = 8 it was refused at 16 again). Unlike 1 cell, S cells do not keep the path from going around a third cone:
-// other cones may lie as close as a cell to the point, and the exact checks do not see it (the rotation changes cancel
-// at every vertex of the path). Such a merge changes the field where the untangling cannot follow; the fold-overs left
-// are reported and extract_quad_mesh() refuses the map. Far too long a reach does that (the dragon with 64 S cells: 201
-// fold-overs left instead of 0, the snap 2.8 -> 10 s); with S cells no map of ../shared/data at S = 2, 4 or 8
-// (bench_quad, also --quantize) was refused that had been accepted with 1 cell.
-inline double merge_cone_reach(double grid_scale)
+// A reach of the searches for cone pairs (`cells` at grid scale 1: default_merge_cone_reach,
+// default_separate_cone_reach) at grid scale S: S times as many cells for S > 1 (the same part of the map), as many for
+// S up to 1. For the merge (S cells): the map, and the paths between the cones that the rounding puts onto one point,
+// are S times as long in cells as at S = 1; with 1 cell at every scale, bench_quad on ../shared/data at S = 2 / 4 / 8
+// merged fewer pairs than at S = 1 and left more irregular vertices in the quad mesh (duck_qc_8 28 / 32 / refused for a
+// fold-over, against 24 at S = 1; fandisk and duck_miq_8 32 at S = 8 against 28) and the dragon (full-seamless) refused
+// at 4 and 8 (cancelling pairs that the input puts exactly onto one point, left with fold-overs next to them); with S
+// cells each of them has the irregular vertices it has at S = 1, and the dragon its quad mesh at 2 to 16 (with both
+// reaches capped at their values for S = 8 it was refused at 16 again). Unlike 1 cell, S cells do not keep the path
+// from going around a third cone: other cones may lie as close as a cell to the point, and the exact checks do not see
+// it (the rotation changes cancel at every vertex of the path). Such a merge changes the field where the untangling
+// cannot follow; the fold-overs left are reported and extract_quad_mesh() refuses the map. Far too long a reach does
+// that (the dragon with 64 S cells: 201 fold-overs left instead of 0, the snap 2.8 -> 10 s); with S cells no map of
+// ../shared/data at S = 2, 4 or 8 (bench_quad, also --quantize) was refused that had been accepted with 1 cell.
+inline double reach_at_grid_scale(double cells, double grid_scale)
 {
-  return default_merge_cone_reach * (std::max)(1.0, grid_scale);
+  return cells * (std::max)(1.0, grid_scale);
 }
 
 struct Cone_merge
@@ -248,7 +249,7 @@ struct Cone_partner_search
 // lie on integer points other than p, at distance 1 or more, and the path, made of segments inside the disk of radius
 // 1 around p, passes none of them); with 2 the duck_miq_8 map in integer-grid mode with merged pairs has a "pair"
 // 1449, 9657 whose path goes around a cone (the untangling makes the map locally injective there). It stays 1 at every
-// grid scale, unlike the merge's reach (merge_cone_reach()): the reports name no pair that a third cone could part, and
+// grid scale, unlike the merge's reach (reach_at_grid_scale()): the reports name no pair that a third cone could part, and
 // at S > 1 may miss pairs that the merge joins (duck_qc_8 with --keep-cone-pairs at S = 8: 1 pair named, 4 with S cells)
 constexpr double default_collapsed_cone_reach = 1.0;
 

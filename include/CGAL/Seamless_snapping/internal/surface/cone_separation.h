@@ -35,7 +35,6 @@
 #include <CGAL/Seamless_snapping/internal/surface/integer_grid_constraints.h>
 #include <CGAL/Seamless_snapping/internal/surface/seam_topology.h>
 
-#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -46,16 +45,10 @@ namespace internal {
 
 // default reach of the separation: how far (grid cells, Euclidean) from the cones' common integer point the cut path
 // between them may run (2: duck_qc_8 in integer-grid mode gets both of its pairs joined by such paths separated, and no
-// negative triangle left; 1 separates one of them)
+// negative triangle left; 1 separates one of them), at grid scales S <= 1; 2 S cells for S > 1 (reach_at_grid_scale():
+// the map and the cut paths between its cones are S times as long in grid cells; with 2 cells at every scale the dragon
+// (full-seamless) at S = 2 kept a pair whose cut runs 2-4 cells from the point, and its quad mesh was refused)
 constexpr double default_separate_cone_reach = 2.0;
-
-// the reach at grid scale S: 2 S cells for S > 1 (the map and the cut paths between its cones are S times as long in
-// grid cells; with 2 cells at every scale the dragon (full-seamless) at S = 2 kept a pair whose cut runs 2-4 cells
-// from the point, and its quad mesh was refused), 2 cells for S <= 1
-inline double separate_cone_reach(double grid_scale)
-{
-  return default_separate_cone_reach * (std::max)(1.0, grid_scale);
-}
 
 struct Cone_separation
 {

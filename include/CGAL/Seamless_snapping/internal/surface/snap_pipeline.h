@@ -376,8 +376,8 @@ Status extract_seams(const TriangleMesh& tm, HalfedgeUVMap uvmap, const SeamOf& 
   if(opt.integer_grid_map && opt.merge_cone_pairs) {
     // cone pairs on one integer point that no cut path near the point joins: a path through the mesh near it
     // becomes cut edges (rotation 0, continuous UVs), along which build_constraints() merges them
-    const std::vector<int> added = cut_edges_to_add(cm, S.st, S.rot, in_grid_units(S, S.st.ubar),
-                                                    opt.integer_grid_tolerance, merge_cone_reach(opt.grid_scale));
+    const std::vector<int> added = cut_edges_to_add(cm, S.st, S.rot, in_grid_units(S, S.st.ubar), opt.integer_grid_tolerance,
+                                                    reach_at_grid_scale(default_merge_cone_reach, opt.grid_scale));
     if(!added.empty()) {
       seam_override.assign(cm.n_edges, 0);
       given_k.assign(cm.n_edges, 0);
@@ -446,15 +446,15 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     // quantize(true) and a map not near an integer-grid map (a translation, a cone or an align edge off the integers):
     // integer translations chosen for it instead of rounded
     report.quantized = opt.quantize && !near_integer_structure(S.cm, S.st, S.rot, S.al, ubar_grid, opt.integer_grid_tolerance);
+    const double merge_reach = reach_at_grid_scale(default_merge_cone_reach, opt.grid_scale);
     const Status rounded = report.quantized ? quantize_translations(S.cm, S.st, S.rot, S.al, ubar_grid,
-                                                                    opt.merge_cone_pairs ? merge_cone_reach(opt.grid_scale) : 0.,
-                                                                    translations, message)
+                                                                    opt.merge_cone_pairs ? merge_reach : 0., translations,
+                                                                    message)
                                             : round_translations(S.cm, S.st, S.rot, ubar_grid, opt.integer_grid_tolerance,
                                                                  translations, message, opt.grid_scale, &S.al);
     if(rounded != SUCCESS) return rounded;
     if(opt.merge_cone_pairs)
-      for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid,
-                                                           merge_cone_reach(opt.grid_scale))) {
+      for(const Cone_merge& m : merge_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid, merge_reach)) {
         report.merged_cone_pairs.emplace_back(std::size_t(m.a), std::size_t(m.b));
         report.merged_cut_edges += m.path.size();
         merged[m.a] = 4;
@@ -465,7 +465,8 @@ Status build_constraints(const Snap_options& opt, Snap_state<TriangleMesh>& S, S
     if(opt.separate_cone_pairs) {
       moved.assign(S.cm.n_vertices, 0);
       S.separations = separate_collapsed_cone_pairs(S.cm, S.st, S.rot, translations, ubar_grid,
-                                                    separate_cone_reach(opt.grid_scale), S.separation_rank);
+                                                    reach_at_grid_scale(default_separate_cone_reach, opt.grid_scale),
+                                                    S.separation_rank);
       for(const Cone_separation& c : S.separations) {
         report.separated_cone_pairs.emplace_back(std::size_t((std::min)(c.a, c.b)), std::size_t((std::max)(c.a, c.b)));
         report.separated_cut_edges += c.path.size();
