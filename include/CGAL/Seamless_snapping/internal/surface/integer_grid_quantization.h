@@ -362,30 +362,33 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
         // that contradicts no align edge and does not put v onto the point of a cone placed near it; else the same of the
         // ring around the four, those within quantization_cone_reach of x (collides()' search finds the cones on points
         // that far); else the first candidate that contradicts no align edge (of the four, then of the ring); else the first
-        int chosen = -1, consistent = -1;
+        const double* x = &ubar[2 * std::size_t(s)];
+        bool in_range = true;                                   // solve() kept every translation below 2^52
+        // the first of the candidates c[0 .. m) within `reach` of x that contradicts no align edge and puts v onto the
+        // point of no cone placed near it (-1: none); `first_consistent`: the first that contradicts no align edge
+        auto first_free = [&](long (*c)[2], int m, double reach, int& first_consistent) {
+          first_consistent = -1;
+          for(int i = 0; i < m; ++i) {
+            if(std::hypot(double(c[i][0]) - x[0], double(c[i][1]) - x[1]) > reach) continue;
+            if(!(in_range = solve(c[i]))) return -1;
+            if(contradicts_alignment(crossed)) continue;
+            if(first_consistent < 0) first_consistent = i;
+            if(!collides(v, g0, crossed, c[i])) return i;
+          }
+          return -1;
+        };
         placed_K[std::size_t(v)] = (K % 4 + 4) % 4;
-        for(int i = 0; i < n && chosen < 0; ++i) {
-          if(!solve(p[i])) return RANGE_EXCEEDED;
-          if(contradicts_alignment(crossed)) continue;
-          if(consistent < 0) consistent = i;
-          if(!collides(v, g0, crossed, p[i])) chosen = i;
-        }
+        int consistent = -1, ring_consistent = -1;
+        int chosen = first_free(p, n, HUGE_VAL, consistent);
         long ring[16][2];
         long (*take)[2] = p;
-        if(chosen < 0) {                                        // every one collides: the ring around them
-          const double* x = &ubar[2 * std::size_t(s)];
-          const int m = diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, ring, true);
-          int ring_consistent = -1;
-          for(int i = 0; i < m && chosen < 0; ++i) {
-            if(std::hypot(double(ring[i][0]) - x[0], double(ring[i][1]) - x[1]) > quantization_cone_reach) continue;
-            if(!solve(ring[i])) return RANGE_EXCEEDED;
-            if(contradicts_alignment(crossed)) continue;
-            if(ring_consistent < 0) ring_consistent = i;
-            if(!collides(v, g0, crossed, ring[i])) chosen = i;
-          }
+        if(chosen < 0 && in_range) {                            // every one collides: the ring around them
+          chosen = first_free(ring, diffuse_rounding(cm, st, rot, ubar, tbar, crossed, g0, K, T0, ring, true),
+                              quantization_cone_reach, ring_consistent);
           if(chosen < 0 && consistent < 0) chosen = ring_consistent;
           if(chosen >= 0) take = ring;
         }
+        if(!in_range) return RANGE_EXCEEDED;
         if(chosen < 0) chosen = (std::max)(consistent, 0);
         if(!solve(take[chosen])) return RANGE_EXCEEDED;         // t holds the chosen one's translation
         point[std::size_t(v)] = {{take[chosen][0], take[chosen][1]}};
@@ -429,7 +432,7 @@ inline Status peel_cut_graph(const Corner_mesh& cm, const Seam_topology& st, con
 }
 
 // `al`: the align edges. `ubar`: the sector values in grid units. `merge_reach`: 0, or the reach of the merge of collapsed
-// cone pairs that the snap does afterwards (Snap_options::merge_cone_pairs; merge_cone_reach(): S cells at grid scale S >
+// cone pairs that the snap does afterwards (Snap_options::merge_cone_pairs; reach_at_grid_scale(): S cells at grid scale S >
 // 1; predicted with 1 cell there, the rot-seamless dragon at S = 4 kept 867 irregular quad vertices instead of 865, the
 // 302K bunny of ../shared/large at S = 8 / 16 100 / 81 wound vertices instead of 93 / 84). `t`: 2 per halfedge, as round_translations() makes them. RANGE_EXCEEDED
 // (with `message`) when a translation or a cone lies 2^52 grid units or more from the origin.
